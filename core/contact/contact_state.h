@@ -1,0 +1,47 @@
+#pragma once
+// The data one contact evaluation reads and writes. A contact is between sphere i and either
+// sphere j or a wall; the normal points from j (or the wall) to i. Models in the normal,
+// tangential and rolling slots are pure functions of these structs, so each is unit-testable
+// on its own and the force loop stays free of virtual calls and allocation.
+#include "core/interaction_table.h"
+#include "core/vec3.h"
+
+namespace demcal::core {
+
+// Per-contact memory kept between steps (zeroed when the contact ends).
+struct ContactHistory {
+  Vec3 shear_m;            // accumulated tangential displacement δ_t (physics.md §1.3)
+  Vec3 rolling_torque_N_m; // EPSD spring torque M_k (physics.md §2.2)
+};
+
+struct ContactGeometry {
+  Vec3 normal;              // unit, from j (or wall) towards i
+  double overlap_m;         // δ_n = R_i + R_j − |x_i − x_j| (> 0 in contact)
+  double radius_i_m;        // lever arm of i (its radius)
+  double radius_j_m;        // lever arm of j; 0 for a wall
+  double effective_radius_m;  // R*
+  double effective_mass_kg;   // m*
+  double mass_i_kg;
+  double mass_j_kg;           // 0 for a wall (infinitely heavy)
+  Vec3 relative_velocity_m_s; // of i's contact point relative to j's (includes spin)
+  Vec3 omega_i;
+  Vec3 omega_j;               // zero for a wall
+};
+
+// Result of the normal slot, also read by the tangential and rolling slots.
+struct NormalForce {
+  double elastic_N;   // conservative part (Hertz)
+  double total_N;     // elastic + damping, along `normal` (positive = repulsive)
+  double stiffness_n; // tangent stiffness S_n = 2E*sqrt(R* δ) (N/m)
+  double secant_kn;   // Hertz secant stiffness (4/3)E*sqrt(R* δ) (N/m)
+  double contact_radius_m;  // a = sqrt(R* δ) for Hertz
+};
+
+// What a contact contributes: force on i (j gets the opposite) and a torque on each body.
+struct ContactResult {
+  Vec3 force_i;
+  Vec3 torque_i;
+  Vec3 torque_j;
+};
+
+}  // namespace demcal::core

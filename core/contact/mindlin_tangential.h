@@ -1,0 +1,35 @@
+#pragma once
+// Mindlin no-slip tangential spring with history and Coulomb cap, as LIGGGHTS
+// `tangential history` (physics.md §1.3):
+//   δ_t += v_t dt, projected on the current tangent plane;  F_t = −S_t δ_t − c_t v_t,
+//   S_t = 8 G* sqrt(R* δ);  if S_t|δ_t| > μ_s|F_n|: F_t capped to μ_s|F_n| (no damping while
+//   sliding) and the spring reset to the cap.
+#include <cmath>
+
+#include "core/contact/contact_state.h"
+
+namespace demcal::core {
+
+struct MindlinTangential {
+  static Vec3 Compute(const ContactGeometry& g, const ResolvedPair& p, const NormalForce& n,
+                      double dt, ContactHistory& h) {
+    constexpr double kTwoSqrtFiveSixths = 1.8257418583505538;
+    const Vec3 v_t = g.relative_velocity_m_s - Dot(g.relative_velocity_m_s, g.normal) * g.normal;
+    h.shear_m += v_t * dt;
+    h.shear_m -= Dot(h.shear_m, g.normal) * g.normal;
+    const double s_t = 8.0 * p.effective_shear_Pa * n.contact_radius_m;
+    Vec3 f_t = -s_t * h.shear_m;
+    const double f_max = p.sliding_friction * std::abs(n.total_N);
+    const double f_t2 = Norm2(f_t);
+    if (f_t2 > f_max * f_max) {
+      f_t *= f_max / std::sqrt(f_t2);
+      h.shear_m = f_t * (-1.0 / s_t);
+    } else {
+      const double c_t = -kTwoSqrtFiveSixths * p.beta * std::sqrt(s_t * g.effective_mass_kg);
+      f_t -= c_t * v_t;
+    }
+    return f_t;
+  }
+};
+
+}  // namespace demcal::core

@@ -1,0 +1,28 @@
+#pragma once
+// Rolling slot "cdt": EDEM's "Standard Rolling Friction", a constant directional torque
+// (Sakaguchi et al. 1993; Ai et al. 2011 type A; physics.md §2.1):
+//   τ_i = −μ_r F_n R_i ω̂_i,  τ_j = −μ_r F_n R_j ω̂_j   (per body, elastic F_n).
+// Known weakness: the torque does not vanish as ω → 0, so static heaps jitter; prefer "epsd".
+#include <cmath>
+
+#include "core/contact/contact_state.h"
+
+namespace demcal::core {
+
+struct RollingCdt {
+  static constexpr const char* kName = "cdt";
+  void Apply(const ContactGeometry& g, const ResolvedPair& p, const NormalForce& n, double,
+             ContactHistory&, ContactResult& r) const {
+    const double magnitude = p.rolling_friction * n.elastic_N;
+    r.torque_i -= TorqueDirection(g.omega_i) * (magnitude * g.radius_i_m);
+    r.torque_j -= TorqueDirection(g.omega_j) * (magnitude * g.radius_j_m);
+  }
+
+ private:
+  static Vec3 TorqueDirection(const Vec3& omega) {
+    const double w = Norm(omega);
+    return w > 1e-12 ? omega / w : Vec3{};
+  }
+};
+
+}  // namespace demcal::core

@@ -1,0 +1,150 @@
+#include "core/neighbour_list.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace demcal::core {
+
+int NeighbourList::Grid::CellOf(const Vec3& x) const {
+  auto clamp_index = [](double v, int n) {
+    const int k = static_cast<int>(std::floor(v));
+    return k < 0 ? 0 : (k >= n ? n - 1 : k);
+  };
+  const int ix = clamp_index((x.x - origin.x) * inv_cell, nx);
+  const int iy = clamp_index((x.y - origin.y) * inv_cell, ny);
+  const int iz = clamp_index((x.z - origin.z) * inv_cell, nz);
+  return (iz * ny + iy) * nx + ix;
+}
+
+NeighbourList::Grid NeighbourList::MakeGrid(const Settings& s) const {
+  // A cell is at least the largest possible cut-off, so partners lie in the 27 nearest cells.
+  const double cutoff = 2.0 * s.max_radius_m + s.skin_m;
+  const Vec3 extent = s.domain_max_m - s.domain_min_m;
+  Grid g;
+  g.origin = s.domain_min_m;
+  g.inv_cell = 1.0 / cutoff;
+  auto cells = [&](double length) { return std::max(1, static_cast<int>(length / cutoff)); };
+  g.nx = cells(extent.x);
+  g.ny = cells(extent.y);
+  g.nz = cells(extent.z);
+  // Cells are stretched so that the grid covers the domain exactly.
+  g.inv_cell = std::min({g.nx / extent.x, g.ny / extent.y, g.nz / extent.z});
+  return g;
+}
+
+void NeighbourList::BinParticles(const Grid& grid, const std::vector<Vec3>& x) {
+  const size_t n = x.size();
+  const size_t cells = static_cast<size_t>(grid.nx) * grid.ny * grid.nz;
+  cell_of_particle_.resize(n);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& range) {
+    for (size_t i = range.begin(); i != range.end(); ++i) cell_of_particle_[i] = grid.CellOf(x[i]);
+  });
+  cell_start_.assign(cells + 1, 0);
+  for (size_t i = 0; i < n; ++i) ++cell_start_[cell_of_particle_[i] + 1];
+  for (size_t c = 0; c < cells; ++c) cell_start_[c + 1] += cell_start_[c];
+  cell_particles_.resize(n);
+  std::vector<uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
+  for (size_t i = 0; i < n; ++i) cell_particles_[fill[cell_of_particle_[i]]++] = i;
+}
+
+template <class Visit>
+void NeighbourList::ForEachCandidate(const Grid& grid, size_t i, const std::vector<Vec3>& x,
+                                     const std::vector<double>& r, double skin,
+                                     Visit&& visit) const {
+  const int c = cell_of_particle_[i];
+  const int ix = c % grid.nx, iy = (c / grid.nx) % grid.ny, iz = c / (grid.nx * grid.ny);
+  for (int dz = -1; dz <= 1; ++dz) {
+    const int z = iz + dz;
+    if (z < 0 || z >= grid.nz) continue;
+    for (int dy = -1; dy <= 1; ++dy) {
+      const int y = iy + dy;
+      if (y < 0 || y >= grid.ny) continue;
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int xx = ix + dx;
+        if (xx < 0 || xx >= grid.nx) continue;
+        const int cell = (z * grid.ny + y) * grid.nx + xx;
+        for (uint32_t s = cell_start_[cell]; s < cell_start_[cell + 1]; ++s) {
+          const uint32_t j = cell_particles_[s];
+          if (j <= i) continue;
+          const double reach = r[i] + r[j] + skin;
+          if (Norm2(x[i] - x[j]) < reach * reach) visit(j);
+        }
+      }
+    }
+  }
+}
+
+void NeighbourList::Build(const Settings& s, const std::vector<Vec3>& x,
+                          const std::vector<double>& r) {
+  const size_t n = x.size();
+  const Grid grid = MakeGrid(s);
+  BinParticles(grid, x);
+
+  // Pass 1: count partners per row; pass 2: fill and sort each row.
+  row_start_.assign(n + 1, 0);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& range) {
+    for (size_t i = range.begin(); i != range.end(); ++i) {
+      uint32_t count = 0;
+      ForEachCandidate(grid, i, x, r, s.skin_m, [&](uint32_t) { ++count; });
+      row_start_[i + 1] = count;
+    }
+  });
+  for (size_t i = 0; i < n; ++i) row_start_[i + 1] += row_start_[i];
+  partner_.resize(row_start_[n]);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& range) {
+    for (size_t i = range.begin(); i != range.end(); ++i) {
+      uint32_t k = row_start_[i];
+      ForEachCandidate(grid, i, x, r, s.skin_m, [&](uint32_t j) { partner_[k++] = j; });
+      std::sort(partner_.begin() + row_start_[i], partner_.begin() + row_start_[i + 1]);
+    }
+  });
+
+  // Reverse index: for each j, the entries (in ascending order) whose partner is j.
+  reverse_start_.assign(n + 1, 0);
+  for (uint32_t j : partner_) ++reverse_start_[j + 1];
+  for (size_t j = 0; j < n; ++j) reverse_start_[j + 1] += reverse_start_[j];
+  reverse_entry_.resize(partner_.size());
+  std::vector<uint32_t> fill(reverse_start_.begin(), reverse_start_.end() - 1);
+  for (uint32_t k = 0; k < partner_.size(); ++k) reverse_entry_[fill[partner_[k]]++] = k;
+
+  reference_position_ = x;
+  half_skin2_ = 0.25 * s.skin_m * s.skin_m;
+  ++builds_;
+}
+
+bool NeighbourList::NeedsRebuild(const std::vector<Vec3>& x) const {
+  if (x.size() != reference_position_.size()) return true;
+  return tbb::parallel_reduce(
+      tbb::blocked_range<size_t>(0, x.size()), false,
+      [&](const auto& range, bool found) {
+        for (size_t i = range.begin(); i != range.end() && !found; ++i)
+          found = Norm2(x[i] - reference_position_[i]) > half_skin2_;
+        return found;
+      },
+      [](bool a, bool b) { return a || b; });
+}
+
+int64_t NeighbourList::Find(uint32_t i, uint32_t j) const {
+  if (i + 1 >= row_start_.size()) return -1;
+  const auto begin = partner_.begin() + row_start_[i];
+  const auto end = partner_.begin() + row_start_[i + 1];
+  const auto it = std::lower_bound(begin, end, j);
+  return (it != end && *it == j) ? (it - partner_.begin()) : -1;
+}
+
+std::vector<uint32_t> NeighbourList::CellOrder(const Settings& s,
+                                               const std::vector<Vec3>& x) const {
+  const Grid grid = MakeGrid(s);
+  std::vector<std::pair<int, uint32_t>> keyed(x.size());
+  for (uint32_t i = 0; i < x.size(); ++i) keyed[i] = {grid.CellOf(x[i]), i};
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<uint32_t> order(x.size());
+  for (size_t k = 0; k < x.size(); ++k) order[k] = keyed[k].second;
+  return order;
+}
+
+}  // namespace demcal::core

@@ -1,0 +1,71 @@
+#pragma once
+// NeighbourList: a Verlet list built with a cell grid. It holds every pair i < j whose surfaces
+// are closer than `skin` (|x_i − x_j| < R_i + R_j + skin), as a half list in compressed rows
+// (row i lists its partners j > i in ascending order), plus the reverse index (for each j, the
+// entries that name it) so forces can be gathered per particle in a fixed order: the result is
+// then bit-identical for any thread count.
+//
+// The list stays valid until some particle has moved more than skin/2 since the build
+// (NeedsRebuild). Thread-safety: Build() uses TBB internally; const methods are thread-safe.
+#include <cstdint>
+#include <vector>
+
+#include "core/vec3.h"
+
+namespace demcal::core {
+
+class NeighbourList {
+ public:
+  struct Settings {
+    Vec3 domain_min_m, domain_max_m;  // particles outside are clamped into the edge cells
+    double skin_m = 0;
+    double max_radius_m = 0;
+  };
+
+  void Build(const Settings& settings, const std::vector<Vec3>& positions,
+             const std::vector<double>& radii);
+  bool NeedsRebuild(const std::vector<Vec3>& positions) const;
+
+  size_t RowsCount() const { return row_start_.size() - 1; }
+  size_t PairCount() const { return partner_.size(); }
+  uint32_t RowBegin(size_t i) const { return row_start_[i]; }
+  uint32_t RowEnd(size_t i) const { return row_start_[i + 1]; }
+  uint32_t Partner(size_t k) const { return partner_[k]; }
+  uint32_t ReverseBegin(size_t j) const { return reverse_start_[j]; }
+  uint32_t ReverseEnd(size_t j) const { return reverse_start_[j + 1]; }
+  uint32_t ReverseEntry(size_t r) const { return reverse_entry_[r]; }
+  // Entry index of pair (i, j) with i < j, or -1 if the pair is not listed.
+  int64_t Find(uint32_t i, uint32_t j) const;
+
+  // Particle slots ordered by cell (a locality-friendly order for Particles::Permute).
+  std::vector<uint32_t> CellOrder(const Settings& settings, const std::vector<Vec3>& positions) const;
+
+  uint64_t Builds() const { return builds_; }
+
+ private:
+  struct Grid {
+    Vec3 origin;
+    double inv_cell;
+    int nx, ny, nz;
+    int CellOf(const Vec3& x) const;
+  };
+  Grid MakeGrid(const Settings& s) const;
+  void BinParticles(const Grid& grid, const std::vector<Vec3>& positions);
+  template <class Visit>
+  void ForEachCandidate(const Grid& grid, size_t i, const std::vector<Vec3>& x,
+                        const std::vector<double>& r, double skin, Visit&& visit) const;
+
+  std::vector<uint32_t> row_start_{0};
+  std::vector<uint32_t> partner_;
+  std::vector<uint32_t> reverse_start_{0};
+  std::vector<uint32_t> reverse_entry_;
+  std::vector<Vec3> reference_position_;
+  double half_skin2_ = 0;
+  uint64_t builds_ = 0;
+  // cell binning scratch (reused between builds)
+  std::vector<int> cell_of_particle_;
+  std::vector<uint32_t> cell_start_;
+  std::vector<uint32_t> cell_particles_;
+};
+
+}  // namespace demcal::core

@@ -1,0 +1,40 @@
+#pragma once
+// Particles: the contiguous per-sphere state of a simulation (structure of arrays, SI units).
+// Index i is a storage slot that may change when the engine reorders particles for cache
+// locality; `id` is the stable identity written to every output.
+//
+// Thread-safety: the engine writes disjoint slots from parallel loops; no internal locking.
+#include <cstdint>
+#include <vector>
+
+#include "core/vec3.h"
+
+namespace demcal::core {
+
+struct Particles {
+  std::vector<Vec3> position_m;
+  std::vector<Vec3> velocity_m_s;
+  std::vector<Vec3> angular_velocity_rad_s;
+  std::vector<Vec3> force_N;
+  std::vector<Vec3> torque_N_m;
+  std::vector<double> radius_m;
+  std::vector<double> mass_kg;
+  std::vector<double> inv_mass;     // 1/kg
+  std::vector<double> inv_inertia;  // 1/(kg m²), solid sphere I = (2/5) m R²
+  std::vector<int> species;
+  std::vector<int> material;
+  std::vector<int64_t> id;
+
+  size_t Size() const { return position_m.size(); }
+
+  // Appends one sphere at rest-or-moving state; returns its slot.
+  size_t Add(int64_t particle_id, int species_index, int material_index, double radius,
+             double density, const Vec3& position, const Vec3& velocity, const Vec3& omega);
+
+  // Reorders every per-particle array so that new slot k holds old slot order[k].
+  void Permute(const std::vector<uint32_t>& order);
+
+  double KineticEnergy() const;  // translational + rotational, J
+};
+
+}  // namespace demcal::core

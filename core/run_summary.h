@@ -1,0 +1,36 @@
+#pragma once
+// RunSummary: how a simulation run ended and what it cost. A failed run is a normal outcome
+// (the calibrator treats it as an infeasible sample), never an exception or a crash.
+#include <cstdint>
+#include <string>
+
+namespace demcal::core {
+
+enum class Termination {
+  kOk,                // ran for the requested time (or the observer stopped it)
+  kInvalidScene,      // the scene failed validation; nothing ran
+  kNonFinite,         // a position, velocity or force became NaN/Inf
+  kEnergyBlowUp,      // kinetic energy exceeded what gravity and the initial state can supply
+  kParticlesLost,     // a particle left the domain box
+  kWallTimeExceeded,  // the run's wall-time budget ran out
+};
+
+// Stable lower-case names used in summary.json: ok, invalid_scene, non_finite, ...
+const char* TerminationName(Termination t);
+
+struct RunSummary {
+  Termination termination = Termination::kInvalidScene;
+  std::string message = "Run was not called";
+  int64_t steps = 0;
+  double simulated_time_s = 0;
+  double wall_time_s = 0;
+  int64_t particles = 0;
+  double timestep_s = 0;
+  double final_kinetic_energy_J = 0;
+  uint64_t neighbour_rebuilds = 0;
+
+  bool ok() const { return termination == Termination::kOk; }
+  std::string BriefReport() const;
+};
+
+}  // namespace demcal::core

@@ -1,0 +1,225 @@
+#include "core/scene.h"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <sstream>
+
+namespace demcal::core {
+namespace {
+
+// Collects the first violation as "field = value is outside allowed range".
+class Checker {
+ public:
+  explicit Checker(std::string* error) : error_(error) {}
+  bool ok() const { return ok_; }
+  void Fail(const std::string& message) {
+    if (ok_ && error_) *error_ = message;
+    ok_ = false;
+  }
+  // open/closed bounds: lo_open ⇒ value > lo, else value >= lo (same for hi)
+  void Range(const std::string& field, double v, double lo, double hi, bool lo_open,
+             bool hi_open, const std::string& unit = "") {
+    const bool good = std::isfinite(v) && (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
+    if (good) return;
+    std::ostringstream os;
+    os << "field '" << field << "' = " << v << (unit.empty() ? "" : " " + unit)
+       << " is outside the allowed range " << (lo_open ? "(" : "[") << lo << ", "
+       << (std::isinf(hi) ? "inf" : std::to_string(hi)) << (hi_open ? ")" : "]");
+    Fail(os.str());
+  }
+  void Positive(const std::string& field, double v, const std::string& unit) {
+    Range(field, v, 0, kInf, true, true, unit);
+  }
+  static constexpr double kInf = std::numeric_limits<double>::infinity();
+
+ private:
+  std::string* error_;
+  bool ok_ = true;
+};
+
+std::string Indexed(const std::string& name, size_t i) { return name + "[" + std::to_string(i) + "]"; }
+
+void CheckMaterials(const Scene& s, Checker& c) {
+  if (s.materials.empty()) c.Fail("field 'materials' must list at least one material");
+  for (size_t i = 0; i < s.materials.size(); ++i) {
+    const Material& m = s.materials[i];
+    const std::string f = Indexed("materials", i);
+    c.Positive(f + ".youngs_modulus_Pa", m.youngs_modulus_Pa, "Pa");
+    c.Range(f + ".poisson_ratio", m.poisson_ratio, -1, 0.5, true, true);
+    c.Range(f + ".density_kg_m3", m.density_kg_m3, 0, 1e5, false, false, "kg/m3");
+  }
+}
+
+void CheckSpecies(const Scene& s, Checker& c) {
+  for (size_t i = 0; i < s.species.size(); ++i) {
+    const Species& sp = s.species[i];
+    const std::string f = Indexed("species", i);
+    if (sp.material < 0 || sp.material >= static_cast<int>(s.materials.size()))
+      c.Fail("field '" + f + ".material' names no defined material");
+    else
+      c.Range(f + ".material density", s.materials[sp.material].density_kg_m3, 0, 1e5, true, false,
+              "kg/m3");
+    const SizeDistribution& d = sp.size;
+    using K = SizeDistribution::Kind;
+    if (d.kind == K::kFixed) c.Range(f + ".diameter_m", d.diameter_m, 0, 10, true, false, "m");
+    if (d.kind == K::kUniform) {
+      c.Range(f + ".diameter_m.min", d.min_diameter_m, 0, 10, true, false, "m");
+      c.Range(f + ".diameter_m.max", d.max_diameter_m, d.min_diameter_m, 10, false, false, "m");
+    }
+    if (d.kind == K::kTable) {
+      if (d.table_diameter_m.empty() || d.table_diameter_m.size() != d.table_number_fraction.size())
+        c.Fail("field '" + f + ".diameter_table' needs equally long non-empty diameter and fraction lists");
+      double sum = 0;
+      for (size_t k = 0; k < d.table_diameter_m.size(); ++k) {
+        c.Range(f + ".diameter_table[" + std::to_string(k) + "].diameter_m", d.table_diameter_m[k], 0, 10, true, false, "m");
+        c.Range(f + ".diameter_table[" + std::to_string(k) + "].number_fraction", d.table_number_fraction[k], 0, 1, false, false);
+        sum += d.table_number_fraction[k];
+      }
+      if (std::abs(sum - 1.0) > 1e-6) c.Fail("field '" + f + ".diameter_table' number fractions must sum to 1");
+    }
+  }
+}
+
+void CheckPairs(const Scene& s, Checker& c) {
+  const size_t n = s.materials.size();
+  if (s.pair_parameters.size() != n * n) {
+    c.Fail("field 'interactions' must resolve to one entry per material pair");
+    return;
+  }
+  for (size_t i = 0; i < n; ++i) {
+    for (size_t j = 0; j < n; ++j) {
+      const PairParameters& p = s.pair_parameters[i * n + j];
+      const std::string f = "interactions[" + s.materials[i].name + "," + s.materials[j].name + "]";
+      c.Range(f + ".sliding_friction", p.sliding_friction, 0, 10, false, false);
+      c.Range(f + ".rolling_friction", p.rolling_friction, 0, 10, false, false);
+      c.Range(f + ".restitution", p.restitution, 0, 1, true, false);
+      c.Range(f + ".interfacial_energy_J_m2", p.interfacial_energy_J_m2, 0, 1e3, false, false, "J/m2");
+    }
+  }
+}
+
+void CheckGeometry(const Scene& s, Checker& c) {
+  for (int a = 0; a < 3; ++a)
+    if (!(s.domain_max_m[a] > s.domain_min_m[a]))
+      c.Fail("field 'domain.max_m' must exceed 'domain.min_m' on every axis");
+  for (size_t i = 0; i < s.walls.size(); ++i) {
+    const PlaneWall& w = s.walls[i];
+    if (std::abs(Norm(w.normal) - 1.0) > 1e-9)
+      c.Fail("field '" + Indexed("walls", i) + ".normal' must be a unit vector");
+    if (w.material < 0 || w.material >= static_cast<int>(s.materials.size()))
+      c.Fail("field '" + Indexed("walls", i) + ".material' names no defined material");
+  }
+  if (!IsFinite(s.gravity_m_s2)) c.Fail("field 'gravity_m_s2' must be finite");
+}
+
+void CheckParticles(const Scene& s, Checker& c) {
+  const int ns = static_cast<int>(s.species.size());
+  for (size_t i = 0; i < s.particles.size(); ++i) {
+    const ParticleSpec& p = s.particles[i];
+    const std::string f = Indexed("particles", i);
+    if (p.species < 0 || p.species >= ns) c.Fail("field '" + f + ".species' names no defined species");
+    c.Range(f + ".diameter_m", p.diameter_m, 0, 10, false, false, "m");
+    for (int a = 0; a < 3; ++a)
+      if (p.position_m[a] < s.domain_min_m[a] || p.position_m[a] > s.domain_max_m[a])
+        c.Fail("field '" + f + ".position_m' lies outside the domain");
+    if (!IsFinite(p.velocity_m_s) || !IsFinite(p.angular_velocity_rad_s))
+      c.Fail("field '" + f + "' has a non-finite velocity");
+  }
+  for (size_t i = 0; i < s.fills.size(); ++i) {
+    const FillSpec& fl = s.fills[i];
+    const std::string f = Indexed("fills", i);
+    if (fl.species < 0 || fl.species >= ns) c.Fail("field '" + f + ".species' names no defined species");
+    c.Range(f + ".count", static_cast<double>(fl.count), 0, 1e8, true, false);
+    for (int a = 0; a < 3; ++a) {
+      if (!(fl.region_max_m[a] > fl.region_min_m[a]))
+        c.Fail("field '" + f + ".region.max_m' must exceed 'region.min_m' on every axis");
+      if (fl.region_min_m[a] < s.domain_min_m[a] || fl.region_max_m[a] > s.domain_max_m[a])
+        c.Fail("field '" + f + ".region' must lie inside the domain");
+    }
+  }
+}
+
+void CheckTime(const Scene& s, Checker& c) {
+  c.Range("time.duration_s", s.time.duration_s, 0, 1e6, false, false, "s");
+  c.Range("time.rayleigh_fraction", s.time.rayleigh_fraction, 0, 1, true, false);
+  c.Range("time.timestep_s", s.time.timestep_s, 0, 1, false, false, "s");
+  c.Range("skin_m", s.skin_m, 0, 1, false, false, "m");
+  c.Range("max_wall_time_s", s.max_wall_time_s, 0, 1e9, false, false, "s");
+  if (!c.ok() || s.species.empty()) return;
+  const double t_r = RayleighTime(s);
+  if (s.time.timestep_s > t_r && !s.time.force_timestep) {
+    std::ostringstream os;
+    os << "field 'time.timestep_s' = " << s.time.timestep_s << " s exceeds the Rayleigh time "
+       << t_r << " s of the smallest, stiffest species; contacts would be under-resolved and "
+       << "the run would blow up. Use time.rayleigh_fraction (default 0.2) or set "
+       << "time.force_timestep = true to insist";
+    c.Fail(os.str());
+  }
+}
+
+}  // namespace
+
+bool Scene::IsValid(std::string* error) const {
+  Checker c(error);
+  CheckMaterials(*this, c);
+  if (c.ok()) CheckSpecies(*this, c);
+  if (c.ok()) CheckPairs(*this, c);
+  if (c.ok()) CheckGeometry(*this, c);
+  if (c.ok()) CheckParticles(*this, c);
+  RollingModel model;
+  if (c.ok() && !MakeRollingModel(rolling, &model))
+    c.Fail("field 'contact_model.rolling' = '" + rolling.name + "' is not one of none|cdt|epsd|epsd2");
+  if (c.ok()) c.Range("contact_model.epsd_damping_ratio", rolling.epsd_damping_ratio, 0, 1, false, false);
+  if (c.ok() && species.empty() && (!particles.empty() || !fills.empty()))
+    c.Fail("field 'species' must list at least one species");
+  if (c.ok()) CheckTime(*this, c);
+  return c.ok();
+}
+
+int Scene::MaterialIndex(const std::string& name) const {
+  for (size_t i = 0; i < materials.size(); ++i)
+    if (materials[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+int Scene::SpeciesIndex(const std::string& name) const {
+  for (size_t i = 0; i < species.size(); ++i)
+    if (species[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+double Scene::MaxDiameter() const {
+  double d = 0;
+  for (const Species& s : species) d = std::max(d, s.size.MaxDiameter());
+  for (const ParticleSpec& p : particles) d = std::max(d, p.diameter_m);
+  return d;
+}
+
+double Scene::MinDiameter() const {
+  double d = std::numeric_limits<double>::infinity();
+  for (const Species& s : species) d = std::min(d, s.size.MinDiameter());
+  for (const ParticleSpec& p : particles)
+    if (p.diameter_m > 0) d = std::min(d, p.diameter_m);
+  return d;
+}
+
+double RayleighTime(const Scene& scene) {
+  double t = std::numeric_limits<double>::infinity();
+  for (const Species& sp : scene.species) {
+    const Material& m = scene.materials[sp.material];
+    const double r = 0.5 * sp.size.MinDiameter();
+    t = std::min(t, std::numbers::pi * r * std::sqrt(m.density_kg_m3 / m.ShearModulus()) /
+                        (0.1631 * m.poisson_ratio + 0.8766));
+  }
+  for (const ParticleSpec& p : scene.particles) {
+    if (p.diameter_m <= 0) continue;
+    const Material& m = scene.materials[scene.species[p.species].material];
+    t = std::min(t, std::numbers::pi * 0.5 * p.diameter_m *
+                        std::sqrt(m.density_kg_m3 / m.ShearModulus()) /
+                        (0.1631 * m.poisson_ratio + 0.8766));
+  }
+  return t;
+}
+
+}  // namespace demcal::core

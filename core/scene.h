@@ -1,0 +1,73 @@
+#pragma once
+// Scene: everything that defines a DEM run, in SI units — materials, species, the pairwise
+// interaction table, the contact model choice, walls, the domain, initial particles and the time
+// settings. Plain data; IsValid() checks it before any work and names the offending field with
+// the allowed range (field names match the JSON scene keys, e.g. "materials[1].poisson_ratio").
+//
+// Usage:
+//   Scene s;  ...fill...;  std::string err;
+//   if (!s.IsValid(&err)) { report(err); }
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/contact/rolling_model.h"
+#include "core/interaction_table.h"
+#include "core/material.h"
+#include "core/vec3.h"
+#include "core/walls.h"
+
+namespace demcal::core {
+
+// One explicitly placed particle.
+struct ParticleSpec {
+  int species = 0;
+  Vec3 position_m;
+  Vec3 velocity_m_s;
+  Vec3 angular_velocity_rad_s;
+  double diameter_m = 0;  // 0: draw from the species' size distribution
+};
+
+// Fill an axis-aligned box region at t = 0 with `count` non-overlapping particles of a species
+// at random positions (deterministic from the scene seed).
+struct FillSpec {
+  int species = 0;
+  Vec3 region_min_m, region_max_m;
+  int64_t count = 0;
+  Vec3 velocity_m_s;
+};
+
+struct TimeSettings {
+  double duration_s = 0;          // simulated time to run
+  double rayleigh_fraction = 0.2; // Δt = fraction × Rayleigh time, in (0, 1]
+  double timestep_s = 0;          // > 0 overrides the fraction
+  bool force_timestep = false;    // allow Δt above the Rayleigh time (not recommended)
+};
+
+struct Scene {
+  std::vector<Material> materials;
+  std::vector<Species> species;
+  std::vector<PairParameters> pair_parameters;  // materials² entries, symmetric, row-major
+  RollingModelSpec rolling;
+  std::vector<PlaneWall> walls;
+  Vec3 domain_min_m, domain_max_m;  // a particle leaving this box ends the run
+  Vec3 gravity_m_s2{0, 0, -9.81};
+  std::vector<ParticleSpec> particles;
+  std::vector<FillSpec> fills;
+  uint64_t seed = 1;
+  TimeSettings time;
+  double skin_m = 0;           // Verlet skin; 0 = a quarter of the smallest diameter
+  double max_wall_time_s = 0;  // 0 = unlimited; exceeded ⇒ termination "wall_time_exceeded"
+
+  bool IsValid(std::string* error) const;
+  int MaterialIndex(const std::string& name) const;  // -1 if absent
+  int SpeciesIndex(const std::string& name) const;   // -1 if absent
+  double MaxDiameter() const;
+  double MinDiameter() const;
+};
+
+// Rayleigh time of the scene's stiffest, smallest species (physics.md §1.5):
+// Δt_R = π R sqrt(ρ/G) / (0.1631 ν + 0.8766), minimised over species.
+double RayleighTime(const Scene& scene);
+
+}  // namespace demcal::core

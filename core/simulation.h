@@ -1,0 +1,91 @@
+#pragma once
+// Simulation: the DEM engine facade. Lifecycle: construct from a Scene → Initialize() (validates,
+// resolves materials, places the initial particles, builds the neighbour list) → Run() as often
+// as needed. Each Run() returns a RunSummary; failures (NaN, energy blow-up, lost particles,
+// wall-time budget) are reported there, never thrown.
+//
+// Threads: a Simulation runs inside its own TBB arena of `threads` workers (0 = all cores), so
+// many small simulations can run side by side, each with one thread. Results are bit-identical
+// for any thread count (see ContactForces).
+//
+// Usage:
+//   Simulation sim(scene, {.threads = 1});
+//   std::string err;
+//   if (!sim.Initialize(&err)) ...;
+//   RunSummary s = sim.Run(scene.time.duration_s);
+#include <functional>
+#include <memory>
+#include <string>
+
+#include <tbb/task_arena.h>
+
+#include "core/contact_forces.h"
+#include "core/neighbour_list.h"
+#include "core/particles.h"
+#include "core/run_summary.h"
+#include "core/scene.h"
+
+namespace demcal::core {
+
+class Simulation {
+ public:
+  struct Options {
+    int threads = 0;                  // 0: all available cores
+    int check_every_steps = 100;      // cadence of the NaN / energy / domain checks
+    int reorder_every_rebuilds = 20;  // spatial re-sort of particles for cache locality (0: never)
+  };
+  // Called every `every_steps` steps during Run(); return false to stop the run early (ok).
+  struct Observer {
+    int64_t every_steps = 0;
+    std::function<bool(const Simulation&)> callback;
+  };
+
+  explicit Simulation(Scene scene);
+  Simulation(Scene scene, Options options);
+  ~Simulation();
+
+  bool Initialize(std::string* error);
+  // Changes the worker count for subsequent Run() calls (0: all cores).
+  void SetThreads(int threads);
+  RunSummary Run(double duration_s);
+  RunSummary Run(double duration_s, const Observer& observer);
+
+  const Scene& scene() const { return scene_; }
+  const Particles& particles() const { return particles_; }
+  Particles& mutable_particles() { return particles_; }
+  double time_s() const { return time_s_; }
+  int64_t steps() const { return steps_; }
+  double timestep_s() const { return dt_; }
+  double KineticEnergy() const { return particles_.KineticEnergy(); }
+  size_t ActiveContacts() const { return forces_.ActiveContacts(); }
+  const NeighbourList& neighbours() const { return list_; }
+
+ private:
+  void PlaceInitialParticles(std::string* error);
+  void Step();
+  void RebuildNeighbours(bool allow_reorder);
+  double GravitationalPotential() const;
+  // Returns kOk, or the failure found by the periodic checks (and fills message).
+  Termination Check(std::string* message) const;
+
+  Scene scene_;
+  Options options_;
+  std::unique_ptr<tbb::task_arena> arena_;
+  InteractionTable table_;
+  RollingModel rolling_;
+  Particles particles_;
+  NeighbourList list_;
+  NeighbourList spare_list_;  // the previous list, kept for history transfer and its buffers
+  NeighbourList::Settings list_settings_;
+  ContactForces forces_;
+  double dt_ = 0;
+  double time_s_ = 0;
+  int64_t steps_ = 0;
+  int64_t next_id_ = 0;
+  uint64_t rebuilds_since_reorder_ = 0;
+  double energy_budget_J_ = 0;   // initial KE + PE (+ inserted energy)
+  double energy_scale_J_ = 0;    // energy that gravity and the initial state can release
+  bool initialized_ = false;
+};
+
+}  // namespace demcal::core
