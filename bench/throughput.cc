@@ -111,6 +111,12 @@ int main(int argc, char** argv) {
   std::printf("contacts_per_particle: %.2f\nneighbour_rebuilds: %llu\n",
               static_cast<double>(sim.ActiveContacts()) / sim.particles().Size(),
               static_cast<unsigned long long>(timed.neighbour_rebuilds));
+  // Order-independent digest of the final state: equal across thread counts iff bit-identical.
+  double digest = 0;
+  for (size_t i = 0; i < sim.particles().Size(); ++i)
+    digest += sim.particles().position_m[i].x * (1 + sim.particles().id[i] % 7) +
+              sim.particles().velocity_m_s[i].z;
+  std::printf("state_digest: %a\n", digest);
   std::printf("particle_steps_per_s: %.0f\n", rate);
   return 0;
 }

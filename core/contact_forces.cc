@@ -2,6 +2,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <numeric>
@@ -10,97 +11,142 @@
 
 namespace demcal::core {
 
-template <class Rolling>
-void ContactForces::ComputePairs(const Particles& p, const NeighbourList& list,
-                                 const InteractionTable& table, const Rolling& rolling,
-                                 double dt) {
-  const size_t n = p.Size();
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 256), [&](const auto& range) {
-    for (size_t i = range.begin(); i != range.end(); ++i) {
-      const Vec3 xi = p.position_m[i];
-      const double ri = p.radius_m[i];
-      for (uint32_t k = list.RowBegin(i); k < list.RowEnd(i); ++k) {
-        const uint32_t j = list.Partner(k);
-        const Vec3 d = xi - p.position_m[j];
-        const double rsum = ri + p.radius_m[j];
-        const double dist2 = Norm2(d);
-        if (dist2 >= rsum * rsum) {
-          if (pair_active_[k]) pair_history_[k] = ContactHistory{}, pair_active_[k] = 0;
-          continue;
-        }
-        const double dist = std::sqrt(dist2);
-        ContactGeometry g;
-        g.normal = d * (1.0 / dist);
-        g.overlap_m = rsum - dist;
-        g.radius_i_m = ri;
-        g.radius_j_m = p.radius_m[j];
-        g.effective_radius_m = ri * g.radius_j_m / rsum;
-        g.mass_i_kg = p.mass_kg[i];
-        g.mass_j_kg = p.mass_kg[j];
-        g.effective_mass_kg = g.mass_i_kg * g.mass_j_kg / (g.mass_i_kg + g.mass_j_kg);
-        g.omega_i = p.angular_velocity_rad_s[i];
-        g.omega_j = p.angular_velocity_rad_s[j];
-        g.relative_velocity_m_s = p.velocity_m_s[i] - p.velocity_m_s[j] -
-                                  Cross(ri * g.omega_i + g.radius_j_m * g.omega_j, g.normal);
-        const ResolvedPair& pair = table.Get(p.material[i], p.material[j]);
-        pair_result_[k] = EvaluateContact(g, pair, dt, rolling, pair_history_[k]);
-        pair_active_[k] = 1;
-      }
-    }
-  });
+// Geometry of the contact between listed partners i < j, or false if they do not overlap.
+inline bool PairGeometry(const Particles& p, size_t i, uint32_t j, ContactGeometry& g) {
+  const Vec3 d = p.position_m[i] - p.position_m[j];
+  const double ri = p.radius_m[i], rj = p.radius_m[j];
+  const double rsum = ri + rj;
+  const double dist2 = Norm2(d);
+  if (dist2 >= rsum * rsum) return false;
+  const double dist = std::sqrt(dist2);
+  g.normal = d * (1.0 / dist);
+  g.overlap_m = rsum - dist;
+  g.radius_i_m = ri;
+  g.radius_j_m = rj;
+  g.effective_radius_m = ri * rj / rsum;
+  g.mass_i_kg = p.mass_kg[i];
+  g.mass_j_kg = p.mass_kg[j];
+  g.effective_mass_kg = g.mass_i_kg * g.mass_j_kg / (g.mass_i_kg + g.mass_j_kg);
+  g.omega_i = p.angular_velocity_rad_s[i];
+  g.omega_j = p.angular_velocity_rad_s[j];
+  g.relative_velocity_m_s =
+      p.velocity_m_s[i] - p.velocity_m_s[j] - Cross(ri * g.omega_i + rj * g.omega_j, g.normal);
+  return true;
+}
+
+inline ContactGeometry WallGeometry(const Particles& p, size_t i, const PlaneWall& wall,
+                                    double overlap) {
+  ContactGeometry g;
+  const double ri = p.radius_m[i];
+  g.normal = wall.normal;
+  g.overlap_m = overlap;
+  g.radius_i_m = ri;
+  g.radius_j_m = 0;
+  g.effective_radius_m = ri;
+  g.mass_i_kg = g.effective_mass_kg = p.mass_kg[i];
+  g.mass_j_kg = 0;
+  g.omega_i = p.angular_velocity_rad_s[i];
+  g.relative_velocity_m_s = p.velocity_m_s[i] - wall.velocity_m_s - Cross(ri * g.omega_i, wall.normal);
+  return g;
 }
 
 template <class Rolling>
-void ContactForces::Gather(Particles& p, const NeighbourList& list,
-                           const std::vector<PlaneWall>& walls, const InteractionTable& table,
-                           const Rolling& rolling, const Vec3& gravity, double dt) {
-  const size_t n = p.Size();
-  const size_t nw = walls.size();
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 256), [&](const auto& range) {
-    for (size_t i = range.begin(); i != range.end(); ++i) {
-      Vec3 f = gravity * p.mass_kg[i];
-      Vec3 t;
-      for (uint32_t k = list.RowBegin(i); k < list.RowEnd(i); ++k) {
-        if (!pair_active_[k]) continue;
-        f += pair_result_[k].force_i;
-        t += pair_result_[k].torque_i;
-      }
-      for (uint32_t r = list.ReverseBegin(i); r < list.ReverseEnd(i); ++r) {
-        const uint32_t k = list.ReverseEntry(r);
-        if (!pair_active_[k]) continue;
-        f -= pair_result_[k].force_i;
-        t += pair_result_[k].torque_j;
-      }
-      for (size_t w = 0; w < nw; ++w) {
-        const PlaneWall& wall = walls[w];
-        const size_t slot = i * nw + w;
-        const double ri = p.radius_m[i];
-        const double overlap = ri - Dot(p.position_m[i] - wall.point_m, wall.normal);
-        if (overlap <= 0) {
-          if (wall_active_[slot]) wall_history_[slot] = ContactHistory{}, wall_active_[slot] = 0;
-          continue;
-        }
-        ContactGeometry g;
-        g.normal = wall.normal;
-        g.overlap_m = overlap;
-        g.radius_i_m = ri;
-        g.radius_j_m = 0;
-        g.effective_radius_m = ri;
-        g.mass_i_kg = g.effective_mass_kg = p.mass_kg[i];
-        g.mass_j_kg = 0;
-        g.omega_i = p.angular_velocity_rad_s[i];
-        g.relative_velocity_m_s =
-            p.velocity_m_s[i] - wall.velocity_m_s - Cross(ri * g.omega_i, g.normal);
-        const ContactResult c = EvaluateContact(g, table.Get(p.material[i], wall.material), dt,
-                                                rolling, wall_history_[slot]);
-        wall_active_[slot] = 1;
-        f += c.force_i;
-        t += c.torque_i;
-      }
-      p.force_N[i] = f;
-      p.torque_N_m[i] = t;
+bool ContactForces::EvaluatePair(const Particles& p, const InteractionTable& table,
+                                 const Rolling& rolling, double dt, size_t i, uint32_t k,
+                                 uint32_t j, ContactResult& out) {
+  ContactGeometry g;
+  if (!PairGeometry(p, i, j, g)) {
+    if (pair_active_[k]) pair_history_[k] = ContactHistory{}, pair_active_[k] = 0;
+    return false;
+  }
+  out = EvaluateContact(g, table.Get(p.material[i], p.material[j]), dt, rolling, pair_history_[k]);
+  pair_active_[k] = 1;
+  return true;
+}
+
+// Chunk c owns particle slots [chunk_[c], chunk_[c+1]). Pairs whose partner lies in a later
+// chunk are evaluated first (phase A) into pair_result_; then each chunk sums, per particle and in
+// the order a serial sweep would (contributions from earlier rows first, then its own row, then
+// walls), so results are bit-identical for any number of chunks.
+template <class Rolling>
+void ContactForces::ComputeCrossChunkPairs(const Particles& p, const NeighbourList& list,
+                                           const InteractionTable& table, const Rolling& rolling,
+                                           double dt, size_t c) {
+  const uint32_t end = chunk_[c + 1];
+  for (uint32_t i = chunk_[c]; i < end; ++i) {
+    const uint32_t row_end = list.RowEnd(i);
+    if (row_end == list.RowBegin(i) || list.Partner(row_end - 1) < end) continue;
+    for (uint32_t k = list.RowBegin(i); k < row_end; ++k) {
+      const uint32_t j = list.Partner(k);
+      if (j >= end) EvaluatePair(p, table, rolling, dt, i, k, j, pair_result_[k]);
     }
-  });
+  }
+}
+
+template <class Rolling>
+void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
+                             const std::vector<PlaneWall>& walls, const InteractionTable& table,
+                             const Rolling& rolling, const Vec3& gravity, double dt, size_t c) {
+  const uint32_t begin = chunk_[c], end = chunk_[c + 1];
+  const uint32_t first_own_entry = list.RowBegin(begin);
+  for (uint32_t i = begin; i < end; ++i) {
+    Vec3 f = gravity * p.mass_kg[i];
+    Vec3 t;
+    for (uint32_t r = list.ReverseBegin(i); r < list.ReverseEnd(i); ++r) {
+      const uint32_t k = list.ReverseEntry(r);
+      if (k >= first_own_entry) break;  // entries are ascending; the rest come from own rows
+      if (!pair_active_[k]) continue;
+      f -= pair_result_[k].force_i;
+      t += pair_result_[k].torque_j;
+    }
+    p.force_N[i] = f;
+    p.torque_N_m[i] = t;
+  }
+  for (uint32_t i = begin; i < end; ++i) {
+    Vec3& fi = p.force_N[i];
+    Vec3& ti = p.torque_N_m[i];
+    for (uint32_t k = list.RowBegin(i); k < list.RowEnd(i); ++k) {
+      const uint32_t j = list.Partner(k);
+      if (j >= end) {
+        if (!pair_active_[k]) continue;
+        fi += pair_result_[k].force_i;
+        ti += pair_result_[k].torque_i;
+        continue;
+      }
+      ContactResult r;
+      if (!EvaluatePair(p, table, rolling, dt, i, k, j, r)) continue;
+      fi += r.force_i;
+      ti += r.torque_i;
+      p.force_N[j] -= r.force_i;
+      p.torque_N_m[j] += r.torque_j;
+    }
+    for (uint32_t e = wall_start_[i]; e < wall_start_[i + 1]; ++e) {
+      const PlaneWall& wall = walls[wall_index_[e]];
+      const double overlap = p.radius_m[i] - Dot(p.position_m[i] - wall.point_m, wall.normal);
+      if (overlap <= 0) {
+        if (wall_active_[e]) wall_history_[e] = ContactHistory{}, wall_active_[e] = 0;
+        continue;
+      }
+      const ContactResult r = EvaluateContact(WallGeometry(p, i, wall, overlap),
+                                              table.Get(p.material[i], wall.material), dt,
+                                              rolling, wall_history_[e]);
+      wall_active_[e] = 1;
+      fi += r.force_i;
+      ti += r.torque_i;
+    }
+  }
+}
+
+void ContactForces::SplitIntoChunks(const NeighbourList& list, size_t n) {
+  // Chunks of about equal pair counts, one per worker (a serial run has one chunk).
+  const size_t chunks = std::max<size_t>(1, std::min<size_t>(tbb::this_task_arena::max_concurrency(), n / 64 + 1));
+  chunk_.assign(chunks + 1, static_cast<uint32_t>(n));
+  chunk_[0] = 0;
+  const double per_chunk = static_cast<double>(list.PairCount() + n) / chunks;
+  size_t c = 1;
+  for (size_t i = 0; i < n && c < chunks; ++i)
+    if (list.RowBegin(i) + i >= per_chunk * c) chunk_[c++] = static_cast<uint32_t>(i);
+  for (; c < chunks; ++c) chunk_[c] = static_cast<uint32_t>(n);
 }
 
 void ContactForces::Compute(Particles& p, const NeighbourList& list,
@@ -111,20 +157,33 @@ void ContactForces::Compute(Particles& p, const NeighbourList& list,
     pair_active_.resize(list.PairCount(), 0);
   }
   pair_result_.resize(list.PairCount());
-  if (wall_history_.size() != p.Size() * walls.size()) {
-    wall_history_.resize(p.Size() * walls.size());
-    wall_active_.resize(p.Size() * walls.size(), 0);
-  }
+  SplitIntoChunks(list, p.Size());
+  const size_t chunks = chunk_.size() - 1;
   std::visit(
       [&](const auto& model) {
-        ComputePairs(p, list, table, model, dt);
-        Gather(p, list, walls, table, model, gravity, dt);
+        if (chunks == 1) {
+          SumChunk(p, list, walls, table, model, gravity, dt, 0);
+          return;
+        }
+        tbb::parallel_for(size_t{0}, chunks, [&](size_t c) {
+          ComputeCrossChunkPairs(p, list, table, model, dt, c);
+        });
+        tbb::parallel_for(size_t{0}, chunks, [&](size_t c) {
+          SumChunk(p, list, walls, table, model, gravity, dt, c);
+        });
       },
       rolling);
 }
 
-void ContactForces::Remap(const NeighbourList& old_list, const NeighbourList& new_list,
-                          const std::vector<uint32_t>& order, size_t wall_count) {
+void ContactForces::Rebuild(const Particles& p, const NeighbourList& old_list,
+                            const NeighbourList& new_list, const std::vector<uint32_t>& order,
+                            const std::vector<PlaneWall>& walls, double skin_m) {
+  RemapPairs(old_list, new_list, order);
+  RebuildWallCandidates(p, order, walls, skin_m);
+}
+
+void ContactForces::RemapPairs(const NeighbourList& old_list, const NeighbourList& new_list,
+                               const std::vector<uint32_t>& order) {
   const size_t n = new_list.RowsCount();
   auto old_slot = [&](uint32_t s) { return order.empty() ? s : order[s]; };
   std::vector<ContactHistory> history(new_list.PairCount());
@@ -146,18 +205,39 @@ void ContactForces::Remap(const NeighbourList& old_list, const NeighbourList& ne
   });
   pair_history_.swap(history);
   pair_active_.swap(active);
-  if (!order.empty() && wall_count > 0 && wall_history_.size() == order.size() * wall_count) {
-    std::vector<ContactHistory> walls(order.size() * wall_count);
-    std::vector<uint8_t> wall_on(order.size() * wall_count, 0);
-    for (size_t s = 0; s < order.size(); ++s) {
-      for (size_t w = 0; w < wall_count; ++w) {
-        walls[s * wall_count + w] = wall_history_[order[s] * wall_count + w];
-        wall_on[s * wall_count + w] = wall_active_[order[s] * wall_count + w];
+}
+
+void ContactForces::RebuildWallCandidates(const Particles& p, const std::vector<uint32_t>& order,
+                                          const std::vector<PlaneWall>& walls, double skin_m) {
+  const size_t n = p.Size();
+  auto old_slot = [&](size_t s) { return order.empty() ? s : order[s]; };
+  const bool had_rows = wall_start_.size() == n + 1;
+  std::vector<uint32_t> start(n + 1, 0), index;
+  std::vector<ContactHistory> history;
+  std::vector<uint8_t> active;
+  for (size_t i = 0; i < n; ++i) {
+    for (uint32_t w = 0; w < walls.size(); ++w) {
+      const PlaneWall& wall = walls[w];
+      const bool moving = !(wall.velocity_m_s == Vec3{});
+      const double gap = Dot(p.position_m[i] - wall.point_m, wall.normal) - p.radius_m[i];
+      if (!moving && gap > skin_m) continue;
+      ContactHistory h;
+      uint8_t on = 0;
+      if (had_rows) {  // keep the history of a wall contact that persists
+        const size_t o = old_slot(i);
+        for (uint32_t e = wall_start_[o]; e < wall_start_[o + 1]; ++e)
+          if (wall_index_[e] == w) h = wall_history_[e], on = wall_active_[e];
       }
+      index.push_back(w);
+      history.push_back(h);
+      active.push_back(on);
     }
-    wall_history_.swap(walls);
-    wall_active_.swap(wall_on);
+    start[i + 1] = static_cast<uint32_t>(index.size());
   }
+  wall_start_.swap(start);
+  wall_index_.swap(index);
+  wall_history_.swap(history);
+  wall_active_.swap(active);
 }
 
 size_t ContactForces::ActiveContacts() const {

@@ -3,9 +3,10 @@
 // force and torque per particle, keeping the per-contact histories (tangential spring, rolling
 // spring) across steps and across neighbour-list rebuilds.
 //
-// Determinism: each listed pair is evaluated once into its own slot; each particle then sums
-// its slots in a fixed order (its row, then its reverse entries, then walls). Floating-point
-// sums therefore do not depend on the number of threads.
+// Determinism: particles are split into one contiguous chunk per worker; each pair is evaluated
+// once, and every particle's force is summed in the order of a serial sweep (see SumChunk), so
+// floating-point results do not depend on the number of threads. A serial run pays no extra
+// cost: it is the plain Newton's-third-law sweep over the half list.
 #include <vector>
 
 #include "core/contact/contact_state.h"
@@ -24,30 +25,46 @@ class ContactForces {
                const InteractionTable& table, const RollingModel& rolling, const Vec3& gravity,
                double dt);
 
-  // Carries histories over to a freshly built list. `order[new_slot] = old_slot` describes a
-  // particle permutation applied together with the rebuild (identity if empty).
-  void Remap(const NeighbourList& old_list, const NeighbourList& new_list,
-             const std::vector<uint32_t>& order, size_t wall_count);
+  // Called after every neighbour-list rebuild: carries pair histories over to the new list and
+  // lists, per particle, the walls within its radius + skin (moving walls always), keeping their
+  // histories. `order[new_slot] = old_slot` describes a particle permutation applied together
+  // with the rebuild (identity if empty).
+  void Rebuild(const Particles& p, const NeighbourList& old_list, const NeighbourList& new_list,
+               const std::vector<uint32_t>& order, const std::vector<PlaneWall>& walls,
+               double skin_m);
 
   // Number of particle–particle and particle–wall contacts with positive overlap last step.
   size_t ActiveContacts() const;
   const std::vector<ContactHistory>& PairHistory() const { return pair_history_; }
   std::vector<ContactHistory>& MutablePairHistory() { return pair_history_; }
-  std::vector<ContactHistory>& MutableWallHistory() { return wall_history_; }
 
  private:
   template <class Rolling>
-  void ComputePairs(const Particles& p, const NeighbourList& list, const InteractionTable& table,
-                    const Rolling& rolling, double dt);
+  bool EvaluatePair(const Particles& p, const InteractionTable& table, const Rolling& rolling,
+                    double dt, size_t i, uint32_t k, uint32_t j, ContactResult& out);
   template <class Rolling>
-  void Gather(Particles& p, const NeighbourList& list, const std::vector<PlaneWall>& walls,
-              const InteractionTable& table, const Rolling& rolling, const Vec3& gravity,
-              double dt);
+  void ComputeCrossChunkPairs(const Particles& p, const NeighbourList& list,
+                              const InteractionTable& table, const Rolling& rolling, double dt,
+                              size_t chunk);
+  template <class Rolling>
+  void SumChunk(Particles& p, const NeighbourList& list, const std::vector<PlaneWall>& walls,
+                const InteractionTable& table, const Rolling& rolling, const Vec3& gravity,
+                double dt, size_t chunk);
+  void SplitIntoChunks(const NeighbourList& list, size_t n);
+
+  void RemapPairs(const NeighbourList& old_list, const NeighbourList& new_list,
+                  const std::vector<uint32_t>& order);
+  void RebuildWallCandidates(const Particles& p, const std::vector<uint32_t>& order,
+                             const std::vector<PlaneWall>& walls, double skin_m);
 
   std::vector<ContactHistory> pair_history_;  // aligned with NeighbourList entries
-  std::vector<ContactResult> pair_result_;    // aligned with NeighbourList entries
+  std::vector<ContactResult> pair_result_;    // cross-chunk pairs only, aligned with entries
   std::vector<uint8_t> pair_active_;
-  std::vector<ContactHistory> wall_history_;  // particle-major: [i * walls + w]
+  std::vector<uint32_t> chunk_;               // particle-slot boundaries of the worker chunks
+  // Wall candidates in compressed rows: particle i's entries are [wall_start_[i], wall_start_[i+1]).
+  std::vector<uint32_t> wall_start_{0};
+  std::vector<uint32_t> wall_index_;
+  std::vector<ContactHistory> wall_history_;  // aligned with wall_index_
   std::vector<uint8_t> wall_active_;
 };
 

@@ -99,7 +99,7 @@ void Simulation::RebuildNeighbours(bool allow_reorder) {
   }
   ++rebuilds_since_reorder_;
   list_.Build(list_settings_, particles_.position_m, particles_.radius_m);
-  forces_.Remap(spare_list_, list_, order, scene_.walls.size());
+  forces_.Rebuild(particles_, spare_list_, list_, order, scene_.walls, list_settings_.skin_m);
 }
 
 void Simulation::Step() {
