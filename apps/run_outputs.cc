@@ -1,0 +1,60 @@
+#include "apps/run_outputs.h"
+
+#include <cmath>
+#include <filesystem>
+#include <system_error>
+
+#include "core/io/csv_writer.h"
+
+namespace demcal::apps {
+namespace {
+constexpr const char* kVtkDir = "vtk";
+constexpr const char* kVtkPrefix = "particles";
+}  // namespace
+
+RunOutputs::RunOutputs(std::string directory, OutputSettings settings)
+    : directory_(std::move(directory)),
+      settings_(settings),
+      series_(directory_ + "/" + kVtkDir, kVtkPrefix, settings.vtk) {}
+
+bool RunOutputs::Prepare(std::string* error) {
+  std::error_code ec;
+  std::filesystem::create_directories(std::filesystem::path(directory_) / kVtkDir, ec);
+  if (ec) {
+    if (error) *error = "cannot create output directory '" + directory_ + "': " + ec.message();
+    return false;
+  }
+  return true;
+}
+
+int64_t RunOutputs::SnapshotEverySteps(double timestep_s) const {
+  if (!(settings_.vtk_interval_s > 0) || !(timestep_s > 0)) return 0;
+  return std::max<int64_t>(1, std::llround(settings_.vtk_interval_s / timestep_s));
+}
+
+bool RunOutputs::WriteSnapshot(const core::Simulation& sim, std::string* error) {
+  if (!series_.Write(sim.particles(), sim.time_s(), error)) return false;
+  last_snapshot_step_ = sim.steps();
+  return true;
+}
+
+bool RunOutputs::WriteFinal(const core::Simulation& sim, std::string* error) {
+  if (last_snapshot_step_ != sim.steps() && !WriteSnapshot(sim, error)) return false;
+  if (!core::io::WriteParticlesCsv(CsvPath(), sim.particles(), error)) return false;
+  csv_written_ = true;
+  return true;
+}
+
+nlohmann::ordered_json RunOutputs::Describe() const {
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  if (!series_.entries().empty()) {
+    out["vtk_series"] = std::string(kVtkDir) + "/" + kVtkPrefix + ".vtk.series";
+    out["vtk_snapshots"] = series_.entries().size();
+    out["vtk_format"] =
+        settings_.vtk.encoding == core::io::VtkOptions::Encoding::kBinary ? "binary" : "ascii";
+  }
+  if (csv_written_) out["final_particles_csv"] = "final_particles.csv";
+  return out;
+}
+
+}  // namespace demcal::apps

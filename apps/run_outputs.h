@@ -1,0 +1,52 @@
+#pragma once
+// RunOutputs: the files a `demcal simulate` run writes into its output directory DIR.
+//   DIR/vtk/particles_NNNNNN.vtk   snapshots (core/io/vtk_writer.h): the initial state, one
+//                                  every round(vtk_interval_s / Δt) steps, and the final state
+//   DIR/vtk/particles.vtk.series   ParaView's index of the snapshots with their times
+//   DIR/final_particles.csv        the final state, one row per particle (core/io/csv_writer.h)
+// summary.json is written by the caller (summary_json.h) with Describe() as its "outputs".
+//
+// Thread-safety: single-threaded use; WriteSnapshot may be called from a Simulation observer.
+//
+// Usage:
+//   RunOutputs outputs(dir, file.output);
+//   if (!outputs.Prepare(&error)) ...;
+//   outputs.WriteSnapshot(sim, &error);  ...  outputs.WriteFinal(sim, &error);
+#include <cstdint>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "apps/scene_file.h"
+#include "core/io/vtk_writer.h"
+#include "core/simulation.h"
+
+namespace demcal::apps {
+
+class RunOutputs {
+ public:
+  RunOutputs(std::string directory, OutputSettings settings);
+
+  // Creates DIR and DIR/vtk if needed.
+  bool Prepare(std::string* error);
+  // Steps between periodic snapshots for a time step; 0 when only initial and final are kept.
+  int64_t SnapshotEverySteps(double timestep_s) const;
+  // Writes a snapshot of the current state (and refreshes the series index).
+  bool WriteSnapshot(const core::Simulation& sim, std::string* error);
+  // Writes the final snapshot (unless the current step already has one) and the CSV table.
+  bool WriteFinal(const core::Simulation& sim, std::string* error);
+
+  std::string SummaryPath() const { return directory_ + "/summary.json"; }
+  std::string CsvPath() const { return directory_ + "/final_particles.csv"; }
+  // The outputs written so far, with paths relative to DIR, for summary.json.
+  nlohmann::ordered_json Describe() const;
+
+ private:
+  std::string directory_;
+  OutputSettings settings_;
+  core::io::VtkSeries series_;
+  int64_t last_snapshot_step_ = -1;
+  bool csv_written_ = false;
+};
+
+}  // namespace demcal::apps

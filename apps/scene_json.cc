@@ -1,0 +1,159 @@
+#include "apps/scene_json.h"
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "apps/json_fields.h"
+#include "apps/scene_json_sections.h"
+
+namespace demcal::apps {
+namespace {
+
+using nlohmann::json;
+
+const std::vector<std::string>& TopLevelKeys() {
+  static const std::vector<std::string> keys = {
+      "format", "description", "materials", "species",   "interactions", "contact_model",
+      "domain", "gravity_m_s2", "walls",    "particles", "fills",        "seed",
+      "time",   "skin_m",       "max_wall_time_s",       "output"};
+  return keys;
+}
+
+void ParseDomain(JsonFields& top, core::Scene* scene, JsonStatus* status) {
+  const json* domain = top.Object("domain", kRequired);
+  if (!domain) return;
+  JsonFields f(*domain, "domain", {"min_m", "max_m"}, status);
+  f.Vector("min_m", &scene->domain_min_m, kRequired);
+  f.Vector("max_m", &scene->domain_max_m, kRequired);
+}
+
+void ParseTime(JsonFields& top, core::Scene* scene, JsonStatus* status) {
+  const json* time = top.Object("time", kRequired);
+  if (!time) return;
+  JsonFields f(*time, "time", {"duration_s", "rayleigh_fraction", "timestep_s", "force_timestep"},
+               status);
+  core::TimeSettings& t = scene->time;
+  f.Number("duration_s", &t.duration_s, kRequired);
+  if (f.ok() && f.Has("rayleigh_fraction") && f.Has("timestep_s"))
+    f.Fail("timestep_s", "cannot be given together with 'time.rayleigh_fraction'; give one");
+  f.Number("rayleigh_fraction", &t.rayleigh_fraction, kOptional);
+  // 0 means "derive from the Rayleigh time" inside the core; in a file that is "absent".
+  f.Number("timestep_s", &t.timestep_s, kOptional, Range::LeftOpen(0, 1, "s"));
+  f.Bool("force_timestep", &t.force_timestep, kOptional);
+}
+
+void ParseOutput(JsonFields& top, OutputSettings* output, JsonStatus* status) {
+  const json* section = top.Object("output", kOptional);
+  if (!section) return;
+  JsonFields f(*section, "output", {"vtk_interval_s", "vtk_format"}, status);
+  f.Number("vtk_interval_s", &output->vtk_interval_s, kOptional, Range::LeftOpen(0, 1e6, "s"));
+  std::string encoding = "binary";
+  f.String("vtk_format", &encoding, kOptional, {"binary", "ascii"});
+  if (f.ok()) core::io::ParseVtkEncoding(encoding, &output->vtk.encoding);
+}
+
+// nlohmann keeps the last of duplicated keys silently; a scene file with two "seed"s is
+// ambiguous, so the parse callback records the first duplicate.
+class DuplicateKeyCheck {
+ public:
+  bool operator()(int /*depth*/, json::parse_event_t event, json& parsed) {
+    switch (event) {
+      case json::parse_event_t::object_start:
+        keys_.emplace_back();
+        break;
+      case json::parse_event_t::object_end:
+        if (!keys_.empty()) keys_.pop_back();
+        break;
+      case json::parse_event_t::key:
+        if (!keys_.empty() && !keys_.back().insert(parsed.get<std::string>()).second &&
+            duplicate_.empty())
+          duplicate_ = parsed.get<std::string>();
+        break;
+      default:
+        break;
+    }
+    return true;
+  }
+  const std::string& duplicate() const { return duplicate_; }
+
+ private:
+  std::vector<std::set<std::string>> keys_;
+  std::string duplicate_;
+};
+
+}  // namespace
+
+bool ParseSceneJson(const json& document, const std::string& source, SceneFile* out,
+                    std::string* error) {
+  JsonStatus status;
+  SceneFile file;
+  file.source = source;
+  core::Scene& scene = file.scene;
+  JsonFields top(document, "", TopLevelKeys(), &status);
+  std::string format;
+  top.String("format", &format, kRequired);
+  if (status.ok() && format != kSceneFormat)
+    top.Fail("format", "= '" + format + "' is not supported; this demcal reads '" +
+                           std::string(kSceneFormat) + "'");
+  top.String("description", &file.description, kOptional);
+  top.Unsigned("seed", &scene.seed, kRequired);
+  internal::ParseMaterials(top, &scene, &status);
+  internal::ParseSpecies(top, &scene, &status);
+  internal::ParseInteractions(top, &scene, &status);
+  internal::ParseContactModel(top, &scene, &status);
+  ParseDomain(top, &scene, &status);
+  top.Vector("gravity_m_s2", &scene.gravity_m_s2, kOptional);
+  internal::ParseWalls(top, &scene, &status);
+  internal::ParseParticles(top, &scene, &status);
+  internal::ParseFills(top, &scene, &status);
+  if (status.ok() && scene.particles.empty() && scene.fills.empty())
+    status.Fail("the scene places no particles: give 'particles' or 'fills'");
+  ParseTime(top, &scene, &status);
+  top.Number("skin_m", &scene.skin_m, kOptional, Range::LeftOpen(0, 1, "m"));
+  top.Number("max_wall_time_s", &scene.max_wall_time_s, kOptional);
+  ParseOutput(top, &file.output, &status);
+  std::string core_error;
+  if (status.ok() && !scene.IsValid(&core_error)) status.Fail(core_error);
+  if (!status.ok()) {
+    if (error) *error = source + ": " + status.message();
+    return false;
+  }
+  *out = std::move(file);
+  return true;
+}
+
+bool ParseSceneText(const std::string& text, const std::string& source, SceneFile* out,
+                    std::string* error) {
+  DuplicateKeyCheck duplicates;
+  json document;
+  try {
+    document = json::parse(text, std::ref(duplicates));
+  } catch (const json::parse_error& e) {
+    // e.what() is "[json.exception.parse_error.101] parse error at line L, column C: ...".
+    std::string what = e.what();
+    const size_t start = what.find("] ");
+    if (error) *error = source + ": invalid JSON: " +
+                        (start == std::string::npos ? what : what.substr(start + 2));
+    return false;
+  }
+  if (!duplicates.duplicate().empty()) {
+    if (error) *error = source + ": key '" + duplicates.duplicate() +
+                        "' appears twice in one object; JSON keys must be unique";
+    return false;
+  }
+  return ParseSceneJson(document, source, out, error);
+}
+
+bool LoadSceneFile(const std::string& path, SceneFile* out, std::string* error) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    if (error) *error = path + ": cannot open the scene file";
+    return false;
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return ParseSceneText(text.str(), path, out, error);
+}
+
+}  // namespace demcal::apps

@@ -1,0 +1,33 @@
+#pragma once
+// Internal to the scene JSON parser: one function per section of a "demcal-scene/1" document.
+// Each reads its key from the top-level object `top` into `scene`, recording the first problem
+// in `status` (see json_fields.h). Split by theme to keep files small:
+//   scene_json_materials.cc  materials, species, interactions, contact_model
+//   scene_json_bodies.cc     walls, particles, fills
+#include <string>
+#include <vector>
+
+#include "apps/json_fields.h"
+#include "core/scene.h"
+
+namespace demcal::apps::internal {
+
+void ParseMaterials(JsonFields& top, core::Scene* scene, JsonStatus* status);
+void ParseSpecies(JsonFields& top, core::Scene* scene, JsonStatus* status);
+void ParseInteractions(JsonFields& top, core::Scene* scene, JsonStatus* status);
+void ParseContactModel(JsonFields& top, core::Scene* scene, JsonStatus* status);
+void ParseWalls(JsonFields& top, core::Scene* scene, JsonStatus* status);
+void ParseParticles(JsonFields& top, core::Scene* scene, JsonStatus* status);
+void ParseFills(JsonFields& top, core::Scene* scene, JsonStatus* status);
+
+// Resolves `value` (at JSON path `path`) as the name of one of `names` (what = "material",
+// "species") and returns its index, or -1 after recording a type error or
+// "names no <what> (defined: ...)".
+int ResolveName(const nlohmann::json& value, const std::string& path, const std::string& what,
+                const std::vector<std::string>& names, JsonStatus* status);
+
+// Reads the required `key` of `fields` and resolves it with ResolveName.
+int ReadNameReference(JsonFields& fields, const std::string& key, const std::string& what,
+                      const std::vector<std::string>& names, JsonStatus* status);
+
+}  // namespace demcal::apps::internal

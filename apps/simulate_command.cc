@@ -1,0 +1,162 @@
+#include "apps/simulate_command.h"
+
+#include <tbb/info.h>
+
+#include <chrono>
+#include <iostream>
+#include <memory>
+#include <numeric>
+
+#include "apps/exit_codes.h"
+#include "apps/progress_reporter.h"
+#include "apps/run_outputs.h"
+#include "apps/scene_json.h"
+#include "apps/summary_json.h"
+#include "core/simulation.h"
+
+namespace demcal::apps {
+namespace {
+
+// The observer runs at least this often (in steps) for progress; snapshot cadences are kept
+// exact by using a divisor of both.
+constexpr int64_t kProgressEverySteps = 16;
+
+double SecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+int ResolveThreads(int requested) {
+  return requested > 0 ? requested : tbb::info::default_concurrency();
+}
+
+}  // namespace
+
+bool SimulateOptions::IsValid(std::string* error) const {
+  std::string problem;
+  if (scene_path.empty()) problem = "the scene file path is empty";
+  else if (out_dir.empty()) problem = "--out: the output directory is empty";
+  else if (threads < 0) problem = "--threads = " + std::to_string(threads) + " must be >= 0";
+  else if (!(progress_interval_s > 0)) problem = "--progress-interval-s must be > 0";
+  if (!problem.empty() && error) *error = problem;
+  return problem.empty();
+}
+
+int RunSimulate(const SimulateOptions& options, std::ostream& log) {
+  const auto start = std::chrono::steady_clock::now();
+  std::string error;
+  if (!options.IsValid(&error)) {
+    log << "error: " << error << "\n";
+    return kExitInvalidInput;
+  }
+  RunRecord record;
+  record.scene_path = options.scene_path;
+  record.threads_requested = options.threads;
+  record.threads_used = ResolveThreads(options.threads);
+
+  SceneFile file;
+  std::string scene_error;
+  const bool loaded = LoadSceneFile(options.scene_path, &file, &scene_error);
+  // The output directory comes first so that even an invalid scene leaves a summary.json.
+  RunOutputs outputs(options.out_dir, loaded ? file.output : OutputSettings{});
+  if (!outputs.Prepare(&error)) {
+    log << "error: " << error << "\n";
+    return kExitOutputError;
+  }
+  auto finish = [&](int code) {
+    record.total_wall_time_s = SecondsSince(start);
+    record.outputs = outputs.Describe();
+    std::string write_error;
+    if (!WriteRunSummaryJson(outputs.SummaryPath(), record, &write_error)) {
+      log << "error: " << write_error << "\n";
+      return kExitOutputError;
+    }
+    return code;
+  };
+  auto invalid = [&](const std::string& message) {
+    log << "error: " << message << "\n";
+    record.summary.termination = core::Termination::kInvalidScene;
+    record.summary.message = message;
+    return finish(kExitInvalidInput);
+  };
+  if (!loaded) return invalid(scene_error);
+  record.seed = file.scene.seed;
+  record.requested_duration_s = file.scene.time.duration_s;
+  record.scene_description = file.description;
+
+  const double duration_s = file.scene.time.duration_s;
+  core::Simulation sim(file.scene, {.threads = options.threads});
+  if (!sim.Initialize(&error)) return invalid(options.scene_path + ": " + error);
+  record.setup_wall_time_s = SecondsSince(start);
+  if (!options.quiet) {
+    log << "demcal simulate: " << options.scene_path << ": " << sim.particles().Size()
+        << " particles, time step " << sim.timestep_s() << " s, "
+        << std::llround(duration_s / sim.timestep_s()) << " steps to " << duration_s
+        << " s on " << record.threads_used << " thread(s)\n";
+  }
+  if (!outputs.WriteSnapshot(sim, &error)) {
+    record.output_error = error;
+    log << "error: " << error << "\n";
+    return finish(kExitOutputError);
+  }
+
+  ProgressReporter progress(log, duration_s,
+                            {.interval_s = options.progress_interval_s, .enabled = !options.quiet});
+  const int64_t snapshot_every = outputs.SnapshotEverySteps(sim.timestep_s());
+  std::string snapshot_error;
+  core::Simulation::Observer observer;
+  observer.every_steps =
+      snapshot_every > 0 ? std::gcd(snapshot_every, kProgressEverySteps) : kProgressEverySteps;
+  observer.callback = [&](const core::Simulation& s) {
+    if (snapshot_every > 0 && s.steps() % snapshot_every == 0 &&
+        !outputs.WriteSnapshot(s, &snapshot_error))
+      return false;  // stop: the run's output is incomplete
+    progress.Update(s.time_s(), static_cast<int64_t>(s.particles().Size()));
+    return true;
+  };
+  record.summary = sim.Run(duration_s, observer);
+
+  // The final state is written for failed runs too: it shows where things went wrong.
+  if (!snapshot_error.empty()) record.output_error = snapshot_error;
+  else if (!outputs.WriteFinal(sim, &error)) record.output_error = error;
+
+  int code = kExitOk;
+  if (!record.output_error.empty()) {
+    log << "error: " << record.output_error << "\n";
+    code = kExitOutputError;
+  } else if (!record.summary.ok()) {
+    log << "error: run failed (" << core::TerminationName(record.summary.termination)
+        << "): " << record.summary.message << "\n";
+    code = kExitRunFailed;
+  }
+  if (!options.quiet)
+    log << "demcal simulate: " << record.summary.BriefReport() << "; outputs in "
+        << options.out_dir << "\n";
+  return finish(code);
+}
+
+Command AddSimulateCommand(CLI::App& parent) {
+  auto options = std::make_shared<SimulateOptions>();
+  CLI::App* sub = parent.add_subcommand(
+      "simulate", "Run one scene file (JSON, format demcal-scene/1) and write its outputs");
+  sub->add_option("scene", options->scene_path, "scene file, see docs/scene_format.md")
+      ->required();
+  sub->add_option("--out,-o", options->out_dir,
+                  "output directory (created if missing): summary.json, final_particles.csv, "
+                  "vtk/")
+      ->required();
+  sub->add_option("--threads,-t", options->threads, "worker threads (0: all cores)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  sub->add_flag("--quiet,-q", options->quiet, "print only errors (no progress, no report)");
+  sub->add_option("--progress-interval-s", options->progress_interval_s,
+                  "wall time between progress lines on stderr")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  sub->footer(
+      "Exit codes: 0 ok, 2 invalid input (nothing ran), 3 the run failed (NaN, energy blow-up, "
+      "particles lost, wall-time budget), 4 an output could not be written. summary.json is "
+      "written in every case but 4. See docs/cli.md.");
+  return {sub, [options] { return RunSimulate(*options, std::cerr); }};
+}
+
+}  // namespace demcal::apps

@@ -1,0 +1,54 @@
+#include "apps/summary_json.h"
+
+#include <cmath>
+#include <fstream>
+
+#include "core/version.h"
+
+namespace demcal::apps {
+namespace {
+// JSON has no NaN or infinity: a non-finite figure (a blown-up run) is written as null.
+nlohmann::ordered_json Finite(double v) { return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(); }
+}  // namespace
+
+nlohmann::ordered_json RunRecordToJson(const RunRecord& r) {
+  const core::RunSummary& s = r.summary;
+  nlohmann::ordered_json j;
+  j["format"] = kRunSummaryFormat;
+  j["demcal_version"] = kVersion;
+  j["scene"] = r.scene_path;
+  if (!r.scene_description.empty()) j["scene_description"] = r.scene_description;
+  j["seed"] = r.seed ? nlohmann::ordered_json(*r.seed) : nlohmann::ordered_json();
+  j["threads"] = r.threads_used;
+  j["threads_requested"] = r.threads_requested;
+  j["termination"] = core::TerminationName(s.termination);
+  j["message"] = s.message;
+  j["steps"] = s.steps;
+  j["simulated_time_s"] = Finite(s.simulated_time_s);
+  j["requested_duration_s"] =
+      r.requested_duration_s ? Finite(*r.requested_duration_s) : nlohmann::ordered_json();
+  j["timestep_s"] = Finite(s.timestep_s);
+  j["particles"] = s.particles;
+  j["final_kinetic_energy_J"] = Finite(s.final_kinetic_energy_J);
+  j["neighbour_rebuilds"] = s.neighbour_rebuilds;
+  j["wall_time_s"] = Finite(s.wall_time_s);
+  j["setup_wall_time_s"] = Finite(r.setup_wall_time_s);
+  j["total_wall_time_s"] = Finite(r.total_wall_time_s);
+  j["output_error"] = r.output_error.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.output_error);
+  j["outputs"] = r.outputs;
+  return j;
+}
+
+bool WriteRunSummaryJson(const std::string& path, const RunRecord& record, std::string* error) {
+  std::ofstream out(path, std::ios::trunc);
+  out << RunRecordToJson(record).dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace)
+      << "\n";
+  out.flush();
+  if (!out) {
+    if (error) *error = "cannot write '" + path + "'";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace demcal::apps
