@@ -66,6 +66,9 @@ class JsonFields {
   // `allowed`.
   JsonFields(const nlohmann::json& object, std::string path, std::vector<std::string> allowed,
              JsonStatus* status);
+  // The reader keeps a reference to `object`: a temporary would dangle.
+  JsonFields(nlohmann::json&& object, std::string path, std::vector<std::string> allowed,
+             JsonStatus* status) = delete;
 
   bool ok() const { return status_->ok(); }
   bool Has(const std::string& key) const;

@@ -1,0 +1,223 @@
+#include "apps/scene_json.h"
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include "apps/test_paths.h"
+
+using namespace demcal::apps;
+using demcal::testing::RepoRoot;
+using nlohmann::json;
+
+namespace {
+
+std::string Example(const std::string& relative) { return (RepoRoot() / "examples" / relative).string(); }
+
+json PourBox() { return json::parse(std::ifstream(Example("pour_box.json"))); }
+
+// Parses `document` and returns the error ("" if it parsed).
+std::string ErrorOf(const json& document) {
+  SceneFile file;
+  std::string error;
+  return ParseSceneJson(document, "scene.json", &file, &error) ? "" : error;
+}
+
+}  // namespace
+
+TEST_CASE("the pour_box example parses into the scene it describes", "[unit]") {
+  SceneFile file;
+  std::string error;
+  REQUIRE(LoadSceneFile(Example("pour_box.json"), &file, &error));
+  const demcal::core::Scene& s = file.scene;
+  CHECK(s.seed == 42);
+  REQUIRE(s.materials.size() == 2);
+  CHECK(s.materials[0].name == "glass");
+  CHECK(s.materials[0].density_kg_m3 == 2500);
+  CHECK(s.materials[1].density_kg_m3 == 0);  // wall-only material
+  REQUIRE(s.species.size() == 1);
+  CHECK(s.species[0].size.kind == demcal::core::SizeDistribution::Kind::kUniform);
+  CHECK(s.species[0].size.min_diameter_m == 0.0018);
+  CHECK(s.species[0].size.max_diameter_m == 0.0022);
+  // Pair override (glass, steel) is symmetric; (glass, glass) keeps the default.
+  REQUIRE(s.pair_parameters.size() == 4);
+  CHECK(s.pair_parameters[0].sliding_friction == 0.5);
+  CHECK(s.pair_parameters[0].rolling_friction == 0.1);
+  CHECK(s.pair_parameters[1].sliding_friction == 0.3);
+  CHECK(s.pair_parameters[2].sliding_friction == 0.3);
+  CHECK(s.pair_parameters[2].restitution == 0.6);
+  CHECK(s.pair_parameters[2].rolling_friction == 0.1);  // not overridden: from the default
+  CHECK(s.pair_parameters[3].sliding_friction == 0.5);
+  CHECK(s.rolling.name == "epsd2");
+  CHECK(s.walls.size() == 5);  // open-top box
+  REQUIRE(s.fills.size() == 1);
+  CHECK(s.fills[0].count == 3000);
+  CHECK(s.fills[0].velocity_m_s.z == -0.5);
+  CHECK(s.time.duration_s == 0.5);
+  CHECK(file.output.vtk_interval_s == 0.05);
+  CHECK(!file.description.empty());
+}
+
+TEST_CASE("shear moduli become Young's moduli and plane normals are normalised", "[unit]") {
+  json d = PourBox();
+  d["materials"][0].erase("youngs_modulus_Pa");
+  d["materials"][0]["shear_modulus_Pa"] = 2e6;
+  d["walls"] = json::parse(R"([{"type": "plane", "point_m": [0, 0, 0], "normal": [0, 0, 2],
+                               "material": "steel", "velocity_m_s": [0, 0, 0.1]}])");
+  SceneFile file;
+  std::string error;
+  REQUIRE(ParseSceneJson(d, "scene.json", &file, &error));
+  CHECK(file.scene.materials[0].youngs_modulus_Pa == Approx(2 * 2e6 * 1.25));
+  REQUIRE(file.scene.walls.size() == 1);
+  CHECK(file.scene.walls[0].normal.z == 1.0);
+  CHECK(file.scene.walls[0].velocity_m_s.z == 0.1);
+  CHECK(file.scene.walls[0].name == "walls[0]");
+}
+
+TEST_CASE("explicit particles and diameter tables are read", "[unit]") {
+  json d = PourBox();
+  d["species"].push_back(json::parse(R"({"name": "mix", "material": "glass",
+      "diameter_table": [{"diameter_m": 0.001, "number_fraction": 0.25},
+                         {"diameter_m": 0.002, "number_fraction": 0.75}]})"));
+  d["particles"] = json::parse(R"([{"species": "mix", "position_m": [0.02, 0.02, 0.1],
+      "velocity_m_s": [0, 0, -1], "angular_velocity_rad_s": [0, 3, 0], "diameter_m": 0.002}])");
+  SceneFile file;
+  std::string error;
+  REQUIRE(ParseSceneJson(d, "scene.json", &file, &error));
+  REQUIRE(file.scene.particles.size() == 1);
+  CHECK(file.scene.particles[0].species == 1);
+  CHECK(file.scene.particles[0].angular_velocity_rad_s.y == 3);
+  CHECK(file.scene.species[1].size.table_number_fraction[1] == 0.75);
+}
+
+TEST_CASE("each kind of bad input gives an error naming the file and the field", "[unit]") {
+  struct Case {
+    const char* what;
+    const char* pointer;  // JSON pointer to set ("" with op erase below)
+    json value;
+    const char* expected;
+  };
+  const std::vector<Case> cases = {
+      {"unknown key", "/materials/0/densty_kg_m3", 1000,
+       "unknown key 'materials[0].densty_kg_m3' (did you mean 'density_kg_m3'?)"},
+      {"unknown top-level key", "/gravity", json::array({0, 0, -9.81}),
+       "unknown key 'gravity'"},
+      {"wrong type", "/fills/0/count", "3000", "field 'fills[0].count' must be an integer"},
+      {"wrong vector length", "/domain/max_m", json::array({1, 1}),
+       "field 'domain.max_m' must be an array of 3 numbers"},
+      {"out of range (JSON layer)", "/materials/0/poisson_ratio", 0.7,
+       "field 'materials[0].poisson_ratio' = 0.7 is outside the allowed range (-1, 0.5)"},
+      {"out of range (core check)", "/time/duration_s", -1.0,
+       "field 'time.duration_s' = -1 s is outside the allowed range"},
+      {"out of range pair override", "/interactions/pairs/0/restitution", 1.5,
+       "field 'interactions.pairs[0].restitution' = 1.5 is outside the allowed range (0, 1]"},
+      {"unknown material", "/species/0/material", "glas",
+       "field 'species[0].material' = 'glas' names no material (defined: glass, steel)"},
+      {"unknown material in a pair", "/interactions/pairs/0/materials/1", "iron",
+       "field 'interactions.pairs[0].materials[1]' = 'iron' names no material"},
+      {"unknown species", "/fills/0/species", "sand",
+       "field 'fills[0].species' = 'sand' names no species (defined: beads)"},
+      {"unknown rolling model", "/contact_model/rolling", "epsd3",
+       "field 'contact_model.rolling' = 'epsd3' is not one of none|cdt|epsd|epsd2"},
+      {"damping without epsd", "/contact_model/epsd_damping_ratio", 0.3,
+       "field 'contact_model.epsd_damping_ratio' applies only to rolling = \"epsd\""},
+      {"wrong format", "/format", "demcal-scene/2", "field 'format' = 'demcal-scene/2' is not supported"},
+      {"box with max below min", "/walls/0/max_m", json::array({0.04, 0.04, -1}),
+       "field 'walls[0].max_m' must exceed 'walls[0].min_m' on every axis"},
+      {"box key on a plane", "/walls/0/type", "plane", "unknown key 'walls[0].max_m'"},
+      {"bad range order", "/species/0/diameter_range_m", json::array({0.003, 0.002}),
+       "field 'species[0].diameter_range_m' = [0.003000, 0.002000] must satisfy 0 < min <= max"},
+      {"both time step settings", "/time/timestep_s", 1e-5,
+       "field 'time.timestep_s' cannot be given together with 'time.rayleigh_fraction'"},
+      {"vtk interval zero", "/output/vtk_interval_s", 0,
+       "field 'output.vtk_interval_s' = 0 is outside the allowed range (0, 1e+06] s"},
+      {"negative seed", "/seed", -3, "field 'seed' must be a non-negative integer"},
+      {"fill outside the domain", "/fills/0/region/max_m", json::array({0.039, 0.039, 0.5}),
+       "field 'fills[0].region' must lie inside the domain"},
+  };
+  for (const Case& c : cases) {
+    INFO(c.what);
+    json d = PourBox();
+    d[json::json_pointer(c.pointer)] = c.value;
+    const std::string error = ErrorOf(d);
+    CHECK_THAT(error, Catch::StartsWith("scene.json: "));
+    CHECK_THAT(error, Catch::Contains(c.expected));
+  }
+}
+
+TEST_CASE("missing fields, conflicting alternatives and zero normals are rejected by name",
+          "[unit]") {
+  auto without = [](const char* pointer) {
+    json d = PourBox();
+    const json::json_pointer p(pointer);
+    d[p.parent_pointer()].erase(p.back());
+    return ErrorOf(d);
+  };
+  CHECK_THAT(without("/seed"), Catch::Contains("missing required field 'seed'"));
+  CHECK_THAT(without("/time/duration_s"), Catch::Contains("missing required field 'time.duration_s'"));
+  CHECK_THAT(without("/materials/0/poisson_ratio"),
+             Catch::Contains("missing required field 'materials[0].poisson_ratio'"));
+  CHECK_THAT(without("/materials/0/youngs_modulus_Pa"),
+             Catch::Contains("'materials[0].youngs_modulus_Pa' is missing: give exactly one of"));
+  CHECK_THAT(without("/materials/0/density_kg_m3"),
+             Catch::Contains("field 'materials[0].density_kg_m3' is required (> 0) because "
+                             "species 'beads'"));
+  CHECK_THAT(without("/species/0/diameter_range_m"),
+             Catch::Contains("'species[0].diameter_m' is missing: give exactly one of"));
+  CHECK_THAT(without("/fills"), Catch::Contains("the scene places no particles"));
+
+  json both = PourBox();
+  both["materials"][0]["shear_modulus_Pa"] = 1e6;
+  CHECK_THAT(ErrorOf(both), Catch::Contains("'materials[0].shear_modulus_Pa' cannot be given "
+                                            "together with 'youngs_modulus_Pa'"));
+  json zero = PourBox();
+  zero["walls"].push_back(json::parse(
+      R"({"type": "plane", "point_m": [0, 0, 0], "normal": [0, 0, 0], "material": "steel"})"));
+  CHECK_THAT(ErrorOf(zero), Catch::Contains("field 'walls[1].normal' must be a non-zero vector"));
+  json twice = PourBox();
+  twice["interactions"]["pairs"].push_back(
+      json::parse(R"({"materials": ["steel", "glass"], "restitution": 0.9})"));
+  CHECK_THAT(ErrorOf(twice), Catch::Contains("'interactions.pairs[1].materials' repeats the pair"));
+  json same_name = PourBox();
+  same_name["materials"][1]["name"] = "glass";
+  CHECK_THAT(ErrorOf(same_name), Catch::Contains("'materials[1].name' = 'glass' is used twice"));
+}
+
+TEST_CASE("JSON syntax errors give line and column; duplicate keys are rejected", "[unit]") {
+  SceneFile file;
+  std::string error;
+  CHECK_FALSE(ParseSceneText("{\n  \"seed\": 1,\n}", "s.json", &file, &error));
+  CHECK_THAT(error, Catch::StartsWith("s.json: invalid JSON: parse error at line 3, column 1"));
+  CHECK_FALSE(ParseSceneText(R"({"seed": 1, "seed": 2})", "s.json", &file, &error));
+  CHECK(error == "s.json: key 'seed' appears twice in one object; JSON keys must be unique");
+  CHECK_FALSE(LoadSceneFile("/nonexistent/scene.json", &file, &error));
+  CHECK(error == "/nonexistent/scene.json: cannot open the scene file");
+}
+
+TEST_CASE("every file in examples/invalid is rejected with an error naming its field", "[unit]") {
+  const std::map<std::string, std::string> expected = {
+      {"bad_restitution.json", "'interactions.default.restitution' = 0 is outside the allowed range (0, 1]"},
+      {"bad_syntax.json", "invalid JSON: parse error at line 5"},
+      {"missing_field.json", "missing required field 'time.duration_s'"},
+      {"out_of_range.json", "'materials[0].poisson_ratio' = 0.7 is outside the allowed range (-1, 0.5)"},
+      {"unknown_key.json", "unknown key 'materials[0].densty_kg_m3'"},
+      {"unknown_material.json", "'species[0].material' = 'glas' names no material"},
+      {"wrong_type.json", "'fills[0].count' must be an integer, got string \"50\""},
+      {"zero_normal.json", "'walls[0].normal' must be a non-zero vector"},
+  };
+  std::set<std::string> seen;
+  for (const auto& entry : std::filesystem::directory_iterator(RepoRoot() / "examples/invalid")) {
+    const std::string name = entry.path().filename().string();
+    INFO(name);
+    REQUIRE(expected.count(name) == 1);  // every invalid example has its expectation here
+    SceneFile file;
+    std::string error;
+    CHECK_FALSE(LoadSceneFile(entry.path().string(), &file, &error));
+    CHECK_THAT(error, Catch::StartsWith(entry.path().string() + ": "));
+    CHECK_THAT(error, Catch::Contains(expected.at(name)));
+    seen.insert(name);
+  }
+  CHECK(seen.size() == expected.size());
+}

@@ -1,0 +1,163 @@
+#include "apps/simulate_command.h"
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "apps/exit_codes.h"
+#include "apps/test_paths.h"
+#include "core/io/legacy_vtk_reader.h"
+#include "core/io/scratch_dir.h"
+
+using namespace demcal::apps;
+using demcal::testing::ReadLegacyVtk;
+using demcal::testing::RepoRoot;
+using demcal::testing::ScratchDir;
+using nlohmann::json;
+
+namespace {
+
+// 20 spheres dropped into a closed 20 mm box for 20 ms, snapshots every 5 ms.
+json TinyScene() {
+  return json::parse(R"({
+    "format": "demcal-scene/1",
+    "seed": 3,
+    "materials": [{"name": "glass", "youngs_modulus_Pa": 5e6, "poisson_ratio": 0.25,
+                   "density_kg_m3": 2500}],
+    "species": [{"name": "beads", "material": "glass", "diameter_m": 0.002}],
+    "domain": {"min_m": [0, 0, 0], "max_m": [0.02, 0.02, 0.02]},
+    "walls": [{"type": "box", "min_m": [0, 0, 0], "max_m": [0.02, 0.02, 0.02],
+               "material": "glass"}],
+    "fills": [{"species": "beads", "count": 20,
+               "region": {"min_m": [0.001, 0.001, 0.001], "max_m": [0.019, 0.019, 0.019]}}],
+    "time": {"duration_s": 0.02},
+    "output": {"vtk_interval_s": 0.005, "vtk_format": "ascii"}
+  })");
+}
+
+std::string WriteScene(const ScratchDir& dir, const json& scene) {
+  const std::string path = dir.str("scene.json");
+  std::ofstream(path) << scene.dump(2);
+  return path;
+}
+
+json ReadJson(const std::string& path) { return json::parse(std::ifstream(path)); }
+
+int CountLines(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  int n = 0;
+  while (std::getline(in, line)) ++n;
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("simulate runs a tiny scene and writes summary, snapshots and the final table",
+          "[unit]") {
+  ScratchDir dir("simulate_ok");
+  SimulateOptions o;
+  o.scene_path = WriteScene(dir, TinyScene());
+  o.out_dir = dir.str("out");
+  o.threads = 1;
+  std::ostringstream log;
+  REQUIRE(RunSimulate(o, log) == kExitOk);
+
+  const json s = ReadJson(dir.str("out/summary.json"));
+  CHECK(s["format"] == "demcal-run-summary/1");
+  CHECK(s["termination"] == "ok");
+  CHECK(s["message"] == "completed");
+  CHECK(s["scene"] == o.scene_path);
+  CHECK(s["seed"] == 3);
+  CHECK(s["threads"] == 1);
+  CHECK(s["particles"] == 20);
+  CHECK(s["steps"].get<int64_t>() > 0);
+  CHECK(s["simulated_time_s"].get<double>() == Approx(0.02).margin(s["timestep_s"].get<double>()));
+  CHECK(s["timestep_s"].get<double>() > 0);
+  CHECK(s["final_kinetic_energy_J"].get<double>() >= 0);
+  CHECK(s["wall_time_s"].get<double>() >= 0);
+  CHECK(s["demcal_version"].is_string());
+  CHECK(s["output_error"].is_null());
+
+  // Initial state, one per 5 ms and the final state unless it fell on a snapshot step.
+  const int snapshots = s["outputs"]["vtk_snapshots"].get<int>();
+  CHECK(snapshots >= 5);
+  CHECK(snapshots <= 6);
+  const json series = ReadJson(dir.str("out/") + s["outputs"]["vtk_series"].get<std::string>());
+  REQUIRE(series["files"].size() == static_cast<size_t>(snapshots));
+  const std::string last = series["files"].back()["name"];
+  const auto vtk = ReadLegacyVtk(dir.str("out/vtk/" + last));
+  CHECK(vtk.points.size() == 3 * 20);
+  CHECK(vtk.field_data.at("TIME")[0] == s["simulated_time_s"].get<double>());
+  CHECK(CountLines(dir.str("out/final_particles.csv")) == 1 + 20);
+  CHECK(log.str().find("ok: completed") != std::string::npos);
+}
+
+TEST_CASE("simulate rejects an invalid scene with exit code 2 and still writes summary.json",
+          "[unit]") {
+  ScratchDir dir("simulate_invalid");
+  SimulateOptions o;
+  o.scene_path = (RepoRoot() / "examples/invalid/unknown_material.json").string();
+  o.out_dir = dir.str("out");
+  o.quiet = true;
+  std::ostringstream log;
+  CHECK(RunSimulate(o, log) == kExitInvalidInput);
+  CHECK_THAT(log.str(), Catch::Contains("'species[0].material' = 'glas' names no material"));
+  const json s = ReadJson(dir.str("out/summary.json"));
+  CHECK(s["termination"] == "invalid_scene");
+  CHECK_THAT(s["message"].get<std::string>(), Catch::Contains("species[0].material"));
+  CHECK(s["seed"].is_null());
+  CHECK(s["steps"] == 0);
+  CHECK_FALSE(std::filesystem::exists(dir.str("out/final_particles.csv")));
+}
+
+TEST_CASE("simulate reports a failed run with exit code 3 and its reason in summary.json",
+          "[unit]") {
+  // No walls: the spheres fall out of the domain.
+  json scene = TinyScene();
+  scene.erase("walls");
+  scene["time"]["duration_s"] = 0.2;
+  ScratchDir dir("simulate_failed");
+  SimulateOptions o;
+  o.scene_path = WriteScene(dir, scene);
+  o.out_dir = dir.str("out");
+  o.quiet = true;
+  std::ostringstream log;
+  CHECK(RunSimulate(o, log) == kExitRunFailed);
+  const json s = ReadJson(dir.str("out/summary.json"));
+  CHECK(s["termination"] == "particles_lost");
+  CHECK_THAT(s["message"].get<std::string>(), Catch::Contains("left the domain"));
+  CHECK(s["simulated_time_s"].get<double>() < 0.2);
+  CHECK(std::filesystem::exists(dir.str("out/final_particles.csv")));  // where it went wrong
+  CHECK_THAT(log.str(), Catch::Contains("run failed (particles_lost)"));
+}
+
+TEST_CASE("simulate options are validated before anything runs", "[unit]") {
+  SimulateOptions o;
+  std::string error;
+  CHECK_FALSE(o.IsValid(&error));
+  o.scene_path = "a.json";
+  o.out_dir = "out";
+  CHECK(o.IsValid(&error));
+  o.threads = -1;
+  CHECK_FALSE(o.IsValid(&error));
+  CHECK_THAT(error, Catch::Contains("--threads"));
+  std::ostringstream log;
+  CHECK(RunSimulate(o, log) == kExitInvalidInput);
+}
+
+TEST_CASE("the simulate subcommand registers its arguments with the CLI", "[unit]") {
+  CLI::App app{"test"};
+  const Command simulate = AddSimulateCommand(app);
+  REQUIRE(simulate.app != nullptr);
+  CHECK(simulate.app->get_name() == "simulate");
+  app.parse("simulate s.json --out o --threads 2 --quiet", /*program_name_included=*/false);
+  CHECK(simulate.app->parsed());
+  CHECK(simulate.app->get_option("--threads")->as<int>() == 2);
+  CHECK(simulate.app->get_option("--out")->as<std::string>() == "o");
+  CHECK(simulate.app->get_option("scene")->as<std::string>() == "s.json");
+}

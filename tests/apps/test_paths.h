@@ -1,0 +1,12 @@
+#pragma once
+// Test helper: the repository root, found from this header's own path (<root>/tests/apps/), so
+// tests that read examples/ run from any working directory.
+#include <filesystem>
+
+namespace demcal::testing {
+
+inline std::filesystem::path RepoRoot() {
+  return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path();
+}
+
+}  // namespace demcal::testing
