@@ -11,19 +11,22 @@
 
 namespace demcal::core {
 
-// Geometry of the contact between listed partners i < j, or false if they do not overlap.
-inline bool PairGeometry(const Particles& p, size_t i, uint32_t j, ContactGeometry& g) {
+// Geometry of the contact between listed partners i < j, or false if they are not in contact.
+template <class Model>
+inline bool PairGeometry(const Particles& p, size_t i, uint32_t j, bool was_in_contact,
+                         const ResolvedPair& pair, ContactGeometry& g) {
   const Vec3 d = p.position_m[i] - p.position_m[j];
   const double ri = p.radius_m[i], rj = p.radius_m[j];
   const double rsum = ri + rj;
   const double dist2 = Norm2(d);
-  if (dist2 >= rsum * rsum) return false;
+  if (dist2 >= rsum * rsum && !(Model::Normal::kAdhesive && was_in_contact)) return false;
   const double dist = std::sqrt(dist2);
-  g.normal = d * (1.0 / dist);
   g.overlap_m = rsum - dist;
+  g.effective_radius_m = ri * rj / rsum;
+  if (!Model::InContact(g.overlap_m, was_in_contact, g.effective_radius_m, pair)) return false;
+  g.normal = d * (1.0 / dist);
   g.radius_i_m = ri;
   g.radius_j_m = rj;
-  g.effective_radius_m = ri * rj / rsum;
   g.mass_i_kg = p.mass_kg[i];
   g.mass_j_kg = p.mass_kg[j];
   g.effective_mass_kg = g.mass_i_kg * g.mass_j_kg / (g.mass_i_kg + g.mass_j_kg);
@@ -50,16 +53,17 @@ inline ContactGeometry WallGeometry(const Particles& p, size_t i, const PlaneWal
   return g;
 }
 
-template <class Rolling>
+template <class Model>
 bool ContactForces::EvaluatePair(const Particles& p, const InteractionTable& table,
-                                 const Rolling& rolling, double dt, size_t i, uint32_t k,
-                                 uint32_t j, ContactResult& out) {
+                                 const Model& model, double dt, size_t i, uint32_t k, uint32_t j,
+                                 ContactResult& out) {
   ContactGeometry g;
-  if (!PairGeometry(p, i, j, g)) {
+  const ResolvedPair& pair = table.Get(p.material[i], p.material[j]);
+  if (!PairGeometry<Model>(p, i, j, pair_active_[k], pair, g)) {
     if (pair_active_[k]) pair_history_[k] = ContactHistory{}, pair_active_[k] = 0;
     return false;
   }
-  out = EvaluateContact(g, table.Get(p.material[i], p.material[j]), dt, rolling, pair_history_[k]);
+  out = model.Evaluate(g, pair, dt, pair_history_[k]);
   pair_active_[k] = 1;
   return true;
 }
@@ -68,9 +72,9 @@ bool ContactForces::EvaluatePair(const Particles& p, const InteractionTable& tab
 // chunk are evaluated first (phase A) into pair_result_; then each chunk sums, per particle and in
 // the order a serial sweep would (contributions from earlier rows first, then its own row, then
 // walls), so results are bit-identical for any number of chunks.
-template <class Rolling>
+template <class Model>
 void ContactForces::ComputeCrossChunkPairs(const Particles& p, const NeighbourList& list,
-                                           const InteractionTable& table, const Rolling& rolling,
+                                           const InteractionTable& table, const Model& model,
                                            double dt, size_t c) {
   const uint32_t end = chunk_[c + 1];
   for (uint32_t i = chunk_[c]; i < end; ++i) {
@@ -78,15 +82,15 @@ void ContactForces::ComputeCrossChunkPairs(const Particles& p, const NeighbourLi
     if (row_end == list.RowBegin(i) || list.Partner(row_end - 1) < end) continue;
     for (uint32_t k = list.RowBegin(i); k < row_end; ++k) {
       const uint32_t j = list.Partner(k);
-      if (j >= end) EvaluatePair(p, table, rolling, dt, i, k, j, pair_result_[k]);
+      if (j >= end) EvaluatePair(p, table, model, dt, i, k, j, pair_result_[k]);
     }
   }
 }
 
-template <class Rolling>
+template <class Model>
 void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
                              const std::vector<PlaneWall>& walls, const InteractionTable& table,
-                             const Rolling& rolling, const Vec3& gravity, double dt, size_t c) {
+                             const Model& model, const Vec3& gravity, double dt, size_t c) {
   const uint32_t begin = chunk_[c], end = chunk_[c + 1];
   const uint32_t first_own_entry = list.RowBegin(begin);
   for (uint32_t i = begin; i < end; ++i) {
@@ -114,7 +118,7 @@ void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
         continue;
       }
       ContactResult r;
-      if (!EvaluatePair(p, table, rolling, dt, i, k, j, r)) continue;
+      if (!EvaluatePair(p, table, model, dt, i, k, j, r)) continue;
       fi += r.force_i;
       ti += r.torque_i;
       p.force_N[j] -= r.force_i;
@@ -123,13 +127,13 @@ void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
     for (uint32_t e = wall_start_[i]; e < wall_start_[i + 1]; ++e) {
       const PlaneWall& wall = walls[wall_index_[e]];
       const double overlap = p.radius_m[i] - Dot(p.position_m[i] - wall.point_m, wall.normal);
-      if (overlap <= 0) {
+      const ResolvedPair& pair = table.Get(p.material[i], wall.material);
+      if (!Model::InContact(overlap, wall_active_[e], p.radius_m[i], pair)) {
         if (wall_active_[e]) wall_history_[e] = ContactHistory{}, wall_active_[e] = 0;
         continue;
       }
-      const ContactResult r = EvaluateContact(WallGeometry(p, i, wall, overlap),
-                                              table.Get(p.material[i], wall.material), dt,
-                                              rolling, wall_history_[e]);
+      const ContactResult r =
+          model.Evaluate(WallGeometry(p, i, wall, overlap), pair, dt, wall_history_[e]);
       wall_active_[e] = 1;
       fi += r.force_i;
       ti += r.torque_i;
@@ -151,7 +155,8 @@ void ContactForces::SplitIntoChunks(const NeighbourList& list, size_t n) {
 
 void ContactForces::Compute(Particles& p, const NeighbourList& list,
                             const std::vector<PlaneWall>& walls, const InteractionTable& table,
-                            const RollingModel& rolling, const Vec3& gravity, double dt) {
+                            const RollingModel& rolling, bool adhesive, const Vec3& gravity,
+                            double dt) {
   if (pair_history_.size() != list.PairCount()) {
     pair_history_.resize(list.PairCount());
     pair_active_.resize(list.PairCount(), 0);
@@ -159,18 +164,23 @@ void ContactForces::Compute(Particles& p, const NeighbourList& list,
   pair_result_.resize(list.PairCount());
   SplitIntoChunks(list, p.Size());
   const size_t chunks = chunk_.size() - 1;
+  auto run = [&](const auto& model) {
+    if (chunks == 1) {
+      SumChunk(p, list, walls, table, model, gravity, dt, 0);
+      return;
+    }
+    tbb::parallel_for(size_t{0}, chunks, [&](size_t c) {
+      ComputeCrossChunkPairs(p, list, table, model, dt, c);
+    });
+    tbb::parallel_for(size_t{0}, chunks, [&](size_t c) {
+      SumChunk(p, list, walls, table, model, gravity, dt, c);
+    });
+  };
   std::visit(
-      [&](const auto& model) {
-        if (chunks == 1) {
-          SumChunk(p, list, walls, table, model, gravity, dt, 0);
-          return;
-        }
-        tbb::parallel_for(size_t{0}, chunks, [&](size_t c) {
-          ComputeCrossChunkPairs(p, list, table, model, dt, c);
-        });
-        tbb::parallel_for(size_t{0}, chunks, [&](size_t c) {
-          SumChunk(p, list, walls, table, model, gravity, dt, c);
-        });
+      [&](const auto& rolling_model) {
+        using R = std::decay_t<decltype(rolling_model)>;
+        if (adhesive) run(ContactModel<JkrNormal, R>{rolling_model});
+        else run(ContactModel<HertzMindlinNormal, R>{rolling_model});
       },
       rolling);
 }

@@ -20,10 +20,11 @@ namespace demcal::core {
 
 class ContactForces {
  public:
-  // Sets all forces and torques of `p` (gravity included).
+  // Sets all forces and torques of `p` (gravity included). `adhesive` selects the JKR normal
+  // model (needed when any pair has Γ > 0; pairs with Γ = 0 still get plain Hertz–Mindlin).
   void Compute(Particles& p, const NeighbourList& list, const std::vector<PlaneWall>& walls,
-               const InteractionTable& table, const RollingModel& rolling, const Vec3& gravity,
-               double dt);
+               const InteractionTable& table, const RollingModel& rolling, bool adhesive,
+               const Vec3& gravity, double dt);
 
   // Called after every neighbour-list rebuild: carries pair histories over to the new list and
   // lists, per particle, the walls within its radius + skin (moving walls always), keeping their
@@ -39,16 +40,16 @@ class ContactForces {
   std::vector<ContactHistory>& MutablePairHistory() { return pair_history_; }
 
  private:
-  template <class Rolling>
-  bool EvaluatePair(const Particles& p, const InteractionTable& table, const Rolling& rolling,
+  template <class Model>
+  bool EvaluatePair(const Particles& p, const InteractionTable& table, const Model& model,
                     double dt, size_t i, uint32_t k, uint32_t j, ContactResult& out);
-  template <class Rolling>
+  template <class Model>
   void ComputeCrossChunkPairs(const Particles& p, const NeighbourList& list,
-                              const InteractionTable& table, const Rolling& rolling, double dt,
+                              const InteractionTable& table, const Model& model, double dt,
                               size_t chunk);
-  template <class Rolling>
+  template <class Model>
   void SumChunk(Particles& p, const NeighbourList& list, const std::vector<PlaneWall>& walls,
-                const InteractionTable& table, const Rolling& rolling, const Vec3& gravity,
+                const InteractionTable& table, const Model& model, const Vec3& gravity,
                 double dt, size_t chunk);
   void SplitIntoChunks(const NeighbourList& list, size_t n);
 

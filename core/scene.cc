@@ -1,5 +1,7 @@
 #include "core/scene.h"
 
+#include "core/contact/jkr.h"
+
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -147,6 +149,13 @@ void CheckTime(const Scene& s, Checker& c) {
   c.Range("skin_m", s.skin_m, 0, 1, false, false, "m");
   c.Range("max_wall_time_s", s.max_wall_time_s, 0, 1e9, false, false, "s");
   if (!c.ok() || s.species.empty()) return;
+  const double gap = MaxAdhesiveBreakGap(s);
+  if (s.skin_m > 0 && s.skin_m <= gap) {
+    std::ostringstream os;
+    os << "field 'skin_m' = " << s.skin_m << " m must exceed the largest JKR break gap " << gap
+       << " m, or stretched adhesive contacts would be lost; leave it unset for automatic";
+    c.Fail(os.str());
+  }
   const double t_r = RayleighTime(s);
   if (s.time.timestep_s > t_r && !s.time.force_timestep) {
     std::ostringstream os;
@@ -202,6 +211,26 @@ double Scene::MinDiameter() const {
   for (const ParticleSpec& p : particles)
     if (p.diameter_m > 0) d = std::min(d, p.diameter_m);
   return d;
+}
+
+double MaxAdhesiveBreakGap(const Scene& scene) {
+  const size_t n = scene.materials.size();
+  if (scene.pair_parameters.size() != n * n) return 0;
+  const InteractionTable table(scene.materials, scene.pair_parameters);
+  const double r_max = 0.5 * scene.MaxDiameter();
+  double gap = 0;
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = 0; j < n; ++j) {
+      const ResolvedPair& p = table.Get(i, j);
+      if (p.interfacial_energy_J_m2 > 0)
+        gap = std::max(gap, JkrNormal::BreakGap(r_max, p.effective_youngs_Pa, p.interfacial_energy_J_m2));
+    }
+  return gap;
+}
+
+double NeighbourSkin(const Scene& scene) {
+  if (scene.skin_m > 0) return scene.skin_m;
+  return std::max(0.25 * scene.MinDiameter(), 2.5 * MaxAdhesiveBreakGap(scene));
 }
 
 double RayleighTime(const Scene& scene) {

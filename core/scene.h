@@ -56,7 +56,7 @@ struct Scene {
   std::vector<FillSpec> fills;
   uint64_t seed = 1;
   TimeSettings time;
-  double skin_m = 0;           // Verlet skin; 0 = a quarter of the smallest diameter
+  double skin_m = 0;           // Verlet skin; 0 = automatic (see NeighbourSkin)
   double max_wall_time_s = 0;  // 0 = unlimited; exceeded ⇒ termination "wall_time_exceeded"
 
   bool IsValid(std::string* error) const;
@@ -69,5 +69,13 @@ struct Scene {
 // Rayleigh time of the scene's stiffest, smallest species (physics.md §1.5):
 // Δt_R = π R sqrt(ρ/G) / (0.1631 ν + 0.8766), minimised over species.
 double RayleighTime(const Scene& scene);
+
+// Largest separation an adhesive (JKR) contact survives, over all material pairs, for the
+// scene's largest spheres (m); 0 without adhesion.
+double MaxAdhesiveBreakGap(const Scene& scene);
+
+// The Verlet skin used: scene.skin_m if set, else a quarter of the smallest diameter, and in
+// any case more than twice the JKR break gap so that stretched adhesive contacts stay listed.
+double NeighbourSkin(const Scene& scene);
 
 }  // namespace demcal::core

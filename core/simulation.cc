@@ -6,8 +6,10 @@
 
 #include <chrono>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 
+#include "core/contact/jkr.h"
 #include "core/insertion.h"
 #include "core/random.h"
 
@@ -15,6 +17,23 @@ namespace demcal::core {
 namespace {
 int ArenaConcurrency(int threads) {
   return threads > 0 ? threads : static_cast<int>(tbb::task_arena::automatic);
+}
+
+// Upper bound of the energy a particle can gain from JKR attraction: per contact at most
+// F_c (3|δ_min|) (the attractive force never exceeds F_c over a travel of δ_eq − δ_min), for at
+// most 12 contacts.
+double AdhesiveEnergyBoundPerParticle(const Scene& scene, const InteractionTable& table) {
+  const double r = 0.5 * scene.MaxDiameter();
+  double bound = 0;
+  for (int i = 0; i < table.MaterialCount(); ++i)
+    for (int j = 0; j < table.MaterialCount(); ++j) {
+      const ResolvedPair& p = table.Get(i, j);
+      if (p.interfacial_energy_J_m2 <= 0) continue;
+      const double f_c = 3 * std::numbers::pi * p.interfacial_energy_J_m2 * r;
+      const double gap = JkrNormal::BreakGap(r, p.effective_youngs_Pa, p.interfacial_energy_J_m2);
+      bound = std::max(bound, 12 * f_c * 3 * gap);
+    }
+  return bound;
 }
 }  // namespace
 
@@ -44,12 +63,15 @@ bool Simulation::Initialize(std::string* error) {
     if (error) *error = placement_error;
     return false;
   }
-  list_settings_ = {scene_.domain_min_m, scene_.domain_max_m,
-                    scene_.skin_m > 0 ? scene_.skin_m : 0.25 * scene_.MinDiameter(),
+  adhesive_ = false;
+  for (const PairParameters& pair : scene_.pair_parameters)
+    adhesive_ = adhesive_ || pair.interfacial_energy_J_m2 > 0;
+  list_settings_ = {scene_.domain_min_m, scene_.domain_max_m, NeighbourSkin(scene_),
                     0.5 * scene_.MaxDiameter()};
   arena_->execute([&] {
     RebuildNeighbours(true);
-    forces_.Compute(particles_, list_, scene_.walls, table_, rolling_, scene_.gravity_m_s2, dt_);
+    forces_.Compute(particles_, list_, scene_.walls, table_, rolling_, adhesive_,
+                    scene_.gravity_m_s2, dt_);
   });
   energy_budget_J_ = particles_.KineticEnergy() + GravitationalPotential();
   // Largest energy gravity can release: every particle dropping to the domain's lowest corner.
@@ -57,7 +79,8 @@ bool Simulation::Initialize(std::string* error) {
   const Vec3 lowest{g.x > 0 ? scene_.domain_max_m.x : scene_.domain_min_m.x,
                     g.y > 0 ? scene_.domain_max_m.y : scene_.domain_min_m.y,
                     g.z > 0 ? scene_.domain_max_m.z : scene_.domain_min_m.z};
-  energy_scale_J_ = particles_.KineticEnergy();
+  energy_scale_J_ = particles_.KineticEnergy() +
+                    particles_.Size() * AdhesiveEnergyBoundPerParticle(scene_, table_);
   for (size_t i = 0; i < particles_.Size(); ++i)
     energy_scale_J_ += particles_.mass_kg[i] * Dot(g, lowest - particles_.position_m[i]);
   initialized_ = true;
@@ -117,7 +140,7 @@ void Simulation::Step() {
     }
   });
   if (list_.NeedsRebuild(p.position_m)) RebuildNeighbours(true);
-  forces_.Compute(p, list_, scene_.walls, table_, rolling_, scene_.gravity_m_s2, dt_);
+  forces_.Compute(p, list_, scene_.walls, table_, rolling_, adhesive_, scene_.gravity_m_s2, dt_);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1024), [&](const auto& range) {
     for (size_t i = range.begin(); i != range.end(); ++i) kick(i);
   });

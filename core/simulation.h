@@ -45,6 +45,8 @@ class Simulation {
   ~Simulation();
 
   bool Initialize(std::string* error);
+  // Changes the body-force field for subsequent steps (load-controlled tests, tilting).
+  void SetGravity(const Vec3& gravity_m_s2) { scene_.gravity_m_s2 = gravity_m_s2; }
   // Changes the worker count for subsequent Run() calls (0: all cores).
   void SetThreads(int threads);
   RunSummary Run(double duration_s);
@@ -85,6 +87,7 @@ class Simulation {
   uint64_t rebuilds_since_reorder_ = 0;
   double energy_budget_J_ = 0;   // initial KE + PE (+ inserted energy)
   double energy_scale_J_ = 0;    // energy that gravity and the initial state can release
+  bool adhesive_ = false;  // some pair has Γ > 0: use the JKR normal model
   bool initialized_ = false;
 };
 

@@ -16,7 +16,7 @@ struct ContactHistory {
 
 struct ContactGeometry {
   Vec3 normal;              // unit, from j (or wall) towards i
-  double overlap_m;         // δ_n = R_i + R_j − |x_i − x_j| (> 0 in contact)
+  double overlap_m;         // δ_n = R_i + R_j − |x_i − x_j| (> 0 pressed; < 0 only for JKR)
   double radius_i_m;        // lever arm of i (its radius)
   double radius_j_m;        // lever arm of j; 0 for a wall
   double effective_radius_m;  // R*
@@ -35,6 +35,8 @@ struct NormalForce {
   double stiffness_n; // tangent stiffness S_n = 2E*sqrt(R* δ) (N/m)
   double secant_kn;   // Hertz secant stiffness (4/3)E*sqrt(R* δ) (N/m)
   double contact_radius_m;  // a = sqrt(R* δ) for Hertz
+  double friction_load_N;   // what the Coulomb limit μ_s multiplies
+  double rolling_load_N;    // what the rolling limit μ_r multiplies
 };
 
 // What a contact contributes: force on i (j gets the opposite) and a torque on each body.

@@ -10,6 +10,9 @@
 namespace demcal::core {
 
 struct HertzMindlinNormal {
+  static constexpr bool kAdhesive = false;
+  static double BreakGap(double, double, double) { return 0; }
+
   static NormalForce Compute(const ContactGeometry& g, const ResolvedPair& p) {
     constexpr double kTwoSqrtFiveSixths = 1.8257418583505538;  // 2 sqrt(5/6)
     const double a = std::sqrt(g.effective_radius_m * g.overlap_m);
@@ -19,7 +22,9 @@ struct HertzMindlinNormal {
     const double c_n = -kTwoSqrtFiveSixths * p.beta * std::sqrt(s_n * g.effective_mass_kg);
     const double v_n = Dot(g.relative_velocity_m_s, g.normal);  // < 0 while approaching
     const double elastic = secant * g.overlap_m;
-    return {elastic, elastic - c_n * v_n, s_n, secant, a};
+    const double total = elastic - c_n * v_n;
+    // LIGGGHTS caps friction with |F_n| (damping included) and rolling with the elastic part.
+    return {elastic, total, s_n, secant, a, std::abs(total), elastic};
   }
 };
 

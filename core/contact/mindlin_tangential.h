@@ -3,7 +3,8 @@
 // `tangential history` (physics.md §1.3):
 //   δ_t += v_t dt, projected on the current tangent plane;  F_t = −S_t δ_t − c_t v_t,
 //   S_t = 8 G* sqrt(R* δ);  if S_t|δ_t| > μ_s|F_n|: F_t capped to μ_s|F_n| (no damping while
-//   sliding) and the spring reset to the cap.
+//   sliding) and the spring reset to the cap. (|F_n| is NormalForce::friction_load_N: the
+//   total normal force for Hertz–Mindlin, the repulsive part for JKR.)
 #include <cmath>
 
 #include "core/contact/contact_state.h"
@@ -19,7 +20,7 @@ struct MindlinTangential {
     h.shear_m -= Dot(h.shear_m, g.normal) * g.normal;
     const double s_t = 8.0 * p.effective_shear_Pa * n.contact_radius_m;
     Vec3 f_t = -s_t * h.shear_m;
-    const double f_max = p.sliding_friction * std::abs(n.total_N);
+    const double f_max = p.sliding_friction * n.friction_load_N;
     const double f_t2 = Norm2(f_t);
     if (f_t2 > f_max * f_max) {
       f_t *= f_max / std::sqrt(f_t2);

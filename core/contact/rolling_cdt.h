@@ -13,7 +13,7 @@ struct RollingCdt {
   static constexpr const char* kName = "cdt";
   void Apply(const ContactGeometry& g, const ResolvedPair& p, const NormalForce& n, double,
              ContactHistory&, ContactResult& r) const {
-    const double magnitude = p.rolling_friction * n.elastic_N;
+    const double magnitude = p.rolling_friction * n.rolling_load_N;
     r.torque_i -= TorqueDirection(g.omega_i) * (magnitude * g.radius_i_m);
     r.torque_j -= TorqueDirection(g.omega_j) * (magnitude * g.radius_j_m);
   }

@@ -35,7 +35,7 @@ struct RollingEpsd {
     Vec3& m_k = h.rolling_torque_N_m;
     m_k -= Dot(m_k, g.normal) * g.normal;
     m_k += w * (k_r * dt);
-    const double m_max = mu_r * r_eff * n.elastic_N;
+    const double m_max = mu_r * r_eff * n.rolling_load_N;
     Vec3 torque = m_k;
     const double m2 = Norm2(m_k);
     if (m2 > m_max * m_max) {

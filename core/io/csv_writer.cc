@@ -31,8 +31,8 @@ void PutVec(std::string& line, const Vec3& v) {
 
 const std::vector<std::string>& ParticleCsvColumns() {
   static const std::vector<std::string> columns = {
-      "id",       "species",  "x_m",      "y_m",      "z_m",        "vx_m_s",  "vy_m_s",
-      "vz_m_s",   "wx_rad_s", "wy_rad_s", "wz_rad_s", "diameter_m", "mass_kg"};
+      "id",     "species",  "x_m",      "y_m",      "z_m",        "vx_m_s", "vy_m_s",
+      "vz_m_s", "wx_rad_s", "wy_rad_s", "wz_rad_s", "diameter_m", "mass_kg"};
   return columns;
 }
 

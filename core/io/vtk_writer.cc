@@ -95,9 +95,12 @@ std::string JsonEscape(const std::string& s) {
 }  // namespace
 
 bool ParseVtkEncoding(const std::string& name, VtkOptions::Encoding* encoding) {
-  if (name == "ascii") *encoding = VtkOptions::Encoding::kAscii;
-  else if (name == "binary") *encoding = VtkOptions::Encoding::kBinary;
-  else return false;
+  if (name == "ascii")
+    *encoding = VtkOptions::Encoding::kAscii;
+  else if (name == "binary")
+    *encoding = VtkOptions::Encoding::kBinary;
+  else
+    return false;
   return true;
 }
 
@@ -153,8 +156,10 @@ bool WriteParticlesVtk(const std::string& path, const Particles& p, double time_
   body.EndBlock();
   out << "SCALARS id " << (id_fits_int ? "int" : "double") << " 1\nLOOKUP_TABLE default\n";
   for (size_t s : order) {
-    if (id_fits_int) body.Int(static_cast<int32_t>(p.id[s]));
-    else body.Double(static_cast<double>(p.id[s]));
+    if (id_fits_int)
+      body.Int(static_cast<int32_t>(p.id[s]));
+    else
+      body.Double(static_cast<double>(p.id[s]));
   }
   body.EndBlock();
   out.flush();
@@ -184,8 +189,9 @@ bool VtkSeries::WriteIndex(std::string* error) const {
   for (size_t k = 0; k < entries_.size(); ++k) {
     char time[32];
     const auto r = std::to_chars(time, time + sizeof time, entries_[k].time_s);
-    out << "    {\"name\": \"" << JsonEscape(entries_[k].file_name) << "\", \"time\": "
-        << std::string(time, r.ptr) << "}" << (k + 1 < entries_.size() ? "," : "") << "\n";
+    out << "    {\"name\": \"" << JsonEscape(entries_[k].file_name)
+        << "\", \"time\": " << std::string(time, r.ptr) << "}"
+        << (k + 1 < entries_.size() ? "," : "") << "\n";
   }
   out << "  ]\n}\n";
   out.flush();

@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Installs the Debian packages demcal needs (only those missing). Run as root on Debian 12.
+set -euo pipefail
+packages=(g++ cmake ninja-build pkg-config libeigen3-dev libtbb-dev libnlopt-cxx-dev libceres-dev
+          libcli11-dev catch2 nlohmann-json3-dev gnuplot-nox)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "installing: ${missing[*]}" >&2
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
