@@ -6,9 +6,8 @@
 //
 // The action returns a process exit code (apps/exit_codes.h); options parsed by CLI11 live in
 // state owned by the action (captured shared_ptr), so they outlive the parse.
-#include <functional>
-
 #include <CLI/CLI.hpp>
+#include <functional>
 
 namespace demcal::apps {
 

@@ -3,10 +3,10 @@
 // driver branch on them, so they are stable.
 namespace demcal::apps {
 
-inline constexpr int kExitOk = 0;            // the command did what was asked
-inline constexpr int kExitInternalError = 1; // an unexpected error (a bug): please report it
-inline constexpr int kExitInvalidInput = 2;  // bad command line or input file; nothing ran
-inline constexpr int kExitRunFailed = 3;     // the simulation ended with a failure termination
-inline constexpr int kExitOutputError = 4;   // an output file could not be written
+inline constexpr int kExitOk = 0;             // the command did what was asked
+inline constexpr int kExitInternalError = 1;  // an unexpected error (a bug): please report it
+inline constexpr int kExitInvalidInput = 2;   // bad command line or input file; nothing ran
+inline constexpr int kExitRunFailed = 3;      // the simulation ended with a failure termination
+inline constexpr int kExitOutputError = 4;    // an output file could not be written
 
 }  // namespace demcal::apps

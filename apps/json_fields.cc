@@ -141,9 +141,11 @@ void JsonFields::Integer(const std::string& key, int64_t* out, Presence presence
   if (!v) return;
   if (!IsIntegral(*v) || (v->is_number_unsigned() && v->get<uint64_t>() > INT64_MAX))
     return TypeError(key, "an integer", *v);
-  const int64_t i = v->is_number_float() ? static_cast<int64_t>(v->get<double>()) : v->get<int64_t>();
+  const int64_t i =
+      v->is_number_float() ? static_cast<int64_t>(v->get<double>()) : v->get<int64_t>();
   if (!range.Contains(static_cast<double>(i)))
-    return Fail(key, "= " + std::to_string(i) + " is outside the allowed range " + range.Describe());
+    return Fail(key,
+                "= " + std::to_string(i) + " is outside the allowed range " + range.Describe());
   *out = i;
 }
 

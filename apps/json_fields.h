@@ -14,10 +14,9 @@
 //   f.Number("poisson_ratio", &m.poisson_ratio, kRequired, Range::Open(-1, 0.5));
 //   if (!status.ok()) report(status.message());
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "core/vec3.h"
 
@@ -44,9 +43,15 @@ struct Range {
   bool lo_open = false, hi_open = false;
   const char* unit = "";
 
-  static Range Closed(double lo, double hi, const char* unit = "") { return {lo, hi, false, false, unit}; }
-  static Range LeftOpen(double lo, double hi, const char* unit = "") { return {lo, hi, true, false, unit}; }
-  static Range Open(double lo, double hi, const char* unit = "") { return {lo, hi, true, true, unit}; }
+  static Range Closed(double lo, double hi, const char* unit = "") {
+    return {lo, hi, false, false, unit};
+  }
+  static Range LeftOpen(double lo, double hi, const char* unit = "") {
+    return {lo, hi, true, false, unit};
+  }
+  static Range Open(double lo, double hi, const char* unit = "") {
+    return {lo, hi, true, true, unit};
+  }
   static Range Any() { return {}; }
   bool Contains(double v) const;
   std::string Describe() const;  // e.g. "(0, 1]"

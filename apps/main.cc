@@ -1,7 +1,6 @@
 // demcal: the command-line front end. Each subcommand is one file exposing a CommandFactory
 // (apps/command.h); register it with one line in kCommands below.
 #include <CLI/CLI.hpp>
-
 #include <exception>
 #include <iostream>
 #include <string>

@@ -10,6 +10,7 @@ namespace demcal::apps {
 namespace {
 constexpr const char* kVtkDir = "vtk";
 constexpr const char* kVtkPrefix = "particles";
+constexpr const char* kSceneCopy = "scene.json";
 }  // namespace
 
 RunOutputs::RunOutputs(std::string directory, OutputSettings settings)
@@ -24,6 +25,20 @@ bool RunOutputs::Prepare(std::string* error) {
     if (error) *error = "cannot create output directory '" + directory_ + "': " + ec.message();
     return false;
   }
+  return true;
+}
+
+bool RunOutputs::CopyScene(const std::string& scene_path, std::string* error) {
+  namespace fs = std::filesystem;
+  const fs::path target = fs::path(directory_) / kSceneCopy;
+  std::error_code ec;
+  if (!fs::equivalent(scene_path, target, ec))
+    fs::copy_file(scene_path, target, fs::copy_options::overwrite_existing, ec);
+  if (ec) {
+    if (error) *error = "cannot copy the scene to '" + target.string() + "': " + ec.message();
+    return false;
+  }
+  scene_copied_ = true;
   return true;
 }
 
@@ -47,6 +62,7 @@ bool RunOutputs::WriteFinal(const core::Simulation& sim, std::string* error) {
 
 nlohmann::ordered_json RunOutputs::Describe() const {
   nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  if (scene_copied_) out["scene_copy"] = kSceneCopy;
   if (!series_.entries().empty()) {
     out["vtk_series"] = std::string(kVtkDir) + "/" + kVtkPrefix + ".vtk.series";
     out["vtk_snapshots"] = series_.entries().size();

@@ -4,6 +4,8 @@
 //                                  every round(vtk_interval_s / Δt) steps, and the final state
 //   DIR/vtk/particles.vtk.series   ParaView's index of the snapshots with their times
 //   DIR/final_particles.csv        the final state, one row per particle (core/io/csv_writer.h)
+//   DIR/scene.json                 a byte-for-byte copy of the scene file, so that DIR alone
+//                                  reproduces the run
 // summary.json is written by the caller (summary_json.h) with Describe() as its "outputs".
 //
 // Thread-safety: single-threaded use; WriteSnapshot may be called from a Simulation observer.
@@ -13,9 +15,8 @@
 //   if (!outputs.Prepare(&error)) ...;
 //   outputs.WriteSnapshot(sim, &error);  ...  outputs.WriteFinal(sim, &error);
 #include <cstdint>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "apps/scene_file.h"
 #include "core/io/vtk_writer.h"
@@ -29,6 +30,8 @@ class RunOutputs {
 
   // Creates DIR and DIR/vtk if needed.
   bool Prepare(std::string* error);
+  // Copies the scene file to DIR/scene.json (nothing to do if it is that file already).
+  bool CopyScene(const std::string& scene_path, std::string* error);
   // Steps between periodic snapshots for a time step; 0 when only initial and final are kept.
   int64_t SnapshotEverySteps(double timestep_s) const;
   // Writes a snapshot of the current state (and refreshes the series index).
@@ -47,6 +50,7 @@ class RunOutputs {
   core::io::VtkSeries series_;
   int64_t last_snapshot_step_ = -1;
   bool csv_written_ = false;
+  bool scene_copied_ = false;
 };
 
 }  // namespace demcal::apps

@@ -14,9 +14,9 @@ using nlohmann::json;
 
 const std::vector<std::string>& TopLevelKeys() {
   static const std::vector<std::string> keys = {
-      "format", "description", "materials", "species",   "interactions", "contact_model",
-      "domain", "gravity_m_s2", "walls",    "particles", "fills",        "seed",
-      "time",   "skin_m",       "max_wall_time_s",       "output"};
+      "format", "description",  "materials",       "species",   "interactions", "contact_model",
+      "domain", "gravity_m_s2", "walls",           "particles", "fills",        "seed",
+      "time",   "skin_m",       "max_wall_time_s", "output"};
   return keys;
 }
 
@@ -133,13 +133,15 @@ bool ParseSceneText(const std::string& text, const std::string& source, SceneFil
     // e.what() is "[json.exception.parse_error.101] parse error at line L, column C: ...".
     std::string what = e.what();
     const size_t start = what.find("] ");
-    if (error) *error = source + ": invalid JSON: " +
-                        (start == std::string::npos ? what : what.substr(start + 2));
+    if (error)
+      *error = source +
+               ": invalid JSON: " + (start == std::string::npos ? what : what.substr(start + 2));
     return false;
   }
   if (!duplicates.duplicate().empty()) {
-    if (error) *error = source + ": key '" + duplicates.duplicate() +
-                        "' appears twice in one object; JSON keys must be unique";
+    if (error)
+      *error = source + ": key '" + duplicates.duplicate() +
+               "' appears twice in one object; JSON keys must be unique";
     return false;
   }
   return ParseSceneJson(document, source, out, error);

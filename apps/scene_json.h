@@ -12,9 +12,8 @@
 // Usage:
 //   SceneFile file;  std::string error;
 //   if (!LoadSceneFile("examples/pour_box.json", &file, &error)) { std::cerr << error; }
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "apps/scene_file.h"
 

@@ -28,8 +28,8 @@ void CheckBoxOrder(JsonFields& f, const std::string& max_key, const core::Vec3& 
   for (int a = 0; a < 3; ++a)
     if (!(hi[a] > lo[a]))
       return f.Fail(max_key, "must exceed '" + f.PathOf(min_key) + "' on every axis (axis " +
-                                 "xyz"[a] + ": " + std::to_string(lo[a]) + " >= " +
-                                 std::to_string(hi[a]) + ")");
+                                 "xyz"[a] + ": " + std::to_string(lo[a]) +
+                                 " >= " + std::to_string(hi[a]) + ")");
 }
 
 void ParsePlane(JsonFields& f, const std::string& name, int material, core::Scene* scene) {
@@ -42,8 +42,9 @@ void ParsePlane(JsonFields& f, const std::string& name, int material, core::Scen
   if (!f.ok()) return;
   const double length = core::Norm(w.normal);
   if (!(length > 1e-12))
-    return f.Fail("normal", "must be a non-zero vector (it points into the particle region and "
-                            "is normalised to unit length)");
+    return f.Fail("normal",
+                  "must be a non-zero vector (it points into the particle region and "
+                  "is normalised to unit length)");
   w.normal = w.normal / length;
   scene->walls.push_back(w);
 }
@@ -65,12 +66,13 @@ void ParseBox(JsonFields& f, const std::string& name, int material, core::Scene*
 void ParseWalls(JsonFields& top, core::Scene* scene, JsonStatus* status) {
   const json* list = top.Array("walls", kOptional);
   if (!list) return;
-  const std::vector<std::string> plane_keys = {"type",   "name",   "material",
+  const std::vector<std::string> plane_keys = {"type",    "name",   "material",
                                                "point_m", "normal", "velocity_m_s"};
-  const std::vector<std::string> box_keys = {"type", "name", "material", "min_m", "max_m", "open_top"};
-  const std::vector<std::string> all_keys = {"type",   "name",         "material", "point_m",
-                                             "normal", "velocity_m_s", "min_m",    "max_m",
-                                             "open_top"};
+  const std::vector<std::string> box_keys = {"type",  "name",  "material",
+                                             "min_m", "max_m", "open_top"};
+  const std::vector<std::string> all_keys = {"type",    "name",   "material",
+                                             "point_m", "normal", "velocity_m_s",
+                                             "min_m",   "max_m",  "open_top"};
   const std::vector<std::string> materials = MaterialNames(*scene);
   for (size_t i = 0; i < list->size() && status->ok(); ++i) {
     const std::string path = IndexPath("walls", i);
@@ -85,8 +87,10 @@ void ParseWalls(JsonFields& top, core::Scene* scene, JsonStatus* status) {
     f.String("name", &name, kOptional);
     const int material = ReadNameReference(f, "material", "material", materials, status);
     if (!f.ok()) return;
-    if (type == "plane") ParsePlane(f, name, material, scene);
-    else ParseBox(f, name, material, scene);
+    if (type == "plane")
+      ParsePlane(f, name, material, scene);
+    else
+      ParseBox(f, name, material, scene);
   }
 }
 

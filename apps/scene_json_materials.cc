@@ -53,8 +53,8 @@ int ResolveName(const json& value, const std::string& path, const std::string& w
   if (it != names.end()) return static_cast<int>(it - names.begin());
   std::string defined;
   for (const std::string& n : names) defined += (defined.empty() ? "" : ", ") + n;
-  status->Fail("field '" + path + "' = '" + name + "' names no " + what + " (defined: " +
-               (defined.empty() ? "none" : defined) + ")");
+  status->Fail("field '" + path + "' = '" + name + "' names no " + what +
+               " (defined: " + (defined.empty() ? "none" : defined) + ")");
   return -1;
 }
 
@@ -69,10 +69,10 @@ void ParseMaterials(JsonFields& top, core::Scene* scene, JsonStatus* status) {
   if (!list) return;
   if (list->empty()) top.Fail("materials", "must list at least one material");
   for (size_t i = 0; i < list->size() && status->ok(); ++i) {
-    JsonFields f((*list)[i], IndexPath("materials", i),
-                 {"name", "youngs_modulus_Pa", "shear_modulus_Pa", "poisson_ratio",
-                  "density_kg_m3"},
-                 status);
+    JsonFields f(
+        (*list)[i], IndexPath("materials", i),
+        {"name", "youngs_modulus_Pa", "shear_modulus_Pa", "poisson_ratio", "density_kg_m3"},
+        status);
     core::Material m;
     f.String("name", &m.name, kRequired);
     if (f.ok()) CheckUnique(f, MaterialNames(*scene), m.name);
@@ -201,8 +201,8 @@ void ParseContactModel(JsonFields& top, core::Scene* scene, JsonStatus* status) 
   f.String("rolling", &scene->rolling.name, kOptional, core::RollingModelNames());
   f.Number("epsd_damping_ratio", &scene->rolling.epsd_damping_ratio, kOptional);
   if (f.ok() && f.Has("epsd_damping_ratio") && scene->rolling.name != "epsd")
-    f.Fail("epsd_damping_ratio", "applies only to rolling = \"epsd\" (rolling is \"" +
-                                     scene->rolling.name + "\")");
+    f.Fail("epsd_damping_ratio",
+           "applies only to rolling = \"epsd\" (rolling is \"" + scene->rolling.name + "\")");
 }
 
 }  // namespace demcal::apps::internal

@@ -33,10 +33,14 @@ int ResolveThreads(int requested) {
 
 bool SimulateOptions::IsValid(std::string* error) const {
   std::string problem;
-  if (scene_path.empty()) problem = "the scene file path is empty";
-  else if (out_dir.empty()) problem = "--out: the output directory is empty";
-  else if (threads < 0) problem = "--threads = " + std::to_string(threads) + " must be >= 0";
-  else if (!(progress_interval_s > 0)) problem = "--progress-interval-s must be > 0";
+  if (scene_path.empty())
+    problem = "the scene file path is empty";
+  else if (out_dir.empty())
+    problem = "--out: the output directory is empty";
+  else if (threads < 0)
+    problem = "--threads = " + std::to_string(threads) + " must be >= 0";
+  else if (!(progress_interval_s > 0))
+    problem = "--progress-interval-s must be > 0";
   if (!problem.empty() && error) *error = problem;
   return problem.empty();
 }
@@ -90,10 +94,10 @@ int RunSimulate(const SimulateOptions& options, std::ostream& log) {
   if (!options.quiet) {
     log << "demcal simulate: " << options.scene_path << ": " << sim.particles().Size()
         << " particles, time step " << sim.timestep_s() << " s, "
-        << std::llround(duration_s / sim.timestep_s()) << " steps to " << duration_s
-        << " s on " << record.threads_used << " thread(s)\n";
+        << std::llround(duration_s / sim.timestep_s()) << " steps to " << duration_s << " s on "
+        << record.threads_used << " thread(s)\n";
   }
-  if (!outputs.WriteSnapshot(sim, &error)) {
+  if (!outputs.CopyScene(options.scene_path, &error) || !outputs.WriteSnapshot(sim, &error)) {
     record.output_error = error;
     log << "error: " << error << "\n";
     return finish(kExitOutputError);
@@ -116,8 +120,10 @@ int RunSimulate(const SimulateOptions& options, std::ostream& log) {
   record.summary = sim.Run(duration_s, observer);
 
   // The final state is written for failed runs too: it shows where things went wrong.
-  if (!snapshot_error.empty()) record.output_error = snapshot_error;
-  else if (!outputs.WriteFinal(sim, &error)) record.output_error = error;
+  if (!snapshot_error.empty())
+    record.output_error = snapshot_error;
+  else if (!outputs.WriteFinal(sim, &error))
+    record.output_error = error;
 
   int code = kExitOk;
   if (!record.output_error.empty()) {
@@ -129,8 +135,8 @@ int RunSimulate(const SimulateOptions& options, std::ostream& log) {
     code = kExitRunFailed;
   }
   if (!options.quiet)
-    log << "demcal simulate: " << record.summary.BriefReport() << "; outputs in "
-        << options.out_dir << "\n";
+    log << "demcal simulate: " << record.summary.BriefReport() << "; outputs in " << options.out_dir
+        << "\n";
   return finish(code);
 }
 
@@ -138,8 +144,7 @@ Command AddSimulateCommand(CLI::App& parent) {
   auto options = std::make_shared<SimulateOptions>();
   CLI::App* sub = parent.add_subcommand(
       "simulate", "Run one scene file (JSON, format demcal-scene/1) and write its outputs");
-  sub->add_option("scene", options->scene_path, "scene file, see docs/scene_format.md")
-      ->required();
+  sub->add_option("scene", options->scene_path, "scene file, see docs/scene_format.md")->required();
   sub->add_option("--out,-o", options->out_dir,
                   "output directory (created if missing): summary.json, final_particles.csv, "
                   "vtk/")

@@ -12,11 +12,11 @@
 namespace demcal::apps {
 
 struct SimulateOptions {
-  std::string scene_path;           // a "demcal-scene/1" JSON file
-  std::string out_dir;              // created if missing; existing files are overwritten
-  int threads = 0;                  // worker threads, >= 0 (0: all cores)
-  bool quiet = false;               // only errors on the log stream
-  double progress_interval_s = 2.0; // wall time between progress lines, > 0
+  std::string scene_path;            // a "demcal-scene/1" JSON file
+  std::string out_dir;               // created if missing; existing files are overwritten
+  int threads = 0;                   // worker threads, >= 0 (0: all cores)
+  bool quiet = false;                // only errors on the log stream
+  double progress_interval_s = 2.0;  // wall time between progress lines, > 0
 
   bool IsValid(std::string* error) const;
 };

@@ -8,7 +8,9 @@
 namespace demcal::apps {
 namespace {
 // JSON has no NaN or infinity: a non-finite figure (a blown-up run) is written as null.
-nlohmann::ordered_json Finite(double v) { return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(); }
+nlohmann::ordered_json Finite(double v) {
+  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json();
+}
 }  // namespace
 
 nlohmann::ordered_json RunRecordToJson(const RunRecord& r) {
@@ -34,14 +36,16 @@ nlohmann::ordered_json RunRecordToJson(const RunRecord& r) {
   j["wall_time_s"] = Finite(s.wall_time_s);
   j["setup_wall_time_s"] = Finite(r.setup_wall_time_s);
   j["total_wall_time_s"] = Finite(r.total_wall_time_s);
-  j["output_error"] = r.output_error.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.output_error);
+  j["output_error"] =
+      r.output_error.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.output_error);
   j["outputs"] = r.outputs;
   return j;
 }
 
 bool WriteRunSummaryJson(const std::string& path, const RunRecord& record, std::string* error) {
   std::ofstream out(path, std::ios::trunc);
-  out << RunRecordToJson(record).dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace)
+  out << RunRecordToJson(record).dump(2, ' ', false,
+                                      nlohmann::ordered_json::error_handler_t::replace)
       << "\n";
   out.flush();
   if (!out) {

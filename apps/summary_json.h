@@ -8,10 +8,9 @@
 //   RunRecord r;  r.scene_path = ...;  r.summary = sim.Run(...);
 //   WriteRunSummaryJson(outputs.SummaryPath(), r, &error);
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
-
-#include <nlohmann/json.hpp>
 
 #include "core/run_summary.h"
 
@@ -22,14 +21,14 @@ inline constexpr const char* kRunSummaryFormat = "demcal-run-summary/1";
 struct RunRecord {
   std::string scene_path;
   std::string scene_description;
-  std::optional<uint64_t> seed;              // unknown if the scene could not be read
+  std::optional<uint64_t> seed;  // unknown if the scene could not be read
   std::optional<double> requested_duration_s;
-  int threads_requested = 0;                 // 0: all cores
+  int threads_requested = 0;  // 0: all cores
   int threads_used = 0;
-  core::RunSummary summary;                  // termination, message, steps, times, energy
-  double setup_wall_time_s = 0;              // scene loading, particle placement, first forces
-  double total_wall_time_s = 0;              // the whole command, outputs included
-  std::string output_error;                  // non-empty if an output file could not be written
+  core::RunSummary summary;      // termination, message, steps, times, energy
+  double setup_wall_time_s = 0;  // scene loading, particle placement, first forces
+  double total_wall_time_s = 0;  // the whole command, outputs included
+  std::string output_error;      // non-empty if an output file could not be written
   nlohmann::ordered_json outputs = nlohmann::ordered_json::object();  // RunOutputs::Describe()
 };
 

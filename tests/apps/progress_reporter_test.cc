@@ -1,7 +1,6 @@
 #include "apps/progress_reporter.h"
 
 #include <catch2/catch.hpp>
-
 #include <sstream>
 
 using namespace demcal::apps;

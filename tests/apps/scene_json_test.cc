@@ -1,7 +1,6 @@
 #include "apps/scene_json.h"
 
 #include <catch2/catch.hpp>
-
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -14,7 +13,9 @@ using nlohmann::json;
 
 namespace {
 
-std::string Example(const std::string& relative) { return (RepoRoot() / "examples" / relative).string(); }
+std::string Example(const std::string& relative) {
+  return (RepoRoot() / "examples" / relative).string();
+}
 
 json PourBox() { return json::parse(std::ifstream(Example("pour_box.json"))); }
 
@@ -102,8 +103,7 @@ TEST_CASE("each kind of bad input gives an error naming the file and the field",
   const std::vector<Case> cases = {
       {"unknown key", "/materials/0/densty_kg_m3", 1000,
        "unknown key 'materials[0].densty_kg_m3' (did you mean 'density_kg_m3'?)"},
-      {"unknown top-level key", "/gravity", json::array({0, 0, -9.81}),
-       "unknown key 'gravity'"},
+      {"unknown top-level key", "/gravity", json::array({0, 0, -9.81}), "unknown key 'gravity'"},
       {"wrong type", "/fills/0/count", "3000", "field 'fills[0].count' must be an integer"},
       {"wrong vector length", "/domain/max_m", json::array({1, 1}),
        "field 'domain.max_m' must be an array of 3 numbers"},
@@ -123,7 +123,8 @@ TEST_CASE("each kind of bad input gives an error naming the file and the field",
        "field 'contact_model.rolling' = 'epsd3' is not one of none|cdt|epsd|epsd2"},
       {"damping without epsd", "/contact_model/epsd_damping_ratio", 0.3,
        "field 'contact_model.epsd_damping_ratio' applies only to rolling = \"epsd\""},
-      {"wrong format", "/format", "demcal-scene/2", "field 'format' = 'demcal-scene/2' is not supported"},
+      {"wrong format", "/format", "demcal-scene/2",
+       "field 'format' = 'demcal-scene/2' is not supported"},
       {"box with max below min", "/walls/0/max_m", json::array({0.04, 0.04, -1}),
        "field 'walls[0].max_m' must exceed 'walls[0].min_m' on every axis"},
       {"box key on a plane", "/walls/0/type", "plane", "unknown key 'walls[0].max_m'"},
@@ -156,7 +157,8 @@ TEST_CASE("missing fields, conflicting alternatives and zero normals are rejecte
     return ErrorOf(d);
   };
   CHECK_THAT(without("/seed"), Catch::Contains("missing required field 'seed'"));
-  CHECK_THAT(without("/time/duration_s"), Catch::Contains("missing required field 'time.duration_s'"));
+  CHECK_THAT(without("/time/duration_s"),
+             Catch::Contains("missing required field 'time.duration_s'"));
   CHECK_THAT(without("/materials/0/poisson_ratio"),
              Catch::Contains("missing required field 'materials[0].poisson_ratio'"));
   CHECK_THAT(without("/materials/0/youngs_modulus_Pa"),
@@ -198,10 +200,12 @@ TEST_CASE("JSON syntax errors give line and column; duplicate keys are rejected"
 
 TEST_CASE("every file in examples/invalid is rejected with an error naming its field", "[unit]") {
   const std::map<std::string, std::string> expected = {
-      {"bad_restitution.json", "'interactions.default.restitution' = 0 is outside the allowed range (0, 1]"},
+      {"bad_restitution.json",
+       "'interactions.default.restitution' = 0 is outside the allowed range (0, 1]"},
       {"bad_syntax.json", "invalid JSON: parse error at line 5"},
       {"missing_field.json", "missing required field 'time.duration_s'"},
-      {"out_of_range.json", "'materials[0].poisson_ratio' = 0.7 is outside the allowed range (-1, 0.5)"},
+      {"out_of_range.json",
+       "'materials[0].poisson_ratio' = 0.7 is outside the allowed range (-1, 0.5)"},
       {"unknown_key.json", "unknown key 'materials[0].densty_kg_m3'"},
       {"unknown_material.json", "'species[0].material' = 'glas' names no material"},
       {"wrong_type.json", "'fills[0].count' must be an integer, got string \"50\""},

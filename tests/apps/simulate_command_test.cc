@@ -1,12 +1,10 @@
 #include "apps/simulate_command.h"
 
 #include <catch2/catch.hpp>
-
 #include <filesystem>
 #include <fstream>
-#include <sstream>
-
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "apps/exit_codes.h"
 #include "apps/test_paths.h"
@@ -94,6 +92,8 @@ TEST_CASE("simulate runs a tiny scene and writes summary, snapshots and the fina
   CHECK(vtk.points.size() == 3 * 20);
   CHECK(vtk.field_data.at("TIME")[0] == s["simulated_time_s"].get<double>());
   CHECK(CountLines(dir.str("out/final_particles.csv")) == 1 + 20);
+  CHECK(s["outputs"]["scene_copy"] == "scene.json");
+  CHECK(ReadJson(dir.str("out/scene.json")) == ReadJson(o.scene_path));
   CHECK(log.str().find("ok: completed") != std::string::npos);
 }
 

@@ -1,7 +1,6 @@
 #include "core/io/vtk_writer.h"
 
 #include <catch2/catch.hpp>
-
 #include <fstream>
 #include <nlohmann/json.hpp>
 
