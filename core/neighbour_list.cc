@@ -20,12 +20,22 @@ int NeighbourList::Grid::CellOf(const Vec3& x) const {
   return (iz * ny + iy) * nx + ix;
 }
 
-NeighbourList::Grid NeighbourList::MakeGrid(const Settings& s) const {
+NeighbourList::Grid NeighbourList::MakeGrid(const Settings& s, const std::vector<Vec3>& x) const {
   // A cell is at least the largest possible cut-off, so partners lie in the 27 nearest cells.
   const double cutoff = 2.0 * s.max_radius_m + s.skin_m;
-  const Vec3 extent = s.domain_max_m - s.domain_min_m;
+  // The grid spans the particles' bounding box (within the domain), so a few particles in a
+  // large domain do not pay for millions of empty cells.
+  Vec3 lo = s.domain_max_m, hi = s.domain_min_m;
+  for (const Vec3& p : x)
+    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
+  for (int a = 0; a < 3; ++a) {
+    lo[a] = std::max(lo[a], s.domain_min_m[a]);
+    hi[a] = std::min(hi[a], s.domain_max_m[a]);
+    if (!(hi[a] - lo[a] >= cutoff)) hi[a] = lo[a] + cutoff;  // also catches NaN and empty sets
+  }
+  const Vec3 extent = hi - lo;
   Grid g;
-  g.origin = s.domain_min_m;
+  g.origin = lo;
   g.inv_cell = 1.0 / cutoff;
   auto cells = [&](double length) { return std::max(1, static_cast<int>(length / cutoff)); };
   g.nx = cells(extent.x);
@@ -81,7 +91,7 @@ void NeighbourList::ForEachCandidate(const Grid& grid, size_t i, const std::vect
 void NeighbourList::Build(const Settings& s, const std::vector<Vec3>& x,
                           const std::vector<double>& r) {
   const size_t n = x.size();
-  const Grid grid = MakeGrid(s);
+  const Grid grid = MakeGrid(s, x);
   BinParticles(grid, x);
 
   // Pass 1: count partners per row; pass 2: fill and sort each row.
@@ -138,7 +148,7 @@ int64_t NeighbourList::Find(uint32_t i, uint32_t j) const {
 
 std::vector<uint32_t> NeighbourList::CellOrder(const Settings& s,
                                                const std::vector<Vec3>& x) const {
-  const Grid grid = MakeGrid(s);
+  const Grid grid = MakeGrid(s, x);
   std::vector<std::pair<int, uint32_t>> keyed(x.size());
   for (uint32_t i = 0; i < x.size(); ++i) keyed[i] = {grid.CellOf(x[i]), i};
   std::sort(keyed.begin(), keyed.end());

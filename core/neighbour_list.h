@@ -17,7 +17,7 @@ namespace demcal::core {
 class NeighbourList {
  public:
   struct Settings {
-    Vec3 domain_min_m, domain_max_m;  // particles outside are clamped into the edge cells
+    Vec3 domain_min_m, domain_max_m;  // the grid never extends beyond; outliers are clamped
     double skin_m = 0;
     double max_radius_m = 0;
   };
@@ -49,7 +49,7 @@ class NeighbourList {
     int nx, ny, nz;
     int CellOf(const Vec3& x) const;
   };
-  Grid MakeGrid(const Settings& s) const;
+  Grid MakeGrid(const Settings& s, const std::vector<Vec3>& positions) const;
   void BinParticles(const Grid& grid, const std::vector<Vec3>& positions);
   template <class Visit>
   void ForEachCandidate(const Grid& grid, size_t i, const std::vector<Vec3>& x,
