@@ -221,7 +221,7 @@ void ContactForces::RebuildWallCandidates(const Particles& p, const std::vector<
                                           const std::vector<PlaneWall>& walls, double skin_m) {
   const size_t n = p.Size();
   auto old_slot = [&](size_t s) { return order.empty() ? s : order[s]; };
-  const bool had_rows = wall_start_.size() == n + 1;
+  const size_t old_n = wall_start_.size() - 1;  // particles appended since keep no history
   std::vector<uint32_t> start(n + 1, 0), index;
   std::vector<ContactHistory> history;
   std::vector<uint8_t> active;
@@ -233,8 +233,8 @@ void ContactForces::RebuildWallCandidates(const Particles& p, const std::vector<
       if (!moving && gap > skin_m) continue;
       ContactHistory h;
       uint8_t on = 0;
-      if (had_rows) {  // keep the history of a wall contact that persists
-        const size_t o = old_slot(i);
+      const size_t o = old_slot(i);
+      if (o < old_n) {  // keep the history of a wall contact that persists
         for (uint32_t e = wall_start_[o]; e < wall_start_[o + 1]; ++e)
           if (wall_index_[e] == w) h = wall_history_[e], on = wall_active_[e];
       }

@@ -12,9 +12,9 @@ namespace {
 // A dense grid of cells of size >= the largest diameter over the region, holding particle slots.
 class OccupancyGrid {
  public:
-  OccupancyGrid(const BoxRegion& region, double cell) : origin_(region.min_m), cell_(cell) {
+  OccupancyGrid(const Vec3& lo, const Vec3& hi, double cell) : origin_(lo), cell_(cell) {
     for (int a = 0; a < 3; ++a)
-      dims_[a] = std::max(1, static_cast<int>(std::ceil((region.max_m[a] - region.min_m[a]) / cell)));
+      dims_[a] = std::max(1, static_cast<int>(std::ceil((hi[a] - lo[a]) / cell)));
     cells_.resize(static_cast<size_t>(dims_[0]) * dims_[1] * dims_[2]);
   }
   void Add(const Vec3& x, uint32_t slot) {
@@ -58,40 +58,59 @@ class OccupancyGrid {
 
 }  // namespace
 
-int64_t InsertRandomNonOverlapping(const InsertionRequest& q, Rng& rng, Particles& particles,
-                                   int64_t& next_id, std::string* error) {
-  double max_d = q.size->MaxDiameter();
+std::vector<double> NumberWeightsFromMassFractions(const std::vector<double>& w,
+                                                   const std::vector<double>& mean_mass) {
+  std::vector<double> n(w.size());
+  for (size_t k = 0; k < w.size(); ++k) n[k] = w[k] / mean_mass[k];
+  return n;
+}
+
+namespace {
+const SpeciesDraw& DrawSpecies(const std::vector<SpeciesDraw>& mixture, Rng& rng) {
+  if (mixture.size() == 1) return mixture[0];
+  double total = 0;
+  for (const SpeciesDraw& d : mixture) total += d.number_weight;
+  double u = rng.Uniform() * total;
+  for (const SpeciesDraw& d : mixture) {
+    if (u < d.number_weight) return d;
+    u -= d.number_weight;
+  }
+  return mixture.back();
+}
+}  // namespace
+
+InsertionResult InsertRandomNonOverlapping(const InsertionRequest& q, Rng& rng,
+                                           Particles& particles, int64_t& next_id) {
+  double max_d = 0;
+  for (const SpeciesDraw& d : q.mixture) max_d = std::max(max_d, d.size->MaxDiameter());
   for (double r : particles.radius_m) max_d = std::max(max_d, 2 * r);
   // Grid over the region grown by one diameter so particles already near it are seen too.
-  BoxRegion grown{q.region.min_m - Vec3{max_d, max_d, max_d}, q.region.max_m + Vec3{max_d, max_d, max_d}};
-  OccupancyGrid grid(grown, max_d);
+  const Vec3 grow{max_d, max_d, max_d};
+  OccupancyGrid grid(q.region.min_m - grow, q.region.max_m + grow, max_d);
   for (uint32_t s = 0; s < particles.Size(); ++s) grid.Add(particles.position_m[s], s);
 
-  int64_t placed = 0;
-  for (; placed < q.count; ++placed) {
-    const double r = 0.5 * q.size->Sample(rng.Uniform());
-    bool done = false;
-    for (int attempt = 0; attempt < q.max_attempts_per_particle && !done; ++attempt) {
+  InsertionResult result;
+  while (result.count < q.max_count && result.mass_kg < q.max_mass_kg) {
+    const SpeciesDraw& draw = DrawSpecies(q.mixture, rng);
+    const double r = 0.5 * draw.size->Sample(rng.Uniform());
+    bool placed = false;
+    for (int attempt = 0; attempt < q.max_attempts_per_particle && !placed; ++attempt) {
       Vec3 x;
-      for (int a = 0; a < 3; ++a) x[a] = rng.Uniform(q.region.min_m[a] + r, q.region.max_m[a] - r);
+      if (!q.region.Sample(r, rng, &x)) break;
       if (!grid.IsFree(x, r, particles)) continue;
-      const size_t slot = particles.Add(next_id++, q.species, q.material, r, q.density_kg_m3, x,
-                                        q.velocity_m_s, {});
+      const size_t slot = particles.Add(next_id++, draw.species, draw.material, r,
+                                        draw.density_kg_m3, x, q.velocity_m_s, {});
       grid.Add(x, static_cast<uint32_t>(slot));
-      done = true;
+      result.mass_kg += particles.mass_kg[slot];
+      ++result.count;
+      placed = true;
     }
-    if (!done) break;
+    if (!placed) {
+      result.region_full = true;
+      break;
+    }
   }
-  if (placed < q.count && error) {
-    const Vec3 e = q.region.max_m - q.region.min_m;
-    const double fraction = q.count * q.size->MeanVolume() / (e.x * e.y * e.z);
-    std::ostringstream os;
-    os << "placed only " << placed << " of " << q.count
-       << " particles: the region is too small for that count (it would need a solid fraction of "
-       << fraction << "; random insertion works up to about 0.3)";
-    *error = os.str();
-  }
-  return placed;
+  return result;
 }
 
 }  // namespace demcal::core

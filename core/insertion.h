@@ -1,10 +1,13 @@
 #pragma once
 // Insertion of particles at random non-overlapping positions (random sequential addition with
-// a cell grid). Deterministic for a given Rng state. Used by scene fills at t = 0; the
-// rate-controlled factories of DEM core II build on it.
+// a cell grid that also sees the particles already present). Deterministic for a given Rng
+// state. Used by scene fills at t = 0 and by the rate-controlled factories.
 #include <cstdint>
+#include <limits>
 #include <string>
+#include <vector>
 
+#include "core/insertion_region.h"
 #include "core/material.h"
 #include "core/particles.h"
 #include "core/random.h"
@@ -12,24 +15,37 @@
 
 namespace demcal::core {
 
-struct BoxRegion {
-  Vec3 min_m, max_m;
-};
-
-struct InsertionRequest {
-  BoxRegion region;        // particle centres are kept a radius inside it
+// One species a request may draw, with its relative number weight.
+struct SpeciesDraw {
   int species = 0;
   int material = 0;
   double density_kg_m3 = 0;
   const SizeDistribution* size = nullptr;
-  int64_t count = 0;
+  double number_weight = 1;
+};
+
+struct InsertionRequest {
+  InsertionRegion region;
+  std::vector<SpeciesDraw> mixture;  // non-empty
+  int64_t max_count = std::numeric_limits<int64_t>::max();
+  double max_mass_kg = std::numeric_limits<double>::infinity();  // stop once reached
   Vec3 velocity_m_s;
   int max_attempts_per_particle = 2000;
 };
 
-// Appends up to request.count particles to `particles`, giving them ids from `next_id`.
-// Returns the number placed; if fewer than requested, `error` explains (region too small).
-int64_t InsertRandomNonOverlapping(const InsertionRequest& request, Rng& rng, Particles& particles,
-                                   int64_t& next_id, std::string* error);
+struct InsertionResult {
+  int64_t count = 0;
+  double mass_kg = 0;
+  bool region_full = false;  // a particle could not be placed within its attempts
+};
+
+// Appends particles until max_count or max_mass_kg is reached or the region is full, giving
+// them ids from `next_id`.
+InsertionResult InsertRandomNonOverlapping(const InsertionRequest& request, Rng& rng,
+                                           Particles& particles, int64_t& next_id);
+
+// Number weights that realise the given mass fractions (w_s / mean particle mass_s).
+std::vector<double> NumberWeightsFromMassFractions(const std::vector<double>& mass_fractions,
+                                                   const std::vector<double>& mean_mass_kg);
 
 }  // namespace demcal::core

@@ -142,6 +142,62 @@ void CheckParticles(const Scene& s, Checker& c) {
   }
 }
 
+void CheckFactories(const Scene& s, Checker& c) {
+  const int ns = static_cast<int>(s.species.size());
+  for (size_t i = 0; i < s.factories.size(); ++i) {
+    const FactorySpec& f = s.factories[i];
+    const std::string name = Indexed("factories", i);
+    if (f.species.empty() || f.species.size() != f.mass_fractions.size()) {
+      c.Fail("field '" + name + ".species' must list at least one species with a mass fraction each");
+      continue;
+    }
+    double sum = 0, mean_density = 0, d_max = 0;
+    for (size_t k = 0; k < f.species.size(); ++k) {
+      const std::string fk = name + ".species[" + std::to_string(k) + "]";
+      if (f.species[k] < 0 || f.species[k] >= ns) {
+        c.Fail("field '" + fk + "' names no defined species");
+        return;
+      }
+      c.Range(fk + ".mass_fraction", f.mass_fractions[k], 0, 1, false, false);
+      sum += f.mass_fractions[k];
+      const Species& sp = s.species[f.species[k]];
+      mean_density += f.mass_fractions[k] * s.materials[sp.material].density_kg_m3;
+      d_max = std::max(d_max, sp.size.MaxDiameter());
+    }
+    if (std::abs(sum - 1) > 1e-6) c.Fail("field '" + name + ".species' mass fractions must sum to 1");
+    c.Positive(name + ".mass_rate_kg_s", f.mass_rate_kg_s, "kg/s");
+    c.Range(name + ".start_s", f.start_s, 0, 1e9, false, false, "s");
+    if (!std::isinf(f.end_s)) c.Range(name + ".end_s", f.end_s, f.start_s, 1e9, true, false, "s");
+    if (!std::isinf(f.total_mass_kg))
+      c.Range(name + ".total_mass_kg", f.total_mass_kg, 0, 1e9, true, false, "kg");
+    c.Range(name + ".batch_interval_s", f.batch_interval_s, 0, 1e6, false, false, "s");
+    for (int a = 0; a < 3; ++a)
+      if (f.region.min_m[a] < s.domain_min_m[a] || f.region.max_m[a] > s.domain_max_m[a] ||
+          !(f.region.max_m[a] > f.region.min_m[a]))
+        c.Fail("field '" + name + ".region' must be a non-empty region inside the domain");
+    if (!c.ok()) return;
+    if (d_max >= f.region.MinExtent()) {
+      std::ostringstream os;
+      os << "field '" << name << ".region' is too small: its smallest extent "
+         << f.region.MinExtent() << " m does not exceed the largest particle diameter " << d_max << " m";
+      c.Fail(os.str());
+      return;
+    }
+    // One batch must fit in the region at a solid fraction random insertion can reach (0.3).
+    const double interval = ParticleFactory::BatchInterval(f, Norm(s.gravity_m_s2));
+    const double batch_volume = f.mass_rate_kg_s * interval / mean_density;
+    if (batch_volume > 0.3 * f.region.Volume()) {
+      std::ostringstream os;
+      os << "field '" << name << ".region' is too small for mass_rate_kg_s = " << f.mass_rate_kg_s
+         << ": a batch of " << interval << " s needs a solid fraction of "
+         << batch_volume / f.region.Volume()
+         << " in it (at most 0.3); enlarge the region (taller regions also batch less often) or "
+            "lower the rate";
+      c.Fail(os.str());
+    }
+  }
+}
+
 void CheckTime(const Scene& s, Checker& c) {
   c.Range("time.duration_s", s.time.duration_s, 0, 1e6, false, false, "s");
   c.Range("time.rayleigh_fraction", s.time.rayleigh_fraction, 0, 1, true, false);
@@ -176,11 +232,12 @@ bool Scene::IsValid(std::string* error) const {
   if (c.ok()) CheckPairs(*this, c);
   if (c.ok()) CheckGeometry(*this, c);
   if (c.ok()) CheckParticles(*this, c);
+  if (c.ok()) CheckFactories(*this, c);
   RollingModel model;
   if (c.ok() && !MakeRollingModel(rolling, &model))
     c.Fail("field 'contact_model.rolling' = '" + rolling.name + "' is not one of none|cdt|epsd|epsd2");
   if (c.ok()) c.Range("contact_model.epsd_damping_ratio", rolling.epsd_damping_ratio, 0, 1, false, false);
-  if (c.ok() && species.empty() && (!particles.empty() || !fills.empty()))
+  if (c.ok() && species.empty() && (!particles.empty() || !fills.empty() || !factories.empty()))
     c.Fail("field 'species' must list at least one species");
   if (c.ok()) CheckTime(*this, c);
   return c.ok();

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/contact/rolling_model.h"
+#include "core/factory.h"
 #include "core/interaction_table.h"
 #include "core/material.h"
 #include "core/vec3.h"
@@ -54,6 +55,7 @@ struct Scene {
   Vec3 gravity_m_s2{0, 0, -9.81};
   std::vector<ParticleSpec> particles;
   std::vector<FillSpec> fills;
+  std::vector<FactorySpec> factories;
   uint64_t seed = 1;
   TimeSettings time;
   double skin_m = 0;           // Verlet skin; 0 = automatic (see NeighbourSkin)

@@ -73,16 +73,17 @@ bool Simulation::Initialize(std::string* error) {
     forces_.Compute(particles_, list_, scene_.walls, table_, rolling_, adhesive_,
                     scene_.gravity_m_s2, dt_);
   });
+  CreateFactories();
   energy_budget_J_ = particles_.KineticEnergy() + GravitationalPotential();
   // Largest energy gravity can release: every particle dropping to the domain's lowest corner.
   const Vec3 g = scene_.gravity_m_s2;
-  const Vec3 lowest{g.x > 0 ? scene_.domain_max_m.x : scene_.domain_min_m.x,
-                    g.y > 0 ? scene_.domain_max_m.y : scene_.domain_min_m.y,
-                    g.z > 0 ? scene_.domain_max_m.z : scene_.domain_min_m.z};
+  lowest_point_ = {g.x > 0 ? scene_.domain_max_m.x : scene_.domain_min_m.x,
+                   g.y > 0 ? scene_.domain_max_m.y : scene_.domain_min_m.y,
+                   g.z > 0 ? scene_.domain_max_m.z : scene_.domain_min_m.z};
   energy_scale_J_ = particles_.KineticEnergy() +
                     particles_.Size() * AdhesiveEnergyBoundPerParticle(scene_, table_);
   for (size_t i = 0; i < particles_.Size(); ++i)
-    energy_scale_J_ += particles_.mass_kg[i] * Dot(g, lowest - particles_.position_m[i]);
+    energy_scale_J_ += particles_.mass_kg[i] * Dot(g, lowest_point_ - particles_.position_m[i]);
   initialized_ = true;
   return true;
 }
@@ -100,15 +101,61 @@ void Simulation::PlaceInitialParticles(std::string* error) {
     const FillSpec& fill = scene_.fills[f];
     const Species& sp = scene_.species[fill.species];
     Rng fill_rng(DeriveSeed(scene_.seed, 1 + f));
-    InsertionRequest q{{fill.region_min_m, fill.region_max_m}, fill.species, sp.material,
-                       scene_.materials[sp.material].density_kg_m3, &sp.size, fill.count,
-                       fill.velocity_m_s};
-    std::string why;
-    if (InsertRandomNonOverlapping(q, fill_rng, particles_, next_id_, &why) < fill.count) {
-      *error = "fills[" + std::to_string(f) + "]: " + why;
+    InsertionRequest q;
+    q.region = InsertionRegion::Box(fill.region_min_m, fill.region_max_m);
+    q.mixture = {{fill.species, sp.material, scene_.materials[sp.material].density_kg_m3, &sp.size, 1}};
+    q.max_count = fill.count;
+    q.velocity_m_s = fill.velocity_m_s;
+    const InsertionResult placed = InsertRandomNonOverlapping(q, fill_rng, particles_, next_id_);
+    if (placed.count < fill.count) {
+      std::ostringstream os;
+      os << "fills[" << f << "]: placed only " << placed.count << " of " << fill.count
+         << " particles: the region is too small for that count (it would need a solid fraction of "
+         << fill.count * sp.size.MeanVolume() / q.region.Volume()
+         << "; random insertion works up to about 0.3)";
+      *error = os.str();
       return;
     }
   }
+}
+
+void Simulation::CreateFactories() {
+  factories_.clear();
+  for (size_t f = 0; f < scene_.factories.size(); ++f) {
+    const FactorySpec& spec = scene_.factories[f];
+    std::vector<SpeciesDraw> mixture;
+    for (int s : spec.species) {
+      const Species& sp = scene_.species[s];
+      mixture.push_back({s, sp.material, scene_.materials[sp.material].density_kg_m3, &scene_.species[s].size, 1});
+    }
+    factories_.emplace_back(spec, std::move(mixture), Norm(scene_.gravity_m_s2),
+                            DeriveSeed(scene_.seed, 1000 + f));
+  }
+}
+
+bool Simulation::InsertFromFactories() {
+  const size_t first = particles_.Size();
+  for (ParticleFactory& factory : factories_) factory.Update(time_s_, particles_, next_id_);
+  if (particles_.Size() == first) return false;
+  AccountInsertedEnergy(first);
+  return true;
+}
+
+void Simulation::AccountInsertedEnergy(size_t first) {
+  const Vec3 g = scene_.gravity_m_s2;
+  const double adhesion = AdhesiveEnergyBoundPerParticle(scene_, table_);
+  for (size_t i = first; i < particles_.Size(); ++i) {
+    const double m = particles_.mass_kg[i];
+    const double kinetic = 0.5 * m * Norm2(particles_.velocity_m_s[i]);
+    energy_budget_J_ += kinetic - m * Dot(g, particles_.position_m[i]);
+    energy_scale_J_ += kinetic + adhesion + m * Dot(g, lowest_point_ - particles_.position_m[i]);
+  }
+}
+
+std::vector<FactoryReport> Simulation::FactoryReports() const {
+  std::vector<FactoryReport> reports;
+  for (const ParticleFactory& f : factories_) reports.push_back(f.report());
+  return reports;
 }
 
 void Simulation::RebuildNeighbours(bool allow_reorder) {
@@ -139,9 +186,10 @@ void Simulation::Step() {
       p.position_m[i] += p.velocity_m_s[i] * dt_;
     }
   });
-  if (list_.NeedsRebuild(p.position_m)) RebuildNeighbours(true);
+  const bool inserted = !factories_.empty() && InsertFromFactories();
+  if (inserted || list_.NeedsRebuild(p.position_m)) RebuildNeighbours(true);
   forces_.Compute(p, list_, scene_.walls, table_, rolling_, adhesive_, scene_.gravity_m_s2, dt_);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1024), [&](const auto& range) {
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, p.Size(), 1024), [&](const auto& range) {
     for (size_t i = range.begin(); i != range.end(); ++i) kick(i);
   });
   time_s_ += dt_;

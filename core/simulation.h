@@ -20,6 +20,7 @@
 #include <tbb/task_arena.h>
 
 #include "core/contact_forces.h"
+#include "core/factory.h"
 #include "core/neighbour_list.h"
 #include "core/particles.h"
 #include "core/run_summary.h"
@@ -61,9 +62,15 @@ class Simulation {
   double KineticEnergy() const { return particles_.KineticEnergy(); }
   size_t ActiveContacts() const { return forces_.ActiveContacts(); }
   const NeighbourList& neighbours() const { return list_; }
+  std::vector<FactoryReport> FactoryReports() const;
 
  private:
   void PlaceInitialParticles(std::string* error);
+  void CreateFactories();
+  // Runs the factories due now; true if particles were added.
+  bool InsertFromFactories();
+  // Adds the kinetic and potential energy of particle slots [first, end) to the energy budget.
+  void AccountInsertedEnergy(size_t first);
   void Step();
   void RebuildNeighbours(bool allow_reorder);
   double GravitationalPotential() const;
@@ -80,6 +87,7 @@ class Simulation {
   NeighbourList spare_list_;  // the previous list, kept for history transfer and its buffers
   NeighbourList::Settings list_settings_;
   ContactForces forces_;
+  std::vector<ParticleFactory> factories_;
   double dt_ = 0;
   double time_s_ = 0;
   int64_t steps_ = 0;
@@ -87,6 +95,7 @@ class Simulation {
   uint64_t rebuilds_since_reorder_ = 0;
   double energy_budget_J_ = 0;   // initial KE + PE (+ inserted energy)
   double energy_scale_J_ = 0;    // energy that gravity and the initial state can release
+  Vec3 lowest_point_;            // of the domain along gravity
   bool adhesive_ = false;  // some pair has Γ > 0: use the JKR normal model
   bool initialized_ = false;
 };
