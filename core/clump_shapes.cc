@@ -72,7 +72,10 @@ bool FirstRoot(const std::function<double(double)>& f, double lo, double hi, dou
         const double m = 0.5 * (a + b);
         const double fm = f(m);
         if (fa == 0) break;
-        if ((fa < 0) == (fm < 0)) a = m, fa = fm; else b = m;
+        if ((fa < 0) == (fm < 0))
+          a = m, fa = fm;
+        else
+          b = m;
       }
       *root = fa == 0 ? a : 0.5 * (a + b);
       return true;
@@ -220,7 +223,7 @@ bool ComputeMeshMassProperties(const std::vector<Triangle>& triangles, double de
   const Vec3 ref = 0.5 * (lo + hi);  // tetrahedra apex: the box centre keeps round-off small
   double six_vol = 0, area2 = 0;
   Vec3 normal_sum;
-  Eigen::Vector3d first6 = Eigen::Vector3d::Zero();  // 24 ∫(x−ref)dV
+  Eigen::Vector3d first6 = Eigen::Vector3d::Zero();   // 24 ∫(x−ref)dV
   Eigen::Matrix3d second6 = Eigen::Matrix3d::Zero();  // 120 ∫(x−ref)(x−ref)ᵀdV
   for (const Triangle& tri : triangles) {
     const Vec3 v0 = tri[0] - ref, v1 = tri[1] - ref, v2 = tri[2] - ref;
@@ -232,8 +235,8 @@ bool ComputeMeshMassProperties(const std::vector<Triangle>& triangles, double de
     const Eigen::Vector3d s = e0 + e1 + e2;
     six_vol += det;
     first6 += det * s;
-    second6 += det * (e0 * e0.transpose() + e1 * e1.transpose() + e2 * e2.transpose() +
-                      s * s.transpose());
+    second6 +=
+        det * (e0 * e0.transpose() + e1 * e1.transpose() + e2 * e2.transpose() + s * s.transpose());
   }
   if (!(area2 > 0) || Norm(normal_sum) > 1e-8 * area2) {
     std::ostringstream os;
@@ -275,15 +278,16 @@ bool ComputeMeshMassProperties(const std::vector<Triangle>& triangles, double de
                               std::sqrt(std::max(0.0, k * (i.x + i.y - i.z)))};
   std::sort(ax.begin(), ax.end(), std::greater<>());
   const double ell_vol = 4.0 / 3.0 * kPi * ax[0] * ax[1] * ax[2];
-  if (!(ell_vol > 0)) return Fail(error, "mesh: degenerate (flat) inertia, no equivalent ellipsoid");
+  if (!(ell_vol > 0))
+    return Fail(error, "mesh: degenerate (flat) inertia, no equivalent ellipsoid");
   const double scale = std::cbrt(vol / ell_vol);
   m.equivalent_semi_axes_m = {scale * ax[0], scale * ax[1], scale * ax[2]};
   *out = m;
   return true;
 }
 
-bool ApproximateMesh(const std::vector<Triangle>& triangles, int n_spheres,
-                     MeshApproximation* out, std::string* error) {
+bool ApproximateMesh(const std::vector<Triangle>& triangles, int n_spheres, MeshApproximation* out,
+                     std::string* error) {
   MeshApproximation r;
   if (!ComputeMeshMassProperties(triangles, 1.0, &r.mesh, error)) return false;
   if (!ApproximateEllipsoid(r.mesh.equivalent_semi_axes_m, n_spheres, &r.shape, error)) {

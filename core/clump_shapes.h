@@ -16,11 +16,10 @@
 //   s.volume_error;  // ~1e-13; s.aspect_ratio_error: relative error of L/S
 //   ClumpTemplate t;
 //   BuildClumpTemplate(s.spheres, 2500.0, {}, &t, &err);
+#include <Eigen/Dense>
 #include <array>
 #include <string>
 #include <vector>
-
-#include <Eigen/Dense>
 
 #include "core/clump_template.h"
 #include "core/quaternion.h"
@@ -88,7 +87,7 @@ struct MeshApproximation {
 };
 
 // STL particle shape → n spheres: mesh mass properties, equivalent ellipsoid, ApproximateEllipsoid.
-bool ApproximateMesh(const std::vector<Triangle>& triangles, int n_spheres,
-                     MeshApproximation* out, std::string* error);
+bool ApproximateMesh(const std::vector<Triangle>& triangles, int n_spheres, MeshApproximation* out,
+                     std::string* error);
 
 }  // namespace demcal::core

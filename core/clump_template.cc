@@ -83,7 +83,8 @@ Moments ExactSum(const std::vector<ClumpSphere>& s) {
     m.volume += v;
     m.first += v * d;
     // ∫ over a ball of (x−c)(x−c)ᵀ = V r²/5 𝟙.
-    m.second += v * (d * d.transpose() + sp.radius_m * sp.radius_m / 5.0 * Eigen::Matrix3d::Identity());
+    m.second +=
+        v * (d * d.transpose() + sp.radius_m * sp.radius_m / 5.0 * Eigen::Matrix3d::Identity());
   }
   return m;
 }
@@ -104,7 +105,8 @@ Moments Collinear(const std::vector<ClumpSphere>& s, const Vec3& origin, const V
   for (size_t i = 0; i < n; ++i) {
     for (size_t j = i + 1; j < n; ++j) {
       if (pos[i] == pos[j]) continue;
-      breaks.push_back((r2[i] - r2[j] + pos[j] * pos[j] - pos[i] * pos[i]) / (2 * (pos[j] - pos[i])));
+      breaks.push_back((r2[i] - r2[j] + pos[j] * pos[j] - pos[i] * pos[i]) /
+                       (2 * (pos[j] - pos[i])));
     }
   }
   std::sort(breaks.begin(), breaks.end());
@@ -272,11 +274,16 @@ Moments MonteCarlo(const std::vector<ClumpSphere>& s, const MassPropertiesOption
 
 const char* MassMethodName(MassMethod method) {
   switch (method) {
-    case MassMethod::kAuto: return "auto";
-    case MassMethod::kExactSum: return "exact_sum";
-    case MassMethod::kCollinear: return "collinear";
-    case MassMethod::kVoxel: return "voxel";
-    case MassMethod::kMonteCarlo: return "monte_carlo";
+    case MassMethod::kAuto:
+      return "auto";
+    case MassMethod::kExactSum:
+      return "exact_sum";
+    case MassMethod::kCollinear:
+      return "collinear";
+    case MassMethod::kVoxel:
+      return "voxel";
+    case MassMethod::kMonteCarlo:
+      return "monte_carlo";
   }
   return "unknown";
 }
@@ -288,8 +295,7 @@ bool MassPropertiesOptions::IsValid(std::string* error) const {
   } else if (max_voxel_columns < 1) {
     os << "MassPropertiesOptions.max_voxel_columns = " << max_voxel_columns << " must be >= 1";
   } else if (monte_carlo_points < 1000) {
-    os << "MassPropertiesOptions.monte_carlo_points = " << monte_carlo_points
-       << " must be >= 1000";
+    os << "MassPropertiesOptions.monte_carlo_points = " << monte_carlo_points << " must be >= 1000";
   } else {
     return true;
   }
@@ -315,7 +321,9 @@ bool ComputeMassProperties(const std::vector<ClumpSphere>& spheres, double densi
   }
   Moments m;
   switch (method) {
-    case MassMethod::kExactSum: m = ExactSum(spheres); break;
+    case MassMethod::kExactSum:
+      m = ExactSum(spheres);
+      break;
     case MassMethod::kCollinear:
       if (!collinear) return Fail(error, "clump: method collinear needs collinear centres");
       m = Collinear(spheres, origin, axis);
@@ -323,8 +331,11 @@ bool ComputeMassProperties(const std::vector<ClumpSphere>& spheres, double densi
     case MassMethod::kVoxel:
       if (!Voxel(spheres, options, &m, error)) return false;
       break;
-    case MassMethod::kMonteCarlo: m = MonteCarlo(spheres, options); break;
-    case MassMethod::kAuto: break;  // resolved above
+    case MassMethod::kMonteCarlo:
+      m = MonteCarlo(spheres, options);
+      break;
+    case MassMethod::kAuto:
+      break;  // resolved above
   }
   if (!(m.volume > 0)) {
     return Fail(error, std::string("clump: integrated volume is zero (method ") +
@@ -336,8 +347,7 @@ bool ComputeMassProperties(const std::vector<ClumpSphere>& spheres, double densi
   out->volume_m3 = m.volume;
   out->mass_kg = density_kg_m3 * m.volume;
   out->centre_of_mass_m = m.reference + Vec3{c.x(), c.y(), c.z()};
-  out->inertia_kg_m2 =
-      density_kg_m3 * (second_c.trace() * Eigen::Matrix3d::Identity() - second_c);
+  out->inertia_kg_m2 = density_kg_m3 * (second_c.trace() * Eigen::Matrix3d::Identity() - second_c);
   out->method_used = method;
   out->samples = m.samples;
   return true;

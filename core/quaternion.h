@@ -46,15 +46,16 @@ struct Quaternion {
 
 // Hamilton product a ⊗ b (apply b first, then a).
 constexpr Quaternion operator*(const Quaternion& a, const Quaternion& b) {
-  return {a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z,
-          a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
-          a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
-          a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
+  return {
+      a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z, a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+      a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
 }
 
 constexpr Quaternion Conjugate(const Quaternion& q) { return {q.w, -q.x, -q.y, -q.z}; }
 
-constexpr double Norm2(const Quaternion& q) { return q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z; }
+constexpr double Norm2(const Quaternion& q) {
+  return q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z;
+}
 inline double Norm(const Quaternion& q) { return std::sqrt(Norm2(q)); }
 
 // q / |q|; |q| must be non-zero.

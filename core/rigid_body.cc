@@ -53,8 +53,7 @@ void Drift(RigidState& state, const Vec3& principal_inertia_kg_m2, double dt_s,
     case DriftScheme::kRichardson: {
       const Quaternion full = Turn(w0, dt_s, q);
       const Quaternion half = Turn(w0, 0.5 * dt_s, q);
-      const Quaternion two_halves =
-          Turn(Omega(half, l, principal_inertia_kg_m2), 0.5 * dt_s, half);
+      const Quaternion two_halves = Turn(Omega(half, l, principal_inertia_kg_m2), 0.5 * dt_s, half);
       next = {2 * two_halves.w - full.w, 2 * two_halves.x - full.x, 2 * two_halves.y - full.y,
               2 * two_halves.z - full.z};
       break;

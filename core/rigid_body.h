@@ -29,7 +29,7 @@
 namespace demcal::core {
 
 struct RigidState {
-  Quaternion orientation;        // body (principal frame) → space
+  Quaternion orientation;         // body (principal frame) → space
   Vec3 angular_momentum_kg_m2_s;  // L, space frame
 };
 
