@@ -161,3 +161,20 @@ TEST_CASE("the simulate subcommand registers its arguments with the CLI", "[unit
   CHECK(simulate.app->get_option("--out")->as<std::string>() == "o");
   CHECK(simulate.app->get_option("scene")->as<std::string>() == "s.json");
 }
+
+TEST_CASE("the pour_box example places its 3000 spheres and steps without failure", "[unit]") {
+  // The full example (0.5 s) takes ~10 s on 2 cores; its first 2 ms check the setup.
+  json scene = json::parse(std::ifstream(RepoRoot() / "examples/pour_box.json"));
+  scene["time"]["duration_s"] = 0.002;
+  ScratchDir dir("simulate_pour_box");
+  SimulateOptions o;
+  o.scene_path = WriteScene(dir, scene);
+  o.out_dir = dir.str("out");
+  o.quiet = true;
+  std::ostringstream log;
+  REQUIRE(RunSimulate(o, log) == kExitOk);
+  const json s = ReadJson(dir.str("out/summary.json"));
+  CHECK(s["particles"] == 3000);
+  CHECK(s["termination"] == "ok");
+  CHECK(CountLines(dir.str("out/final_particles.csv")) == 1 + 3000);
+}
