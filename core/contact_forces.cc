@@ -94,7 +94,7 @@ void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
   const uint32_t begin = chunk_[c], end = chunk_[c + 1];
   const uint32_t first_own_entry = list.RowBegin(begin);
   for (uint32_t i = begin; i < end; ++i) {
-    Vec3 f = gravity * p.mass_kg[i];
+    Vec3 f = p.body[i] < 0 ? gravity * p.mass_kg[i] : Vec3{};  // clumps get gravity whole
     Vec3 t;
     for (uint32_t r = list.ReverseBegin(i); r < list.ReverseEnd(i); ++r) {
       const uint32_t k = list.ReverseEntry(r);

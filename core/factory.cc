@@ -27,7 +27,7 @@ double ParticleFactory::BatchInterval(const FactorySpec& spec, double gravity_m_
   return (-v + std::sqrt(v * v + 2 * g * h)) / g;
 }
 
-int64_t ParticleFactory::Update(double t, Particles& particles, int64_t& next_id) {
+int64_t ParticleFactory::Update(double t, ParticleSystem& system) {
   int64_t added = 0;
   while (t >= next_batch_s_ && next_batch_s_ < spec_.end_s &&
          report_.inserted_mass_kg < spec_.total_mass_kg) {
@@ -42,7 +42,7 @@ int64_t ParticleFactory::Update(double t, Particles& particles, int64_t& next_id
     q.mixture = mixture_;
     q.max_mass_kg = owed_kg_;
     q.velocity_m_s = spec_.velocity_m_s;
-    const InsertionResult r = InsertRandomNonOverlapping(q, rng_, particles, next_id);
+    const InsertionResult r = InsertRandomNonOverlapping(q, rng_, system);
     owed_kg_ -= r.mass_kg;  // may go slightly negative: the last particle overshoots
     report_.inserted_mass_kg += r.mass_kg;
     report_.particles += r.count;

@@ -13,7 +13,7 @@
 
 #include "core/insertion.h"
 #include "core/material.h"
-#include "core/particles.h"
+#include "core/particle_system.h"
 #include "core/random.h"
 
 namespace demcal::core {
@@ -49,7 +49,7 @@ class ParticleFactory {
                   uint64_t seed);
 
   // Inserts the batches due at time t (s); returns the number of particles added.
-  int64_t Update(double t, Particles& particles, int64_t& next_id);
+  int64_t Update(double t, ParticleSystem& system);
 
   // The batch interval used for `spec` under gravity of magnitude g (m/s²).
   static double BatchInterval(const FactorySpec& spec, double gravity_m_s2);

@@ -80,9 +80,11 @@ const SpeciesDraw& DrawSpecies(const std::vector<SpeciesDraw>& mixture, Rng& rng
 }  // namespace
 
 InsertionResult InsertRandomNonOverlapping(const InsertionRequest& q, Rng& rng,
-                                           Particles& particles, int64_t& next_id) {
+                                           ParticleSystem& system) {
+  Particles& particles = system.spheres;
   double max_d = 0;
-  for (const SpeciesDraw& d : q.mixture) max_d = std::max(max_d, d.size->MaxDiameter());
+  for (const SpeciesDraw& d : q.mixture)
+    max_d = std::max(max_d, 2 * system.EnclosingRadius(d.species, d.size->MaxDiameter()));
   for (double r : particles.radius_m) max_d = std::max(max_d, 2 * r);
   // Grid over the region grown by one diameter so particles already near it are seen too.
   const Vec3 grow{max_d, max_d, max_d};
@@ -92,16 +94,24 @@ InsertionResult InsertRandomNonOverlapping(const InsertionRequest& q, Rng& rng,
   InsertionResult result;
   while (result.count < q.max_count && result.mass_kg < q.max_mass_kg) {
     const SpeciesDraw& draw = DrawSpecies(q.mixture, rng);
-    const double r = 0.5 * draw.size->Sample(rng.Uniform());
+    const double d = draw.size->Sample(rng.Uniform());
+    const double r = system.EnclosingRadius(draw.species, d);
     bool placed = false;
     for (int attempt = 0; attempt < q.max_attempts_per_particle && !placed; ++attempt) {
       Vec3 x;
       if (!q.region.Sample(r, rng, &x)) break;
       if (!grid.IsFree(x, r, particles)) continue;
-      const size_t slot = particles.Add(next_id++, draw.species, draw.material, r,
-                                        draw.density_kg_m3, x, q.velocity_m_s, {});
-      grid.Add(x, static_cast<uint32_t>(slot));
-      result.mass_kg += particles.mass_kg[slot];
+      const Quaternion orientation =
+          system.IsClump(draw.species)
+              ? UniformRandomOrientation(rng.Uniform(), rng.Uniform(), rng.Uniform())
+              : Quaternion{};
+      const size_t first = particles.Size();
+      const size_t clumps_before = system.clumps.Size();
+      system.Add(draw.species, draw.material, draw.density_kg_m3, d, x, q.velocity_m_s, {},
+                 orientation);
+      for (size_t s = first; s < particles.Size(); ++s) grid.Add(particles.position_m[s], s);
+      result.mass_kg += system.clumps.Size() > clumps_before ? system.clumps.mass_kg.back()
+                                                              : particles.mass_kg[first];
       ++result.count;
       placed = true;
     }

@@ -9,7 +9,7 @@
 
 #include "core/insertion_region.h"
 #include "core/material.h"
-#include "core/particles.h"
+#include "core/particle_system.h"
 #include "core/random.h"
 #include "core/vec3.h"
 
@@ -39,10 +39,10 @@ struct InsertionResult {
   bool region_full = false;  // a particle could not be placed within its attempts
 };
 
-// Appends particles until max_count or max_mass_kg is reached or the region is full, giving
-// them ids from `next_id`.
+// Appends particles (spheres or clumps, by species, clumps randomly oriented) until max_count
+// or max_mass_kg is reached or the region is full. A clump is placed by its enclosing sphere.
 InsertionResult InsertRandomNonOverlapping(const InsertionRequest& request, Rng& rng,
-                                           Particles& particles, int64_t& next_id);
+                                           ParticleSystem& system);
 
 // Number weights that realise the given mass fractions (w_s / mean particle mass_s).
 std::vector<double> NumberWeightsFromMassFractions(const std::vector<double>& mass_fractions,

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "core/vec3.h"
+
 namespace demcal::core {
 
 struct Material {
@@ -37,10 +39,18 @@ struct SizeDistribution {
   double MeanVolume() const;
 };
 
+// A member sphere of a clumped-sphere particle shape, in any length unit and frame: the
+// engine normalises the shape to unit equivalent-volume diameter, so `size` sets the scale.
+struct ShapeSphere {
+  Vec3 centre;
+  double radius = 0;
+};
+
 struct Species {
   std::string name;
   int material = 0;  // index into Scene::materials
-  SizeDistribution size;
+  SizeDistribution size;  // of the equivalent-volume diameter for clumps
+  std::vector<ShapeSphere> clump_shape;  // empty: a plain sphere
 };
 
 }  // namespace demcal::core

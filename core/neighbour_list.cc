@@ -63,8 +63,10 @@ void NeighbourList::BinParticles(const Grid& grid, const std::vector<Vec3>& x) {
 
 template <class Visit>
 void NeighbourList::ForEachCandidate(const Grid& grid, size_t i, const std::vector<Vec3>& x,
-                                     const std::vector<double>& r, double skin,
+                                     const std::vector<double>& r,
+                                     const std::vector<int>* body, double skin,
                                      Visit&& visit) const {
+  const int own_body = body ? (*body)[i] : -1;
   const int c = cell_of_particle_[i];
   const int ix = c % grid.nx, iy = (c / grid.nx) % grid.ny, iz = c / (grid.nx * grid.ny);
   for (int dz = -1; dz <= 1; ++dz) {
@@ -79,7 +81,7 @@ void NeighbourList::ForEachCandidate(const Grid& grid, size_t i, const std::vect
         const int cell = (z * grid.ny + y) * grid.nx + xx;
         for (uint32_t s = cell_start_[cell]; s < cell_start_[cell + 1]; ++s) {
           const uint32_t j = cell_particles_[s];
-          if (j <= i) continue;
+          if (j <= i || (own_body >= 0 && (*body)[j] == own_body)) continue;
           const double reach = r[i] + r[j] + skin;
           if (Norm2(x[i] - x[j]) < reach * reach) visit(j);
         }
@@ -89,7 +91,7 @@ void NeighbourList::ForEachCandidate(const Grid& grid, size_t i, const std::vect
 }
 
 void NeighbourList::Build(const Settings& s, const std::vector<Vec3>& x,
-                          const std::vector<double>& r) {
+                          const std::vector<double>& r, const std::vector<int>* body) {
   const size_t n = x.size();
   const Grid grid = MakeGrid(s, x);
   BinParticles(grid, x);
@@ -99,7 +101,7 @@ void NeighbourList::Build(const Settings& s, const std::vector<Vec3>& x,
   tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& range) {
     for (size_t i = range.begin(); i != range.end(); ++i) {
       uint32_t count = 0;
-      ForEachCandidate(grid, i, x, r, s.skin_m, [&](uint32_t) { ++count; });
+      ForEachCandidate(grid, i, x, r, body, s.skin_m, [&](uint32_t) { ++count; });
       row_start_[i + 1] = count;
     }
   });
@@ -108,7 +110,7 @@ void NeighbourList::Build(const Settings& s, const std::vector<Vec3>& x,
   tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& range) {
     for (size_t i = range.begin(); i != range.end(); ++i) {
       uint32_t k = row_start_[i];
-      ForEachCandidate(grid, i, x, r, s.skin_m, [&](uint32_t j) { partner_[k++] = j; });
+      ForEachCandidate(grid, i, x, r, body, s.skin_m, [&](uint32_t j) { partner_[k++] = j; });
       std::sort(partner_.begin() + row_start_[i], partner_.begin() + row_start_[i + 1]);
     }
   });

@@ -22,8 +22,10 @@ class NeighbourList {
     double max_radius_m = 0;
   };
 
+  // `body` (optional): spheres with the same non-negative body index (members of one clump)
+  // are never paired.
   void Build(const Settings& settings, const std::vector<Vec3>& positions,
-             const std::vector<double>& radii);
+             const std::vector<double>& radii, const std::vector<int>* body = nullptr);
   bool NeedsRebuild(const std::vector<Vec3>& positions) const;
 
   size_t RowsCount() const { return row_start_.size() - 1; }
@@ -53,7 +55,8 @@ class NeighbourList {
   void BinParticles(const Grid& grid, const std::vector<Vec3>& positions);
   template <class Visit>
   void ForEachCandidate(const Grid& grid, size_t i, const std::vector<Vec3>& x,
-                        const std::vector<double>& r, double skin, Visit&& visit) const;
+                        const std::vector<double>& r, const std::vector<int>* body, double skin,
+                        Visit&& visit) const;
 
   std::vector<uint32_t> row_start_{0};
   std::vector<uint32_t> partner_;

@@ -19,6 +19,7 @@ size_t Particles::Add(int64_t particle_id, int species_index, int material_index
   inv_inertia.push_back(1.0 / (0.4 * mass * radius * radius));
   species.push_back(species_index);
   material.push_back(material_index);
+  body.push_back(-1);
   id.push_back(particle_id);
   return position_m.size() - 1;
 }
@@ -44,12 +45,14 @@ void Particles::Permute(const std::vector<uint32_t>& order) {
   ApplyOrder(inv_inertia, order);
   ApplyOrder(species, order);
   ApplyOrder(material, order);
+  ApplyOrder(body, order);
   ApplyOrder(id, order);
 }
 
 double Particles::KineticEnergy() const {
   double e = 0;
   for (size_t i = 0; i < Size(); ++i) {
+    if (body[i] >= 0) continue;
     e += 0.5 * mass_kg[i] * Norm2(velocity_m_s[i]) +
          0.5 / inv_inertia[i] * Norm2(angular_velocity_rad_s[i]);
   }

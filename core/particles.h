@@ -23,6 +23,7 @@ struct Particles {
   std::vector<double> inv_inertia;  // 1/(kg m²), solid sphere I = (2/5) m R²
   std::vector<int> species;
   std::vector<int> material;
+  std::vector<int> body;  // clump index of a clump member, −1 for a free sphere
   std::vector<int64_t> id;
 
   size_t Size() const { return position_m.size(); }
@@ -34,7 +35,8 @@ struct Particles {
   // Reorders every per-particle array so that new slot k holds old slot order[k].
   void Permute(const std::vector<uint32_t>& order);
 
-  double KineticEnergy() const;  // translational + rotational, J
+  // Translational + rotational kinetic energy of the free spheres (clump members excluded), J.
+  double KineticEnergy() const;
 };
 
 }  // namespace demcal::core

@@ -15,6 +15,7 @@
 #include "core/factory.h"
 #include "core/interaction_table.h"
 #include "core/material.h"
+#include "core/quaternion.h"
 #include "core/vec3.h"
 #include "core/walls.h"
 
@@ -27,6 +28,7 @@ struct ParticleSpec {
   Vec3 velocity_m_s;
   Vec3 angular_velocity_rad_s;
   double diameter_m = 0;  // 0: draw from the species' size distribution
+  Quaternion orientation; // of a clump (principal frame → space); identity by default
 };
 
 // Fill an axis-aligned box region at t = 0 with `count` non-overlapping particles of a species

@@ -57,6 +57,7 @@ bool Simulation::Initialize(std::string* error) {
   MakeRollingModel(scene_.rolling, &rolling_);
   dt_ = scene_.time.timestep_s > 0 ? scene_.time.timestep_s
                                    : scene_.time.rayleigh_fraction * RayleighTime(scene_);
+  if (!system_.SetSpecies(scene_.species, error)) return false;
   std::string placement_error;
   PlaceInitialParticles(&placement_error);
   if (!placement_error.empty()) {
@@ -70,20 +71,18 @@ bool Simulation::Initialize(std::string* error) {
                     0.5 * scene_.MaxDiameter()};
   arena_->execute([&] {
     RebuildNeighbours(true);
-    forces_.Compute(particles_, list_, scene_.walls, table_, rolling_, adhesive_,
-                    scene_.gravity_m_s2, dt_);
+    ComputeForces();
   });
   CreateFactories();
-  energy_budget_J_ = particles_.KineticEnergy() + GravitationalPotential();
-  // Largest energy gravity can release: every particle dropping to the domain's lowest corner.
   const Vec3 g = scene_.gravity_m_s2;
+  energy_budget_J_ = system_.KineticEnergy() + system_.GravitationalPotential(g);
+  // Largest energy gravity can release: every particle dropping to the domain's lowest corner.
   lowest_point_ = {g.x > 0 ? scene_.domain_max_m.x : scene_.domain_min_m.x,
                    g.y > 0 ? scene_.domain_max_m.y : scene_.domain_min_m.y,
                    g.z > 0 ? scene_.domain_max_m.z : scene_.domain_min_m.z};
-  energy_scale_J_ = particles_.KineticEnergy() +
-                    particles_.Size() * AdhesiveEnergyBoundPerParticle(scene_, table_);
-  for (size_t i = 0; i < particles_.Size(); ++i)
-    energy_scale_J_ += particles_.mass_kg[i] * Dot(g, lowest_point_ - particles_.position_m[i]);
+  energy_scale_J_ = system_.KineticEnergy() +
+                    system_.spheres.Size() * AdhesiveEnergyBoundPerParticle(scene_, table_) +
+                    system_.ReleasableGravitationalEnergy(g, lowest_point_);
   initialized_ = true;
   return true;
 }
@@ -93,9 +92,8 @@ void Simulation::PlaceInitialParticles(std::string* error) {
   for (const ParticleSpec& p : scene_.particles) {
     const Species& sp = scene_.species[p.species];
     const double d = p.diameter_m > 0 ? p.diameter_m : sp.size.Sample(rng.Uniform());
-    particles_.Add(next_id_++, p.species, sp.material, 0.5 * d,
-                   scene_.materials[sp.material].density_kg_m3, p.position_m, p.velocity_m_s,
-                   p.angular_velocity_rad_s);
+    system_.Add(p.species, sp.material, scene_.materials[sp.material].density_kg_m3, d,
+                p.position_m, p.velocity_m_s, p.angular_velocity_rad_s, p.orientation);
   }
   for (size_t f = 0; f < scene_.fills.size(); ++f) {
     const FillSpec& fill = scene_.fills[f];
@@ -106,7 +104,7 @@ void Simulation::PlaceInitialParticles(std::string* error) {
     q.mixture = {{fill.species, sp.material, scene_.materials[sp.material].density_kg_m3, &sp.size, 1}};
     q.max_count = fill.count;
     q.velocity_m_s = fill.velocity_m_s;
-    const InsertionResult placed = InsertRandomNonOverlapping(q, fill_rng, particles_, next_id_);
+    const InsertionResult placed = InsertRandomNonOverlapping(q, fill_rng, system_);
     if (placed.count < fill.count) {
       std::ostringstream os;
       os << "fills[" << f << "]: placed only " << placed.count << " of " << fill.count
@@ -134,22 +132,20 @@ void Simulation::CreateFactories() {
 }
 
 bool Simulation::InsertFromFactories() {
-  const size_t first = particles_.Size();
-  for (ParticleFactory& factory : factories_) factory.Update(time_s_, particles_, next_id_);
-  if (particles_.Size() == first) return false;
-  AccountInsertedEnergy(first);
+  const size_t first_sphere = system_.spheres.Size(), first_clump = system_.clumps.Size();
+  const double potential_before = system_.GravitationalPotential(scene_.gravity_m_s2);
+  const double releasable_before =
+      system_.ReleasableGravitationalEnergy(scene_.gravity_m_s2, lowest_point_);
+  for (ParticleFactory& factory : factories_) factory.Update(time_s_, system_);
+  if (system_.spheres.Size() == first_sphere) return false;
+  // The newcomers bring kinetic and potential energy (and adhesion) into the budget.
+  const double kinetic = system_.KineticEnergySince(first_sphere, first_clump);
+  energy_budget_J_ += kinetic + system_.GravitationalPotential(scene_.gravity_m_s2) - potential_before;
+  energy_scale_J_ += kinetic +
+                     (system_.spheres.Size() - first_sphere) * AdhesiveEnergyBoundPerParticle(scene_, table_) +
+                     system_.ReleasableGravitationalEnergy(scene_.gravity_m_s2, lowest_point_) -
+                     releasable_before;
   return true;
-}
-
-void Simulation::AccountInsertedEnergy(size_t first) {
-  const Vec3 g = scene_.gravity_m_s2;
-  const double adhesion = AdhesiveEnergyBoundPerParticle(scene_, table_);
-  for (size_t i = first; i < particles_.Size(); ++i) {
-    const double m = particles_.mass_kg[i];
-    const double kinetic = 0.5 * m * Norm2(particles_.velocity_m_s[i]);
-    energy_budget_J_ += kinetic - m * Dot(g, particles_.position_m[i]);
-    energy_scale_J_ += kinetic + adhesion + m * Dot(g, lowest_point_ - particles_.position_m[i]);
-  }
 }
 
 std::vector<FactoryReport> Simulation::FactoryReports() const {
@@ -163,93 +159,29 @@ void Simulation::RebuildNeighbours(bool allow_reorder) {
   std::vector<uint32_t> order;
   const bool reorder = allow_reorder && options_.reorder_every_rebuilds > 0 &&
                        rebuilds_since_reorder_ % options_.reorder_every_rebuilds == 0;
+  Particles& p = system_.spheres;
   if (reorder) {
-    order = spare_list_.CellOrder(list_settings_, particles_.position_m);
-    particles_.Permute(order);
+    order = spare_list_.CellOrder(list_settings_, p.position_m);
+    system_.Permute(order);
   }
   ++rebuilds_since_reorder_;
-  list_.Build(list_settings_, particles_.position_m, particles_.radius_m);
-  forces_.Rebuild(particles_, spare_list_, list_, order, scene_.walls, list_settings_.skin_m);
+  list_.Build(list_settings_, p.position_m, p.radius_m, system_.clumps.Size() ? &p.body : nullptr);
+  forces_.Rebuild(p, spare_list_, list_, order, scene_.walls, list_settings_.skin_m);
+}
+
+void Simulation::ComputeForces() {
+  forces_.Compute(system_.spheres, list_, scene_.walls, table_, rolling_, adhesive_,
+                  scene_.gravity_m_s2, dt_);
 }
 
 void Simulation::Step() {
-  const size_t n = particles_.Size();
-  const double half = 0.5 * dt_;
-  Particles& p = particles_;
-  auto kick = [&](size_t i) {
-    p.velocity_m_s[i] += p.force_N[i] * (half * p.inv_mass[i]);
-    p.angular_velocity_rad_s[i] += p.torque_N_m[i] * (half * p.inv_inertia[i]);
-  };
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1024), [&](const auto& range) {
-    for (size_t i = range.begin(); i != range.end(); ++i) {
-      kick(i);
-      p.position_m[i] += p.velocity_m_s[i] * dt_;
-    }
-  });
+  system_.KickDrift(dt_);
   const bool inserted = !factories_.empty() && InsertFromFactories();
-  if (inserted || list_.NeedsRebuild(p.position_m)) RebuildNeighbours(true);
-  forces_.Compute(p, list_, scene_.walls, table_, rolling_, adhesive_, scene_.gravity_m_s2, dt_);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, p.Size(), 1024), [&](const auto& range) {
-    for (size_t i = range.begin(); i != range.end(); ++i) kick(i);
-  });
+  if (inserted || list_.NeedsRebuild(system_.spheres.position_m)) RebuildNeighbours(true);
+  ComputeForces();
+  system_.ReduceAndKick(scene_.gravity_m_s2, dt_);
   time_s_ += dt_;
   ++steps_;
-}
-
-double Simulation::GravitationalPotential() const {
-  double e = 0;
-  for (size_t i = 0; i < particles_.Size(); ++i)
-    e -= particles_.mass_kg[i] * Dot(scene_.gravity_m_s2, particles_.position_m[i]);
-  return e;
-}
-
-Termination Simulation::Check(std::string* message) const {
-  const Particles& p = particles_;
-  const Vec3 lo = scene_.domain_min_m, hi = scene_.domain_max_m;
-  struct Found { int64_t non_finite = -1, outside = -1; };
-  const Found found = tbb::parallel_reduce(
-      tbb::blocked_range<size_t>(0, p.Size()), Found{},
-      [&](const auto& range, Found f) {
-        for (size_t i = range.begin(); i != range.end(); ++i) {
-          const Vec3& x = p.position_m[i];
-          if (f.non_finite < 0 && (!IsFinite(x) || !IsFinite(p.velocity_m_s[i]) ||
-                                   !IsFinite(p.angular_velocity_rad_s[i])))
-            f.non_finite = static_cast<int64_t>(i);
-          if (f.outside < 0 && (x.x < lo.x || x.y < lo.y || x.z < lo.z || x.x > hi.x ||
-                                x.y > hi.y || x.z > hi.z))
-            f.outside = static_cast<int64_t>(i);
-        }
-        return f;
-      },
-      [](Found a, Found b) {
-        if (a.non_finite < 0 || (b.non_finite >= 0 && b.non_finite < a.non_finite)) a.non_finite = b.non_finite;
-        if (a.outside < 0 || (b.outside >= 0 && b.outside < a.outside)) a.outside = b.outside;
-        return a;
-      });
-  std::ostringstream os;
-  if (found.non_finite >= 0) {
-    os << "particle id " << p.id[found.non_finite] << " has a non-finite position or velocity at t = "
-       << time_s_ << " s (time step " << dt_ << " s too large, or invalid contact parameters)";
-    *message = os.str();
-    return Termination::kNonFinite;
-  }
-  if (found.outside >= 0) {
-    const Vec3& x = p.position_m[found.outside];
-    os << "particle id " << p.id[found.outside] << " left the domain at t = " << time_s_
-       << " s, position (" << x.x << ", " << x.y << ", " << x.z
-       << ") m; close the container with walls or enlarge 'domain'";
-    *message = os.str();
-    return Termination::kParticlesLost;
-  }
-  const double energy = p.KineticEnergy() + GravitationalPotential();
-  if (energy - energy_budget_J_ > 0.5 * energy_scale_J_ + 1e-30) {
-    os << "mechanical energy grew from " << energy_budget_J_ << " J to " << energy
-       << " J at t = " << time_s_ << " s with no energy input: the integration is unstable "
-       << "(reduce the time step; it is " << dt_ << " s)";
-    *message = os.str();
-    return Termination::kEnergyBlowUp;
-  }
-  return Termination::kOk;
 }
 
 RunSummary Simulation::Run(double duration_s) { return Run(duration_s, Observer{}); }
@@ -291,9 +223,9 @@ RunSummary Simulation::Run(double duration_s, const Observer& observer) {
   s.steps = steps_;
   s.simulated_time_s = time_s_;
   s.wall_time_s = elapsed();
-  s.particles = static_cast<int64_t>(particles_.Size());
+  s.particles = static_cast<int64_t>(system_.BodyCount());
   s.timestep_s = dt_;
-  s.final_kinetic_energy_J = particles_.KineticEnergy();
+  s.final_kinetic_energy_J = system_.KineticEnergy();
   s.neighbour_rebuilds = list_.Builds() + spare_list_.Builds();
   return s;
 }

@@ -22,7 +22,7 @@
 #include "core/contact_forces.h"
 #include "core/factory.h"
 #include "core/neighbour_list.h"
-#include "core/particles.h"
+#include "core/particle_system.h"
 #include "core/run_summary.h"
 #include "core/scene.h"
 
@@ -54,12 +54,14 @@ class Simulation {
   RunSummary Run(double duration_s, const Observer& observer);
 
   const Scene& scene() const { return scene_; }
-  const Particles& particles() const { return particles_; }
-  Particles& mutable_particles() { return particles_; }
+  // All spheres (free ones and clump members); clumps themselves are in system().clumps.
+  const Particles& particles() const { return system_.spheres; }
+  Particles& mutable_particles() { return system_.spheres; }
+  const ParticleSystem& system() const { return system_; }
   double time_s() const { return time_s_; }
   int64_t steps() const { return steps_; }
   double timestep_s() const { return dt_; }
-  double KineticEnergy() const { return particles_.KineticEnergy(); }
+  double KineticEnergy() const { return system_.KineticEnergy(); }
   size_t ActiveContacts() const { return forces_.ActiveContacts(); }
   const NeighbourList& neighbours() const { return list_; }
   std::vector<FactoryReport> FactoryReports() const;
@@ -69,11 +71,9 @@ class Simulation {
   void CreateFactories();
   // Runs the factories due now; true if particles were added.
   bool InsertFromFactories();
-  // Adds the kinetic and potential energy of particle slots [first, end) to the energy budget.
-  void AccountInsertedEnergy(size_t first);
   void Step();
+  void ComputeForces();
   void RebuildNeighbours(bool allow_reorder);
-  double GravitationalPotential() const;
   // Returns kOk, or the failure found by the periodic checks (and fills message).
   Termination Check(std::string* message) const;
 
@@ -82,7 +82,7 @@ class Simulation {
   std::unique_ptr<tbb::task_arena> arena_;
   InteractionTable table_;
   RollingModel rolling_;
-  Particles particles_;
+  ParticleSystem system_;
   NeighbourList list_;
   NeighbourList spare_list_;  // the previous list, kept for history transfer and its buffers
   NeighbourList::Settings list_settings_;
@@ -91,7 +91,6 @@ class Simulation {
   double dt_ = 0;
   double time_s_ = 0;
   int64_t steps_ = 0;
-  int64_t next_id_ = 0;
   uint64_t rebuilds_since_reorder_ = 0;
   double energy_budget_J_ = 0;   // initial KE + PE (+ inserted energy)
   double energy_scale_J_ = 0;    // energy that gravity and the initial state can release

@@ -1,0 +1,135 @@
+#include "core/particle_system.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace demcal::core {
+
+bool ParticleSystem::SetSpecies(const std::vector<Species>& species, std::string* error) {
+  shapes.assign(species.size(), ClumpTemplate{});
+  for (size_t s = 0; s < species.size(); ++s) {
+    if (species[s].clump_shape.empty()) continue;
+    std::vector<ClumpSphere> members;
+    for (const ShapeSphere& m : species[s].clump_shape) members.push_back({m.centre, m.radius});
+    ClumpTemplate raw;
+    std::string why;
+    if (!BuildClumpTemplate(members, 1.0, {}, &raw, &why)) {
+      if (error) *error = "field 'species[" + std::to_string(s) + "].clump': " + why;
+      return false;
+    }
+    // Rescale to unit equivalent-volume diameter (volume π/6, unit density).
+    const double k = 1.0 / raw.EquivalentVolumeDiameter();
+    for (ClumpSphere& m : members) m.centre_m *= k, m.radius_m *= k;
+    if (!BuildClumpTemplate(members, 1.0, {}, &shapes[s], &why)) {
+      if (error) *error = "field 'species[" + std::to_string(s) + "].clump': " + why;
+      return false;
+    }
+  }
+  return true;
+}
+
+double ParticleSystem::EnclosingRadius(int species, double d) const {
+  return IsClump(species) ? shapes[species].BoundingRadius() * d : 0.5 * d;
+}
+
+void ParticleSystem::Add(int species, int material, double density, double d, const Vec3& x,
+                         const Vec3& v, const Vec3& omega, const Quaternion& q) {
+  if (!IsClump(species)) {
+    spheres.Add(next_id++, species, material, 0.5 * d, density, x, v, omega);
+    return;
+  }
+  const size_t c = clumps.Add(next_id++, species, material, shapes[species], d, density, x, q, v,
+                              spheres, next_id);
+  clumps.rotation[c] = StateFromAngularVelocity(q, omega, clumps.principal_inertia_kg_m2[c]);
+  clumps.UpdateMembers(c, spheres);
+}
+
+double ParticleSystem::KineticEnergySince(size_t first_sphere, size_t first_clump) const {
+  double e = 0;
+  for (size_t i = first_sphere; i < spheres.Size(); ++i)
+    if (spheres.body[i] < 0)
+      e += 0.5 * spheres.mass_kg[i] * Norm2(spheres.velocity_m_s[i]) +
+           0.5 / spheres.inv_inertia[i] * Norm2(spheres.angular_velocity_rad_s[i]);
+  for (size_t c = first_clump; c < clumps.Size(); ++c) e += clumps.KineticEnergy(c);
+  return e;
+}
+
+double ParticleSystem::KineticEnergy() const { return KineticEnergySince(0, 0); }
+
+double ParticleSystem::GravitationalPotential(const Vec3& g) const {
+  return ReleasableGravitationalEnergy(g, {});  // −Σ m g·x = Σ m g·(0 − x)
+}
+
+double ParticleSystem::ReleasableGravitationalEnergy(const Vec3& g, const Vec3& lowest) const {
+  double e = 0;
+  for (size_t i = 0; i < spheres.Size(); ++i)
+    if (spheres.body[i] < 0) e += spheres.mass_kg[i] * Dot(g, lowest - spheres.position_m[i]);
+  for (size_t c = 0; c < clumps.Size(); ++c)
+    e += clumps.mass_kg[c] * Dot(g, lowest - clumps.position_m[c]);
+  return e;
+}
+
+size_t ParticleSystem::BodyCount() const {
+  return spheres.Size() - clumps.member_slot.size() + clumps.Size();
+}
+
+void ParticleSystem::KickDrift(double dt) {
+  const double half = 0.5 * dt;
+  Particles& p = spheres;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, p.Size(), 1024), [&](const auto& range) {
+    for (size_t i = range.begin(); i != range.end(); ++i) {
+      if (p.body[i] >= 0) continue;  // clump members move with their clump
+      p.velocity_m_s[i] += p.force_N[i] * (half * p.inv_mass[i]);
+      p.angular_velocity_rad_s[i] += p.torque_N_m[i] * (half * p.inv_inertia[i]);
+      p.position_m[i] += p.velocity_m_s[i] * dt;
+    }
+  });
+  Clumps& c = clumps;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, c.Size(), 256), [&](const auto& range) {
+    for (size_t k = range.begin(); k != range.end(); ++k) {
+      c.velocity_m_s[k] += c.force_N[k] * (half / c.mass_kg[k]);
+      HalfKick(c.rotation[k], c.torque_N_m[k], dt);
+      c.position_m[k] += c.velocity_m_s[k] * dt;
+      Drift(c.rotation[k], c.principal_inertia_kg_m2[k], dt);
+      c.UpdateMembers(k, p);
+    }
+  });
+}
+
+void ParticleSystem::ReduceAndKick(const Vec3& gravity, double dt) {
+  const double half = 0.5 * dt;
+  Particles& p = spheres;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, p.Size(), 1024), [&](const auto& range) {
+    for (size_t i = range.begin(); i != range.end(); ++i) {
+      if (p.body[i] >= 0) continue;
+      p.velocity_m_s[i] += p.force_N[i] * (half * p.inv_mass[i]);
+      p.angular_velocity_rad_s[i] += p.torque_N_m[i] * (half * p.inv_inertia[i]);
+    }
+  });
+  Clumps& c = clumps;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, c.Size(), 256), [&](const auto& range) {
+    for (size_t k = range.begin(); k != range.end(); ++k) {
+      c.ReduceForces(k, p, gravity);
+      c.velocity_m_s[k] += c.force_N[k] * (half / c.mass_kg[k]);
+      HalfKick(c.rotation[k], c.torque_N_m[k], dt);
+      c.UpdateMembers(k, p);  // member velocities at the full step, for outputs and energies
+    }
+  });
+}
+
+void ParticleSystem::Permute(const std::vector<uint32_t>& order) {
+  if (order.empty()) return;
+  spheres.Permute(order);
+  clumps.RemapSlots(order);
+}
+
+Quaternion UniformRandomOrientation(double u1, double u2, double u3) {
+  const double a = std::sqrt(1 - u1), b = std::sqrt(u1);
+  const double t1 = 2 * std::numbers::pi * u2, t2 = 2 * std::numbers::pi * u3;
+  return Normalized(Quaternion{b * std::cos(t2), a * std::sin(t1), a * std::cos(t1), b * std::sin(t2)});
+}
+
+}  // namespace demcal::core

@@ -1,0 +1,57 @@
+#pragma once
+// ParticleSystem: every moving body of a simulation — free spheres and clumps (whose member
+// spheres also live in `spheres`, so contacts only ever see spheres) — plus the per-species
+// clump shapes, with the operations that treat both kinds alike: adding a particle of a
+// species, energies, and the velocity-Verlet kick and drift.
+//
+// Thread-safety: the kick/drift functions run TBB loops over disjoint bodies.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/clumps.h"
+#include "core/material.h"
+#include "core/particles.h"
+#include "core/quaternion.h"
+
+namespace demcal::core {
+
+struct ParticleSystem {
+  Particles spheres;
+  Clumps clumps;
+  // Per species: the clump shape at unit equivalent-volume diameter and unit density, or an
+  // empty template (no spheres) for a plain sphere species.
+  std::vector<ClumpTemplate> shapes;
+  int64_t next_id = 0;  // ids are shared by spheres and clump members
+
+  // Builds `shapes` from the species definitions; false with a message naming the species.
+  bool SetSpecies(const std::vector<Species>& species, std::string* error);
+  bool IsClump(int species) const { return !shapes[species].spheres.empty(); }
+  // Radius of the sphere enclosing a particle of the species with (equivalent) diameter d.
+  double EnclosingRadius(int species, double diameter_m) const;
+
+  // Adds one particle (sphere or clump) of a species; `q` orients a clump.
+  void Add(int species, int material, double density_kg_m3, double diameter_m, const Vec3& x,
+           const Vec3& v, const Vec3& omega, const Quaternion& q);
+
+  double KineticEnergy() const;
+  // −Σ m g·x over bodies (clumps at their centre of mass), J.
+  double GravitationalPotential(const Vec3& gravity) const;
+  // Σ m g·(x_low − x): energy released if every body dropped to the point x_low, J.
+  double ReleasableGravitationalEnergy(const Vec3& gravity, const Vec3& lowest) const;
+  // Bodies (free spheres + clumps) from sphere slot `first_sphere` and clump `first_clump` on.
+  double KineticEnergySince(size_t first_sphere, size_t first_clump) const;
+
+  // Velocity Verlet: first half kick and drift (members follow their clumps) ...
+  void KickDrift(double dt);
+  // ... and, after forces, the second half kick (clump forces reduced from their members).
+  void ReduceAndKick(const Vec3& gravity, double dt);
+  // Reorders sphere slots (Particles::Permute) and keeps clump member slots consistent.
+  void Permute(const std::vector<uint32_t>& order);
+  size_t BodyCount() const;
+};
+
+// A uniformly distributed random orientation from three uniform variates (Shoemake 1992).
+Quaternion UniformRandomOrientation(double u1, double u2, double u3);
+
+}  // namespace demcal::core
