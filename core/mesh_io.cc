@@ -41,8 +41,7 @@ void WriteF32(char* p, float v) { WriteU32(p, std::bit_cast<uint32_t>(v)); }
 
 // Text bytes: printable ASCII, whitespace, and bytes >= 0x80 (UTF-8 names in "solid" lines).
 bool IsTextByte(unsigned char c) {
-  return (c >= 0x20 && c != 0x7F) || c == '\t' || c == '\n' || c == '\r' || c == '\v' ||
-         c == '\f';
+  return (c >= 0x20 && c != 0x7F) || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f';
 }
 
 // ASCII exporters sometimes pad with NULs or end with a DOS end-of-file mark (0x1A).
@@ -137,9 +136,9 @@ StlReadResult Finish(StlReadResult r, const StlReadOptions& options, const std::
     kept.push_back(t);
   }
   if (kept.empty()) {
-    return Failure(MeshIoStatus::kAllDegenerate, source,
-                   "all " + std::to_string(r.triangles_in_file) +
-                       " triangles are degenerate (zero area)");
+    return Failure(
+        MeshIoStatus::kAllDegenerate, source,
+        "all " + std::to_string(r.triangles_in_file) + " triangles are degenerate (zero area)");
   }
   if (r.degenerate_dropped > 0) {
     r.warnings.push_back(source + ": dropped " + std::to_string(r.degenerate_dropped) + " of " +
@@ -182,9 +181,9 @@ StlReadResult ParseBinaryChecked(std::string_view bytes, const std::string& sour
   }
   if (bytes.size() > expected) {
     return Failure(MeshIoStatus::kNotStl, source,
-                   "not an STL file: not ASCII STL, and its size (" +
-                       std::to_string(bytes.size()) + " bytes) does not match 84 + 50 x " +
-                       std::to_string(count) + " triangles declared in a binary STL header");
+                   "not an STL file: not ASCII STL, and its size (" + std::to_string(bytes.size()) +
+                       " bytes) does not match 84 + 50 x " + std::to_string(count) +
+                       " triangles declared in a binary STL header");
   }
   StlReadResult r = ParseBinary(bytes, static_cast<uint32_t>(count), source);
   if (r.status == MeshIoStatus::kNonFinite) return r;
@@ -196,25 +195,38 @@ StlReadResult ParseBinaryChecked(std::string_view bytes, const std::string& sour
 
 const char* MeshIoStatusName(MeshIoStatus status) {
   switch (status) {
-    case MeshIoStatus::kOk: return "ok";
-    case MeshIoStatus::kNotRead: return "not_read";
-    case MeshIoStatus::kInvalidOptions: return "invalid_options";
-    case MeshIoStatus::kMissingFile: return "missing_file";
-    case MeshIoStatus::kEmptyFile: return "empty_file";
-    case MeshIoStatus::kTruncated: return "truncated";
-    case MeshIoStatus::kNotStl: return "not_stl";
-    case MeshIoStatus::kMalformed: return "malformed";
-    case MeshIoStatus::kNonFinite: return "non_finite";
-    case MeshIoStatus::kNoTriangles: return "no_triangles";
-    case MeshIoStatus::kAllDegenerate: return "all_degenerate";
-    case MeshIoStatus::kWriteFailed: return "write_failed";
+    case MeshIoStatus::kOk:
+      return "ok";
+    case MeshIoStatus::kNotRead:
+      return "not_read";
+    case MeshIoStatus::kInvalidOptions:
+      return "invalid_options";
+    case MeshIoStatus::kMissingFile:
+      return "missing_file";
+    case MeshIoStatus::kEmptyFile:
+      return "empty_file";
+    case MeshIoStatus::kTruncated:
+      return "truncated";
+    case MeshIoStatus::kNotStl:
+      return "not_stl";
+    case MeshIoStatus::kMalformed:
+      return "malformed";
+    case MeshIoStatus::kNonFinite:
+      return "non_finite";
+    case MeshIoStatus::kNoTriangles:
+      return "no_triangles";
+    case MeshIoStatus::kAllDegenerate:
+      return "all_degenerate";
+    case MeshIoStatus::kWriteFailed:
+      return "write_failed";
   }
   return "unknown";
 }
 
 bool StlReadOptions::IsValid(std::string* error) const {
   if (!std::isfinite(scale) || !(scale > 0)) {
-    if (error) *error = "StlReadOptions::scale must be finite and > 0, got " + std::to_string(scale);
+    if (error)
+      *error = "StlReadOptions::scale must be finite and > 0, got " + std::to_string(scale);
     return false;
   }
   if (!(degenerate_tolerance >= 0 && degenerate_tolerance < 1)) {

@@ -74,7 +74,7 @@ struct StlReadResult {
   std::vector<StlTriangle> triangles;  // metres; degenerate ones removed
   int64_t triangles_in_file = 0;       // as read, before dropping degenerate ones
   int64_t degenerate_dropped = 0;
-  std::vector<std::string> warnings;   // recoverable oddities (dropped triangles, no endsolid)
+  std::vector<std::string> warnings;  // recoverable oddities (dropped triangles, no endsolid)
 
   bool ok() const { return status == MeshIoStatus::kOk; }
 };

@@ -115,8 +115,8 @@ class Parser {
       if (token.empty()) return Truncated("'vertex' or 'endloop'");
       if (IEquals(token, "endloop")) break;
       if (!IEquals(token, "vertex")) {
-        return Fail(MeshIoStatus::kMalformed, "expected 'vertex' or 'endloop', found " +
-                                                  Quote(token));
+        return Fail(MeshIoStatus::kMalformed,
+                    "expected 'vertex' or 'endloop', found " + Quote(token));
       }
       if (corners == 3) {
         return Fail(MeshIoStatus::kMalformed,

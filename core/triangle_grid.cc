@@ -4,8 +4,7 @@
 
 namespace demcal::core {
 
-void TriangleGrid::Build(const std::vector<Vec3>& lo, const std::vector<Vec3>& hi,
-                         double cell_m) {
+void TriangleGrid::Build(const std::vector<Vec3>& lo, const std::vector<Vec3>& hi, double cell_m) {
   const size_t n = lo.size();
   item_lo_cell_.assign(n, {0, 0, 0});
   cell_start_.assign(2, 0);
@@ -30,7 +29,7 @@ void TriangleGrid::Build(const std::vector<Vec3>& lo, const std::vector<Vec3>& h
   if (!(cell > 0)) cell = 1;  // every box is one point: any cell size will do
 
   // Enlarge the cells until the grid has a bounded number of them.
-  const double max_cells = std::max(64.0, 4.0 * static_cast<double>(n));
+  const double max_cells = std::max(64.0, 16.0 * static_cast<double>(n));
   auto cells_for = [&](double c) {
     double total = 1;
     for (int a = 0; a < 3; ++a) total *= std::max(1.0, std::ceil(size[a] / c));

@@ -23,7 +23,7 @@ namespace demcal::core {
 class TriangleGrid {
  public:
   // Bins the boxes [lo[i], hi[i]]. cell_m <= 0 picks the mean largest box extent, enlarged if
-  // needed so that the grid has at most max(64, 4 × boxes) cells.
+  // needed so that the grid has at most max(64, 16 × boxes) cells.
   void Build(const std::vector<Vec3>& lo, const std::vector<Vec3>& hi, double cell_m);
 
   // Calls visit(item) once for each box that overlaps [lo, hi] in at least one shared cell
@@ -43,8 +43,8 @@ class TriangleGrid {
   }
   size_t CellIndex(int x, int y, int z) const {
     return static_cast<size_t>(x) +
-           static_cast<size_t>(dims_[0]) * (static_cast<size_t>(y) +
-                                            static_cast<size_t>(dims_[1]) * z);
+           static_cast<size_t>(dims_[0]) *
+               (static_cast<size_t>(y) + static_cast<size_t>(dims_[1]) * z);
   }
 
   Vec3 origin_, extent_hi_;

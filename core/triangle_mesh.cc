@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <set>
 #include <tuple>
 #include <unordered_map>
 
@@ -123,6 +124,7 @@ std::optional<TriangleMesh> TriangleMesh::FromIndexed(
     }
   }
   const auto n = static_cast<int64_t>(vertices.size());
+  std::set<std::array<int32_t, 3>> seen;  // vertex sets already used: repeats are dropped
   for (const auto& t : triangles) {
     for (int32_t v : t) {
       if (v < 0 || v >= n) {
@@ -135,6 +137,12 @@ std::optional<TriangleMesh> TriangleMesh::FromIndexed(
     if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] ||
         IsDegenerateTriangle(corners, kDegenerateTolerance)) {
       ++mesh.dropped_degenerate_;
+      continue;
+    }
+    std::array<int32_t, 3> sorted = t;
+    std::sort(sorted.begin(), sorted.end());
+    if (!seen.insert(sorted).second) {
+      ++mesh.dropped_duplicate_;
       continue;
     }
     mesh.tri_vertices_.push_back(t);
@@ -168,6 +176,10 @@ bool TriangleMesh::Build(const TriangleMeshOptions& options, std::string* error)
         lo[t][a] = std::min(lo[t][a], tri.v[k][a]);
         hi[t][a] = std::max(hi[t][a], tri.v[k][a]);
       }
+    }
+    tri.bound_centre = 0.5 * (lo[t] + hi[t]);
+    for (const Vec3& corner : tri.v) {
+      tri.bound_radius = std::max(tri.bound_radius, Norm(corner - tri.bound_centre));
     }
     for (int a = 0; a < 3; ++a) {
       box_lo[a] = std::min(box_lo[a], lo[t][a]);
@@ -242,9 +254,15 @@ void TriangleMesh::BuildTopology() {
 }
 
 void TriangleMesh::BuildPatches(double flat_angle_rad) {
-  // Flood fill across two-triangle edges; a triangle joins a patch if its normal is within
-  // flat_angle_rad of the patch's first triangle (either orientation: meshes are two-sided).
+  // Flood fill across two-triangle edges where the surface continues (the triangles lie on
+  // opposite sides of the edge, not folded back onto each other); a triangle joins a patch if its
+  // normal is within flat_angle_rad of the patch's first triangle (either orientation: meshes
+  // are two-sided).
   const double min_cos = std::cos(flat_angle_rad);
+  auto continues = [&](int32_t e) {
+    const int32_t k = edge_tri_start_[e];
+    return edge_tri_start_[e + 1] - k == 2 && Dot(edge_tri_inward_[k], edge_tri_inward_[k + 1]) < 0;
+  };
   const auto nt = static_cast<int32_t>(tri_vertices_.size());
   tri_patch_.assign(nt, -1);
   patch_count_ = 0;
@@ -259,8 +277,8 @@ void TriangleMesh::BuildPatches(double flat_angle_rad) {
       const int32_t t = stack.back();
       stack.pop_back();
       for (int32_t e : tri_edges_[t]) {
+        if (!continues(e)) continue;
         const std::span<const int32_t> tris = EdgeTriangles(e);
-        if (tris.size() != 2) continue;
         const int32_t other = tris[0] == t ? tris[1] : tris[0];
         if (tri_patch_[other] >= 0 || std::abs(Dot(tri_[other].normal, n0)) < min_cos) continue;
         tri_patch_[other] = patch;
@@ -271,8 +289,8 @@ void TriangleMesh::BuildPatches(double flat_angle_rad) {
   edge_flat_.assign(edge_vertices_.size(), 0);
   for (size_t e = 0; e < edge_vertices_.size(); ++e) {
     const std::span<const int32_t> tris = EdgeTriangles(static_cast<int32_t>(e));
-    edge_flat_[e] = tris.size() == 2 && tris[0] != tris[1] &&
-                    tri_patch_[tris[0]] == tri_patch_[tris[1]];
+    edge_flat_[e] =
+        continues(static_cast<int32_t>(e)) && tri_patch_[tris[0]] == tri_patch_[tris[1]];
   }
   vertex_flat_.assign(vertices_.size(), 0);
   for (size_t v = 0; v < vertices_.size(); ++v) {

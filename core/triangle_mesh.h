@@ -43,12 +43,12 @@ namespace demcal::core {
 enum class MeshFeatureKind : uint8_t { kFace, kEdge, kVertex };
 
 struct MeshContact {
-  Vec3 normal;              // unit, from the contact point towards the sphere centre
-  double overlap_m = 0;     // radius − distance (> 0)
-  Vec3 point_m;             // closest point on the mesh surface
+  Vec3 normal;           // unit, from the contact point towards the sphere centre
+  double overlap_m = 0;  // radius − distance (> 0)
+  Vec3 point_m;          // closest point on the mesh surface
   MeshFeatureKind kind = MeshFeatureKind::kFace;
-  int32_t feature = -1;     // kFace: planar patch; kEdge: edge; kVertex: vertex index
-  int32_t triangle = -1;    // a triangle that contains point_m
+  int32_t feature = -1;   // kFace: planar patch; kEdge: edge; kVertex: vertex index
+  int32_t triangle = -1;  // a triangle that contains point_m
 
   // Stable per-feature key, e.g. for contact-history maps.
   uint64_t Key() const {
@@ -78,7 +78,8 @@ class TriangleMesh {
                                               const TriangleMeshOptions& options,
                                               std::string* error);
   // From vertices and corner indices (counter-clockwise seen from the front). Triangles that
-  // repeat a vertex or have zero area (StlReadOptions tolerance) are dropped and counted.
+  // repeat a vertex or have zero area (StlReadOptions tolerance) are dropped and counted, and so
+  // are repeats of a triangle (the same three vertices, in either winding).
   static std::optional<TriangleMesh> FromIndexed(std::vector<Vec3> vertices,
                                                  std::span<const std::array<int32_t, 3>> triangles,
                                                  const TriangleMeshOptions& options,
@@ -101,6 +102,7 @@ class TriangleMesh {
   size_t NumEdges() const { return edge_vertices_.size(); }
   size_t NumPatches() const { return patch_count_; }
   int64_t DroppedDegenerate() const { return dropped_degenerate_; }
+  int64_t DroppedDuplicates() const { return dropped_duplicate_; }
 
   Vec3 Vertex(int32_t v) const { return vertices_[v] + offset_; }
   const std::array<int32_t, 3>& TriangleVertices(int32_t t) const { return tri_vertices_[t]; }
@@ -120,8 +122,10 @@ class TriangleMesh {
   // Geometry per triangle, in mesh coordinates (without offset_).
   struct Tri {
     std::array<Vec3, 3> v;
-    Vec3 normal;                  // unit, (v1 − v0) × (v2 − v0) normalised
-    std::array<Vec3, 3> inward;   // unit, in-plane, ⟂ edge k, pointing into the triangle
+    Vec3 normal;                 // unit, (v1 − v0) × (v2 − v0) normalised
+    std::array<Vec3, 3> inward;  // unit, in-plane, ⟂ edge k, pointing into the triangle
+    Vec3 bound_centre;           // a sphere holding the triangle (cheap rejection)
+    double bound_radius = 0;
   };
   TriangleMesh() = default;
   bool Build(const TriangleMeshOptions& options, std::string* error);
@@ -137,7 +141,7 @@ class TriangleMesh {
 
   std::vector<Vec3> vertices_;
   std::vector<std::array<int32_t, 3>> tri_vertices_;
-  std::vector<std::array<int32_t, 3>> tri_edges_;   // edge k joins corners k and k+1
+  std::vector<std::array<int32_t, 3>> tri_edges_;  // edge k joins corners k and k+1
   std::vector<Tri> tri_;
   std::vector<int32_t> tri_patch_;
   size_t patch_count_ = 0;
@@ -145,7 +149,7 @@ class TriangleMesh {
   std::vector<std::array<int32_t, 2>> edge_vertices_;
   std::vector<int32_t> edge_tri_start_, edge_tri_;  // triangles of each edge (rows)
   std::vector<Vec3> edge_tri_inward_;               // inward normal of that triangle at the edge
-  std::vector<uint8_t> edge_flat_;                  // two coplanar triangles of one patch
+  std::vector<uint8_t> edge_flat_;                  // inside a patch: two coplanar triangles
 
   std::vector<int32_t> vertex_edge_start_, vertex_edge_;  // edges at each vertex (rows)
   std::vector<Vec3> vertex_edge_dir_;                     // unit, from the vertex along the edge
@@ -153,8 +157,9 @@ class TriangleMesh {
 
   TriangleGrid grid_;
   Vec3 offset_;
-  double length_scale_m_ = 1;   // bounding-box diagonal plus coordinate magnitude (tolerances)
+  double length_scale_m_ = 1;  // bounding-box diagonal plus coordinate magnitude (tolerances)
   int64_t dropped_degenerate_ = 0;
+  int64_t dropped_duplicate_ = 0;
 };
 
 }  // namespace demcal::core

@@ -30,8 +30,7 @@ bool TriangleMesh::EdgeConeHolds(int32_t edge, const Vec3& to_centre, double tol
   return true;
 }
 
-bool TriangleMesh::VertexConeHolds(int32_t vertex, const Vec3& to_centre,
-                                   double tolerance) const {
+bool TriangleMesh::VertexConeHolds(int32_t vertex, const Vec3& to_centre, double tolerance) const {
   // Moving from the vertex along any of its edges must not approach the centre (then no
   // direction into its triangles does either: those are non-negative mixes of edge directions).
   for (int32_t k = vertex_edge_start_[vertex]; k < vertex_edge_start_[vertex + 1]; ++k) {
@@ -43,6 +42,8 @@ bool TriangleMesh::VertexConeHolds(int32_t vertex, const Vec3& to_centre,
 bool TriangleMesh::TriangleCandidate(int32_t t, const Vec3& c, double radius, double tolerance,
                                      MeshContact* m, bool* in_cone) const {
   const Tri& tri = tri_[t];
+  const double reach = radius + tri.bound_radius;
+  if (Norm2(c - tri.bound_centre) >= reach * reach) return false;
   const double height = Dot(c - tri.v[0], tri.normal);
   if (std::abs(height) >= radius) return false;
   const TriangleClosestPoint cp = ClosestPointOnTriangle(c, tri.v[0], tri.v[1], tri.v[2]);
@@ -139,15 +140,16 @@ void TriangleMesh::ApplyContactRules(const Vec3& c, double radius,
     MeshContact& m = out[i];
     if (m.kind != MeshFeatureKind::kVertex) continue;
     const int32_t v = m.feature;
-    const bool covered =
-        face_contains([&](int32_t t) { return Contains(tri_vertices_[t], v); }) ||
-        kept_before(out.size(), [&](const MeshContact& k) {
-          return k.kind == MeshFeatureKind::kEdge &&
-                 (edge_vertices_[k.feature][0] == v || edge_vertices_[k.feature][1] == v);
-        }) ||
-        kept_before(i, [&](const MeshContact& k) {
-          return k.kind == MeshFeatureKind::kVertex && k.feature == v;
-        });
+    const bool covered = face_contains([&](int32_t t) { return Contains(tri_vertices_[t], v); }) ||
+                         kept_before(out.size(),
+                                     [&](const MeshContact& k) {
+                                       return k.kind == MeshFeatureKind::kEdge &&
+                                              (edge_vertices_[k.feature][0] == v ||
+                                               edge_vertices_[k.feature][1] == v);
+                                     }) ||
+                         kept_before(i, [&](const MeshContact& k) {
+                           return k.kind == MeshFeatureKind::kVertex && k.feature == v;
+                         });
     if (covered) m.triangle = -1;
   }
   std::erase_if(out, [](const MeshContact& m) { return m.triangle < 0; });

@@ -30,16 +30,16 @@ namespace demcal::core {
 
 // Where a wall surface is nearest to a sphere centre.
 struct WallProximity {
-  Vec3 normal;             // unit, from the surface towards the centre's side (see "Sides")
-  double distance_m = 0;   // signed on the open surface, unsigned (>= 0) on a rim
-  Vec3 point_m;            // the closest surface point
-  bool on_edge = false;    // the closest point lies on a rim of a finite cylinder or cone
+  Vec3 normal;            // unit, from the surface towards the centre's side (see "Sides")
+  double distance_m = 0;  // signed on the open surface, unsigned (>= 0) on a rim
+  Vec3 point_m;           // the closest surface point
+  bool on_edge = false;   // the closest point lies on a rim of a finite cylinder or cone
 };
 
 // An infinite plane; the sphere lives on the side `normal` points to.
 struct PlaneSurface {
-  Vec3 point_m;            // any point on the plane
-  Vec3 normal{0, 0, 1};    // unit
+  Vec3 point_m;          // any point on the plane
+  Vec3 normal{0, 0, 1};  // unit
   bool IsValid(std::string* error) const;
 };
 
@@ -47,11 +47,11 @@ struct PlaneSurface {
 // `axis_point_m`; the surface spans [axial_min_m, axial_max_m] (either may be infinite).
 struct CylinderSurface {
   Vec3 axis_point_m;
-  Vec3 axis{0, 0, 1};      // unit
-  double radius_m = 0;     // > 0
+  Vec3 axis{0, 0, 1};   // unit
+  double radius_m = 0;  // > 0
   double axial_min_m = -std::numeric_limits<double>::infinity();
   double axial_max_m = std::numeric_limits<double>::infinity();
-  bool inside = true;      // true: the sphere lives inside (a silo); false: outside (a post)
+  bool inside = true;  // true: the sphere lives inside (a silo); false: outside (a post)
   bool IsValid(std::string* error) const;
 };
 
@@ -60,12 +60,12 @@ struct CylinderSurface {
 // small one; a radius may be 0 (a full cone with its apex). Both ends are open.
 struct ConeFrustumSurface {
   Vec3 axis_point_m;
-  Vec3 axis{0, 0, 1};      // unit
+  Vec3 axis{0, 0, 1};  // unit
   double height0_m = 0;
-  double radius0_m = 0;    // >= 0
-  double height1_m = 0;    // != height0_m
-  double radius1_m = 0;    // >= 0, not both radii 0
-  bool inside = true;      // true: the sphere lives inside (a funnel)
+  double radius0_m = 0;  // >= 0
+  double height1_m = 0;  // != height0_m
+  double radius1_m = 0;  // >= 0, not both radii 0
+  bool inside = true;    // true: the sphere lives inside (a funnel)
   bool IsValid(std::string* error) const;
 };
 
@@ -75,9 +75,7 @@ WallProximity ClosestOnConeFrustum(const ConeFrustumSurface& cone, const Vec3& c
 
 // Which feature of triangle (v0, v1, v2) holds the closest point. Edge k joins v_k and v_{k+1}
 // (edge 2 joins v2 and v0).
-enum class TriangleRegion : uint8_t {
-  kFace, kEdge0, kEdge1, kEdge2, kVertex0, kVertex1, kVertex2
-};
+enum class TriangleRegion : uint8_t { kFace, kEdge0, kEdge1, kEdge2, kVertex0, kVertex1, kVertex2 };
 inline bool IsEdgeRegion(TriangleRegion r) {
   return r == TriangleRegion::kEdge0 || r == TriangleRegion::kEdge1 || r == TriangleRegion::kEdge2;
 }
