@@ -120,6 +120,12 @@ void ParticleSystem::ReduceAndKick(const Vec3& gravity, double dt) {
   });
 }
 
+void ParticleSystem::ReduceClumpForces(const Vec3& gravity) {
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, clumps.Size(), 256), [&](const auto& range) {
+    for (size_t k = range.begin(); k != range.end(); ++k) clumps.ReduceForces(k, spheres, gravity);
+  });
+}
+
 void ParticleSystem::Permute(const std::vector<uint32_t>& order) {
   if (order.empty()) return;
   spheres.Permute(order);

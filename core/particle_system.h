@@ -46,6 +46,8 @@ struct ParticleSystem {
   void KickDrift(double dt);
   // ... and, after forces, the second half kick (clump forces reduced from their members).
   void ReduceAndKick(const Vec3& gravity, double dt);
+  // Clump forces and torques from their members' (needed once before the first step).
+  void ReduceClumpForces(const Vec3& gravity);
   // Reorders sphere slots (Particles::Permute) and keeps clump member slots consistent.
   void Permute(const std::vector<uint32_t>& order);
   size_t BodyCount() const;

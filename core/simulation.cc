@@ -72,6 +72,7 @@ bool Simulation::Initialize(std::string* error) {
   arena_->execute([&] {
     RebuildNeighbours(true);
     ComputeForces();
+    system_.ReduceClumpForces(scene_.gravity_m_s2);
   });
   CreateFactories();
   const Vec3 g = scene_.gravity_m_s2;
