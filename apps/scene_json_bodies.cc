@@ -9,18 +9,6 @@ namespace {
 
 using nlohmann::json;
 
-std::vector<std::string> MaterialNames(const core::Scene& scene) {
-  std::vector<std::string> names;
-  for (const core::Material& m : scene.materials) names.push_back(m.name);
-  return names;
-}
-
-std::vector<std::string> SpeciesNames(const core::Scene& scene) {
-  std::vector<std::string> names;
-  for (const core::Species& s : scene.species) names.push_back(s.name);
-  return names;
-}
-
 // Fails unless max > min on every axis.
 void CheckBoxOrder(JsonFields& f, const std::string& max_key, const core::Vec3& lo,
                    const core::Vec3& hi, const std::string& min_key) {

@@ -10,12 +10,6 @@ namespace {
 using core::PairParameters;
 using nlohmann::json;
 
-std::vector<std::string> MaterialNames(const core::Scene& scene) {
-  std::vector<std::string> names;
-  for (const core::Material& m : scene.materials) names.push_back(m.name);
-  return names;
-}
-
 // Fails if `name` was already used by an earlier entry of the same list.
 void CheckUnique(JsonFields& f, const std::vector<std::string>& earlier, const std::string& name) {
   if (std::find(earlier.begin(), earlier.end(), name) != earlier.end())
@@ -39,6 +33,18 @@ const std::vector<std::string>& PairKeys() {
 }
 
 }  // namespace
+
+std::vector<std::string> MaterialNames(const core::Scene& scene) {
+  std::vector<std::string> names;
+  for (const core::Material& m : scene.materials) names.push_back(m.name);
+  return names;
+}
+
+std::vector<std::string> SpeciesNames(const core::Scene& scene) {
+  std::vector<std::string> names;
+  for (const core::Species& s : scene.species) names.push_back(s.name);
+  return names;
+}
 
 int ResolveName(const json& value, const std::string& path, const std::string& what,
                 const std::vector<std::string>& names, JsonStatus* status) {
@@ -105,11 +111,7 @@ void ParseSpecies(JsonFields& top, core::Scene* scene, JsonStatus* status) {
                  {"name", "material", "diameter_m", "diameter_range_m", "diameter_table"}, status);
     core::Species sp;
     f.String("name", &sp.name, kRequired);
-    if (f.ok()) {
-      std::vector<std::string> earlier;
-      for (const core::Species& s : scene->species) earlier.push_back(s.name);
-      CheckUnique(f, earlier, sp.name);
-    }
+    if (f.ok()) CheckUnique(f, SpeciesNames(*scene), sp.name);
     sp.material = ReadNameReference(f, "material", "material", materials, status);
     if (f.ok() && !(scene->materials[sp.material].density_kg_m3 > 0)) {
       status->Fail("field 'materials[" + std::to_string(sp.material) +

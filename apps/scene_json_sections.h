@@ -20,6 +20,10 @@ void ParseWalls(JsonFields& top, core::Scene* scene, JsonStatus* status);
 void ParseParticles(JsonFields& top, core::Scene* scene, JsonStatus* status);
 void ParseFills(JsonFields& top, core::Scene* scene, JsonStatus* status);
 
+// The names of the scene's materials / species, in index order.
+std::vector<std::string> MaterialNames(const core::Scene& scene);
+std::vector<std::string> SpeciesNames(const core::Scene& scene);
+
 // Resolves `value` (at JSON path `path`) as the name of one of `names` (what = "material",
 // "species") and returns its index, or -1 after recording a type error or
 // "names no <what> (defined: ...)".

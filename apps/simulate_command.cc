@@ -150,7 +150,7 @@ Command AddSimulateCommand(CLI::App& parent) {
                   "vtk/")
       ->required();
   sub->add_option("--threads,-t", options->threads, "worker threads (0: all cores)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(CLI::Range(0, 4096))
       ->capture_default_str();
   sub->add_flag("--quiet,-q", options->quiet, "print only errors (no progress, no report)");
   sub->add_option("--progress-interval-s", options->progress_interval_s,
