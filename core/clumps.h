@@ -34,6 +34,14 @@ struct Clumps {
 
   size_t Size() const { return position_m.size(); }
 
+  template <class A>
+  void Serialize(A& a) {
+    a.Vector(position_m), a.Vector(velocity_m_s), a.Vector(rotation);
+    a.Vector(principal_inertia_kg_m2), a.Vector(mass_kg), a.Vector(force_N), a.Vector(torque_N_m);
+    a.Vector(species), a.Vector(id), a.Vector(member_start), a.Vector(member_slot);
+    a.Vector(member_offset_m);
+  }
+
   // Adds a clump of `shape` (unit equivalent-volume diameter) scaled to diameter d (m), at x
   // with orientation q, appending its member spheres to `particles`. Returns the clump index.
   size_t Add(int64_t clump_id, int species_index, int material_index, const ClumpTemplate& shape,

@@ -36,6 +36,13 @@ class ContactForces {
 
   // Number of particle–particle and particle–wall contacts with positive overlap last step.
   size_t ActiveContacts() const;
+  // Checkpointing: every contact history and wall candidate list.
+  template <class A>
+  void Serialize(A& a) {
+    a.Vector(pair_history_), a.Vector(pair_active_), a.Vector(wall_start_), a.Vector(wall_index_);
+    a.Vector(wall_history_), a.Vector(wall_active_);
+  }
+
   const std::vector<ContactHistory>& PairHistory() const { return pair_history_; }
   std::vector<ContactHistory>& MutablePairHistory() { return pair_history_; }
 

@@ -54,6 +54,15 @@ class ParticleFactory {
   // The batch interval used for `spec` under gravity of magnitude g (m/s²).
   static double BatchInterval(const FactorySpec& spec, double gravity_m_s2);
 
+  // Checkpointing: the random stream and the progress (spec and mixture come from the scene).
+  template <class A>
+  void Serialize(A& a) {
+    rng_.Serialize(a);
+    a.Value(next_batch_s_), a.Value(owed_kg_), a.Value(report_.particles);
+    a.Value(report_.inserted_mass_kg), a.Value(report_.requested_mass_kg);
+    a.Value(report_.active_time_s), a.Value(report_.full_batches);
+  }
+
   const FactoryReport& report() const { return report_; }
   const FactorySpec& spec() const { return spec_; }
   double batch_interval_s() const { return interval_; }

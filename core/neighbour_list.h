@@ -44,6 +44,13 @@ class NeighbourList {
 
   uint64_t Builds() const { return builds_; }
 
+  // Checkpointing: the list and its rebuild reference (cell scratch is rebuilt on demand).
+  template <class A>
+  void Serialize(A& a) {
+    a.Vector(row_start_), a.Vector(partner_), a.Vector(reverse_start_), a.Vector(reverse_entry_);
+    a.Vector(reference_position_), a.Value(half_skin2_), a.Value(builds_);
+  }
+
  private:
   struct Grid {
     Vec3 origin;

@@ -24,6 +24,14 @@ struct ParticleSystem {
   std::vector<ClumpTemplate> shapes;
   int64_t next_id = 0;  // ids are shared by spheres and clump members
 
+  // Checkpointing (shapes are rebuilt from the scene, not stored).
+  template <class A>
+  void Serialize(A& a) {
+    spheres.Serialize(a);
+    clumps.Serialize(a);
+    a.Value(next_id);
+  }
+
   // Builds `shapes` from the species definitions; false with a message naming the species.
   bool SetSpecies(const std::vector<Species>& species, std::string* error);
   bool IsClump(int species) const { return !shapes[species].spheres.empty(); }

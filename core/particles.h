@@ -28,6 +28,14 @@ struct Particles {
 
   size_t Size() const { return position_m.size(); }
 
+  template <class A>
+  void Serialize(A& a) {
+    a.Vector(position_m), a.Vector(velocity_m_s), a.Vector(angular_velocity_rad_s);
+    a.Vector(force_N), a.Vector(torque_N_m), a.Vector(radius_m), a.Vector(mass_kg);
+    a.Vector(inv_mass), a.Vector(inv_inertia), a.Vector(species), a.Vector(material);
+    a.Vector(body), a.Vector(id);
+  }
+
   // Appends one sphere at rest-or-moving state; returns its slot.
   size_t Add(int64_t particle_id, int species_index, int material_index, double radius,
              double density, const Vec3& position, const Vec3& velocity, const Vec3& omega);

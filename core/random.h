@@ -3,6 +3,8 @@
 // mapping so a seed gives the same numbers with every standard library.
 #include <cstdint>
 #include <random>
+#include <sstream>
+#include <string>
 
 namespace demcal::core {
 
@@ -13,6 +15,22 @@ class Rng {
   double Uniform() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
   double Uniform(double lo, double hi) { return lo + (hi - lo) * Uniform(); }
   uint64_t Next() { return engine_(); }
+
+  // Checkpointing: the engine state as text (the standard's portable representation).
+  template <class A>
+  void Serialize(A& a) {
+    std::string state;
+    if (a.writing()) {
+      std::ostringstream os;
+      os << engine_;
+      state = os.str();
+    }
+    a.String(state);
+    if (!a.writing()) {
+      std::istringstream is(state);
+      is >> engine_;
+    }
+  }
 
  private:
   std::mt19937_64 engine_;

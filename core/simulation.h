@@ -46,6 +46,13 @@ class Simulation {
   ~Simulation();
 
   bool Initialize(std::string* error);
+  // Checkpoint: the complete dynamic state (particles, clumps, contact histories, neighbour
+  // list, factories' random streams, time). Restore into a Simulation initialised from the same
+  // scene; the continued run is bit-identical to an uninterrupted one. False with a message on
+  // I/O errors or a file that does not fit the scene.
+  bool SaveCheckpoint(const std::string& path, std::string* error) const;
+  bool LoadCheckpoint(const std::string& path, std::string* error);
+
   // Changes the body-force field for subsequent steps (load-controlled tests, tilting).
   void SetGravity(const Vec3& gravity_m_s2) { scene_.gravity_m_s2 = gravity_m_s2; }
   // Changes the worker count for subsequent Run() calls (0: all cores).
@@ -73,6 +80,8 @@ class Simulation {
   bool InsertFromFactories();
   void Step();
   void ComputeForces();
+  template <class A>
+  void SerializeState(A& a);
   void RebuildNeighbours(bool allow_reorder);
   // Returns kOk, or the failure found by the periodic checks (and fills message).
   Termination Check(std::string* message) const;
