@@ -5,6 +5,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 #include "core/contact/contact_kernel.h"
@@ -14,8 +15,9 @@ namespace demcal::core {
 // Geometry of the contact between listed partners i < j, or false if they are not in contact.
 template <class Model>
 inline bool PairGeometry(const Particles& p, size_t i, uint32_t j, bool was_in_contact,
-                         const ResolvedPair& pair, ContactGeometry& g) {
-  const Vec3 d = p.position_m[i] - p.position_m[j];
+                         const ResolvedPair& pair, const PeriodicBox* box, ContactGeometry& g) {
+  const Vec3 d = box ? box->MinimumImage(p.position_m[i] - p.position_m[j])
+                     : p.position_m[i] - p.position_m[j];
   const double ri = p.radius_m[i], rj = p.radius_m[j];
   const double rsum = ri + rj;
   const double dist2 = Norm2(d);
@@ -59,7 +61,7 @@ bool ContactForces::EvaluatePair(const Particles& p, const InteractionTable& tab
                                  ContactResult& out) {
   ContactGeometry g;
   const ResolvedPair& pair = table.Get(p.material[i], p.material[j]);
-  if (!PairGeometry<Model>(p, i, j, pair_active_[k], pair, g)) {
+  if (!PairGeometry<Model>(p, i, j, pair_active_[k], pair, periodic_.Any() ? &periodic_ : nullptr, g)) {
     if (pair_active_[k]) pair_history_[k] = ContactHistory{}, pair_active_[k] = 0;
     return false;
   }
@@ -248,6 +250,22 @@ void ContactForces::RebuildWallCandidates(const Particles& p, const std::vector<
   wall_index_.swap(index);
   wall_history_.swap(history);
   wall_active_.swap(active);
+}
+
+double ContactForces::PairElasticEnergy(const Particles& p, const NeighbourList& list,
+                                        const InteractionTable& table) const {
+  double energy = 0;
+  for (size_t i = 0; i < list.RowsCount(); ++i)
+    for (uint32_t k = list.RowBegin(i); k < list.RowEnd(i); ++k) {
+      const uint32_t j = list.Partner(k);
+      const double rsum = p.radius_m[i] + p.radius_m[j];
+      const double overlap = rsum - Norm(periodic_.MinimumImage(p.position_m[i] - p.position_m[j]));
+      if (overlap <= 0) continue;
+      const double r_eff = p.radius_m[i] * p.radius_m[j] / rsum;
+      energy += 8.0 / 15.0 * table.Get(p.material[i], p.material[j]).effective_youngs_Pa *
+                std::sqrt(r_eff) * std::pow(overlap, 2.5);
+    }
+  return energy;
 }
 
 size_t ContactForces::ActiveContacts() const {

@@ -34,6 +34,14 @@ class ContactForces {
                const std::vector<uint32_t>& order, const std::vector<PlaneWall>& walls,
                double skin_m);
 
+  // Hertz elastic energy stored in the overlapping particle pairs, (8/15) E* sqrt(R*) δ^{5/2}
+  // summed (J): the energy initial overlaps will release, for the blow-up check's budget.
+  double PairElasticEnergy(const Particles& p, const NeighbourList& list,
+                           const InteractionTable& table) const;
+
+  // Periodic axes for pair separations (minimum image); default: none.
+  void SetPeriodic(const PeriodicBox& box) { periodic_ = box; }
+
   // Number of particle–particle and particle–wall contacts with positive overlap last step.
   size_t ActiveContacts() const;
   // Checkpointing: every contact history and wall candidate list.
@@ -68,6 +76,7 @@ class ContactForces {
   std::vector<ContactHistory> pair_history_;  // aligned with NeighbourList entries
   std::vector<ContactResult> pair_result_;    // cross-chunk pairs only, aligned with entries
   std::vector<uint8_t> pair_active_;
+  PeriodicBox periodic_;
   std::vector<uint32_t> chunk_;               // particle-slot boundaries of the worker chunks
   // Wall candidates in compressed rows: particle i's entries are [wall_start_[i], wall_start_[i+1]).
   std::vector<uint32_t> wall_start_{0};

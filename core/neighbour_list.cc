@@ -10,13 +10,15 @@
 namespace demcal::core {
 
 int NeighbourList::Grid::CellOf(const Vec3& x) const {
-  auto clamp_index = [](double v, int n) {
+  // Outliers are clamped into the edge cells, or wrapped on periodic axes.
+  auto index = [](double v, int n, bool wraps) {
     const int k = static_cast<int>(std::floor(v));
+    if (wraps) return ((k % n) + n) % n;
     return k < 0 ? 0 : (k >= n ? n - 1 : k);
   };
-  const int ix = clamp_index((x.x - origin.x) * inv_cell, nx);
-  const int iy = clamp_index((x.y - origin.y) * inv_cell, ny);
-  const int iz = clamp_index((x.z - origin.z) * inv_cell, nz);
+  const int ix = index((x.x - origin.x) * inv_cell.x, nx, wrap[0]);
+  const int iy = index((x.y - origin.y) * inv_cell.y, ny, wrap[1]);
+  const int iz = index((x.z - origin.z) * inv_cell.z, nz, wrap[2]);
   return (iz * ny + iy) * nx + ix;
 }
 
@@ -28,21 +30,23 @@ NeighbourList::Grid NeighbourList::MakeGrid(const Settings& s, const std::vector
   Vec3 lo = s.domain_max_m, hi = s.domain_min_m;
   for (const Vec3& p : x)
     for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
+  Grid g;
   for (int a = 0; a < 3; ++a) {
     lo[a] = std::max(lo[a], s.domain_min_m[a]);
     hi[a] = std::min(hi[a], s.domain_max_m[a]);
     if (!(hi[a] - lo[a] >= cutoff)) hi[a] = lo[a] + cutoff;  // also catches NaN and empty sets
+    // A periodic axis spans the whole period; wrapping needs at least 3 cells (else whole axis).
+    g.wrap[a] = s.periodic.IsPeriodic(a) &&
+                static_cast<int>(s.periodic.length_m[a] / cutoff) >= 3;
+    if (s.periodic.IsPeriodic(a)) lo[a] = s.domain_min_m[a], hi[a] = s.domain_max_m[a];
   }
   const Vec3 extent = hi - lo;
-  Grid g;
   g.origin = lo;
-  g.inv_cell = 1.0 / cutoff;
-  auto cells = [&](double length) { return std::max(1, static_cast<int>(length / cutoff)); };
-  g.nx = cells(extent.x);
-  g.ny = cells(extent.y);
-  g.nz = cells(extent.z);
-  // Cells are stretched so that the grid covers the domain exactly.
-  g.inv_cell = std::min({g.nx / extent.x, g.ny / extent.y, g.nz / extent.z});
+  int* dims[3] = {&g.nx, &g.ny, &g.nz};
+  for (int a = 0; a < 3; ++a) {
+    *dims[a] = std::max(1, static_cast<int>(extent[a] / cutoff));
+    g.inv_cell[a] = *dims[a] / extent[a];  // cells stretched to tile the span exactly
+  }
   return g;
 }
 
@@ -67,23 +71,29 @@ void NeighbourList::ForEachCandidate(const Grid& grid, size_t i, const std::vect
                                      const std::vector<int>* body, double skin,
                                      Visit&& visit) const {
   const int own_body = body ? (*body)[i] : -1;
+  const PeriodicBox& box = periodic_;
   const int c = cell_of_particle_[i];
-  const int ix = c % grid.nx, iy = (c / grid.nx) % grid.ny, iz = c / (grid.nx * grid.ny);
-  for (int dz = -1; dz <= 1; ++dz) {
-    const int z = iz + dz;
-    if (z < 0 || z >= grid.nz) continue;
-    for (int dy = -1; dy <= 1; ++dy) {
-      const int y = iy + dy;
-      if (y < 0 || y >= grid.ny) continue;
-      for (int dx = -1; dx <= 1; ++dx) {
-        const int xx = ix + dx;
-        if (xx < 0 || xx >= grid.nx) continue;
-        const int cell = (z * grid.ny + y) * grid.nx + xx;
+  const int home[3] = {c % grid.nx, (c / grid.nx) % grid.ny, c / (grid.nx * grid.ny)};
+  const int dims[3] = {grid.nx, grid.ny, grid.nz};
+  // Neighbour cell ranges per axis (wrapped on periodic axes; a periodic axis with fewer than
+  // three cells is searched whole, once).
+  int lo[3], hi[3];
+  for (int a = 0; a < 3; ++a) {
+    const bool whole = box.IsPeriodic(a) && !grid.wrap[a];
+    lo[a] = whole ? 0 : home[a] - 1;
+    hi[a] = whole ? dims[a] - 1 : home[a] + 1;
+    if (!grid.wrap[a] && !whole) lo[a] = std::max(lo[a], 0), hi[a] = std::min(hi[a], dims[a] - 1);
+  }
+  auto wrap = [](int k, int n) { return ((k % n) + n) % n; };
+  for (int z = lo[2]; z <= hi[2]; ++z) {
+    for (int y = lo[1]; y <= hi[1]; ++y) {
+      for (int xx = lo[0]; xx <= hi[0]; ++xx) {
+        const int cell = (wrap(z, grid.nz) * grid.ny + wrap(y, grid.ny)) * grid.nx + wrap(xx, grid.nx);
         for (uint32_t s = cell_start_[cell]; s < cell_start_[cell + 1]; ++s) {
           const uint32_t j = cell_particles_[s];
           if (j <= i || (own_body >= 0 && (*body)[j] == own_body)) continue;
           const double reach = r[i] + r[j] + skin;
-          if (Norm2(x[i] - x[j]) < reach * reach) visit(j);
+          if (Norm2(box.MinimumImage(x[i] - x[j])) < reach * reach) visit(j);
         }
       }
     }
@@ -93,6 +103,7 @@ void NeighbourList::ForEachCandidate(const Grid& grid, size_t i, const std::vect
 void NeighbourList::Build(const Settings& s, const std::vector<Vec3>& x,
                           const std::vector<double>& r, const std::vector<int>* body) {
   const size_t n = x.size();
+  periodic_ = s.periodic;
   const Grid grid = MakeGrid(s, x);
   BinParticles(grid, x);
 
@@ -129,12 +140,25 @@ void NeighbourList::Build(const Settings& s, const std::vector<Vec3>& x,
 }
 
 bool NeighbourList::NeedsRebuild(const std::vector<Vec3>& x) const {
+  if (periodic_.Any()) return NeedsRebuild(x, periodic_);
   if (x.size() != reference_position_.size()) return true;
   return tbb::parallel_reduce(
       tbb::blocked_range<size_t>(0, x.size()), false,
       [&](const auto& range, bool found) {
         for (size_t i = range.begin(); i != range.end() && !found; ++i)
           found = Norm2(x[i] - reference_position_[i]) > half_skin2_;
+        return found;
+      },
+      [](bool a, bool b) { return a || b; });
+}
+
+bool NeighbourList::NeedsRebuild(const std::vector<Vec3>& x, const PeriodicBox& box) const {
+  if (x.size() != reference_position_.size()) return true;
+  return tbb::parallel_reduce(
+      tbb::blocked_range<size_t>(0, x.size()), false,
+      [&](const auto& range, bool found) {
+        for (size_t i = range.begin(); i != range.end() && !found; ++i)
+          found = Norm2(box.MinimumImage(x[i] - reference_position_[i])) > half_skin2_;
         return found;
       },
       [](bool a, bool b) { return a || b; });

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/periodic_box.h"
 #include "core/vec3.h"
 
 namespace demcal::core {
@@ -20,6 +21,7 @@ class NeighbourList {
     Vec3 domain_min_m, domain_max_m;  // the grid never extends beyond; outliers are clamped
     double skin_m = 0;
     double max_radius_m = 0;
+    PeriodicBox periodic;  // periodic axes: the grid spans the domain and wraps around
   };
 
   // `body` (optional): spheres with the same non-negative body index (members of one clump)
@@ -27,6 +29,8 @@ class NeighbourList {
   void Build(const Settings& settings, const std::vector<Vec3>& positions,
              const std::vector<double>& radii, const std::vector<int>* body = nullptr);
   bool NeedsRebuild(const std::vector<Vec3>& positions) const;
+  // NeedsRebuild for periodic boxes: displacements by minimum image (a wrap is not a move).
+  bool NeedsRebuild(const std::vector<Vec3>& positions, const PeriodicBox& box) const;
 
   size_t RowsCount() const { return row_start_.size() - 1; }
   size_t PairCount() const { return partner_.size(); }
@@ -54,8 +58,9 @@ class NeighbourList {
  private:
   struct Grid {
     Vec3 origin;
-    double inv_cell;
+    Vec3 inv_cell;  // per axis: cells are at least the cut-off and tile the spanned box
     int nx, ny, nz;
+    bool wrap[3];   // periodic axis: neighbour cells wrap around
     int CellOf(const Vec3& x) const;
   };
   Grid MakeGrid(const Settings& s, const std::vector<Vec3>& positions) const;
@@ -70,6 +75,7 @@ class NeighbourList {
   std::vector<uint32_t> reverse_start_{0};
   std::vector<uint32_t> reverse_entry_;
   std::vector<Vec3> reference_position_;
+  PeriodicBox periodic_;
   double half_skin2_ = 0;
   uint64_t builds_ = 0;
   // cell binning scratch (reused between builds)

@@ -120,6 +120,22 @@ void ParticleSystem::ReduceAndKick(const Vec3& gravity, double dt) {
   });
 }
 
+void ParticleSystem::WrapPeriodic(const PeriodicBox& box) {
+  Particles& p = spheres;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, p.Size(), 1024), [&](const auto& range) {
+    for (size_t i = range.begin(); i != range.end(); ++i)
+      if (p.body[i] < 0) p.position_m[i] = box.Wrap(p.position_m[i]);
+  });
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, clumps.Size(), 256), [&](const auto& range) {
+    for (size_t k = range.begin(); k != range.end(); ++k) {
+      const Vec3 wrapped = box.Wrap(clumps.position_m[k]);
+      if (wrapped == clumps.position_m[k]) continue;
+      clumps.position_m[k] = wrapped;
+      clumps.UpdateMembers(k, p);
+    }
+  });
+}
+
 void ParticleSystem::ReduceClumpForces(const Vec3& gravity) {
   tbb::parallel_for(tbb::blocked_range<size_t>(0, clumps.Size(), 256), [&](const auto& range) {
     for (size_t k = range.begin(); k != range.end(); ++k) clumps.ReduceForces(k, spheres, gravity);

@@ -12,6 +12,7 @@
 #include "core/clumps.h"
 #include "core/material.h"
 #include "core/particles.h"
+#include "core/periodic_box.h"
 #include "core/quaternion.h"
 
 namespace demcal::core {
@@ -56,6 +57,8 @@ struct ParticleSystem {
   void ReduceAndKick(const Vec3& gravity, double dt);
   // Clump forces and torques from their members' (needed once before the first step).
   void ReduceClumpForces(const Vec3& gravity);
+  // Wraps free spheres and clump centres back into the periodic box (members follow).
+  void WrapPeriodic(const PeriodicBox& box);
   // Reorders sphere slots (Particles::Permute) and keeps clump member slots consistent.
   void Permute(const std::vector<uint32_t>& order);
   size_t BodyCount() const;

@@ -113,6 +113,23 @@ void CheckGeometry(const Scene& s, Checker& c) {
       c.Fail("field '" + Indexed("walls", i) + ".material' names no defined material");
   }
   if (!IsFinite(s.gravity_m_s2)) c.Fail("field 'gravity_m_s2' must be finite");
+  const char* axis_names[3] = {"x", "y", "z"};
+  for (int a = 0; a < 3 && c.ok(); ++a) {
+    if (!s.periodic[a]) continue;
+    const std::string f = std::string("periodic.") + axis_names[a];
+    if (s.gravity_m_s2[a] != 0)
+      c.Fail("field '" + f + "': a periodic axis must be perpendicular to gravity (energy "
+             "accounting and heaps need a floor)");
+    // Three neighbour cells must fit, so that no pair meets through two images.
+    const double cell = s.MaxDiameter() + NeighbourSkin(s);
+    const double length = s.domain_max_m[a] - s.domain_min_m[a];
+    if (length < 3 * cell) {
+      std::ostringstream os;
+      os << "field '" << f << "': the domain is " << length << " m long on this axis; periodic "
+         << "boundaries need at least 3 × (largest diameter + skin) = " << 3 * cell << " m";
+      c.Fail(os.str());
+    }
+  }
 }
 
 void CheckParticles(const Scene& s, Checker& c) {

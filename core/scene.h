@@ -7,6 +7,7 @@
 // Usage:
 //   Scene s;  ...fill...;  std::string err;
 //   if (!s.IsValid(&err)) { report(err); }
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -54,6 +55,7 @@ struct Scene {
   RollingModelSpec rolling;
   std::vector<PlaneWall> walls;
   Vec3 domain_min_m, domain_max_m;  // a particle leaving this box ends the run
+  std::array<bool, 3> periodic{};   // periodic boundaries along x, y, z of the domain box
   Vec3 gravity_m_s2{0, 0, -9.81};
   std::vector<ParticleSpec> particles;
   std::vector<FillSpec> fills;

@@ -67,8 +67,12 @@ bool Simulation::Initialize(std::string* error) {
   adhesive_ = false;
   for (const PairParameters& pair : scene_.pair_parameters)
     adhesive_ = adhesive_ || pair.interfacial_energy_J_m2 > 0;
+  PeriodicBox box{scene_.domain_min_m, {}};
+  for (int a = 0; a < 3; ++a)
+    if (scene_.periodic[a]) box.length_m[a] = scene_.domain_max_m[a] - scene_.domain_min_m[a];
   list_settings_ = {scene_.domain_min_m, scene_.domain_max_m, NeighbourSkin(scene_),
-                    0.5 * scene_.MaxDiameter()};
+                    0.5 * scene_.MaxDiameter(), box};
+  forces_.SetPeriodic(box);
   arena_->execute([&] {
     RebuildNeighbours(true);
     ComputeForces();
@@ -76,12 +80,14 @@ bool Simulation::Initialize(std::string* error) {
   });
   CreateFactories();
   const Vec3 g = scene_.gravity_m_s2;
-  energy_budget_J_ = system_.KineticEnergy() + system_.GravitationalPotential(g);
+  // Initial overlaps (explicitly placed particles) release their elastic energy.
+  const double elastic = forces_.PairElasticEnergy(system_.spheres, list_, table_);
+  energy_budget_J_ = system_.KineticEnergy() + system_.GravitationalPotential(g) + elastic;
   // Largest energy gravity can release: every particle dropping to the domain's lowest corner.
   lowest_point_ = {g.x > 0 ? scene_.domain_max_m.x : scene_.domain_min_m.x,
                    g.y > 0 ? scene_.domain_max_m.y : scene_.domain_min_m.y,
                    g.z > 0 ? scene_.domain_max_m.z : scene_.domain_min_m.z};
-  energy_scale_J_ = system_.KineticEnergy() +
+  energy_scale_J_ = system_.KineticEnergy() + elastic +
                     system_.spheres.Size() * AdhesiveEnergyBoundPerParticle(scene_, table_) +
                     system_.ReleasableGravitationalEnergy(g, lowest_point_);
   initialized_ = true;
@@ -177,6 +183,7 @@ void Simulation::ComputeForces() {
 
 void Simulation::Step() {
   system_.KickDrift(dt_);
+  if (list_settings_.periodic.Any()) system_.WrapPeriodic(list_settings_.periodic);
   const bool inserted = !factories_.empty() && InsertFromFactories();
   if (inserted || list_.NeedsRebuild(system_.spheres.position_m)) RebuildNeighbours(true);
   ComputeForces();

@@ -4,6 +4,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 
+#include <limits>
 #include <sstream>
 
 #include "core/simulation.h"
@@ -12,7 +13,9 @@ namespace demcal::core {
 
 Termination Simulation::Check(std::string* message) const {
   const Particles& p = system_.spheres;
-  const Vec3 lo = scene_.domain_min_m, hi = scene_.domain_max_m;
+  Vec3 lo = scene_.domain_min_m, hi = scene_.domain_max_m;
+  for (int a = 0; a < 3; ++a)  // periodic axes wrap instead of losing particles
+    if (scene_.periodic[a]) lo[a] = -std::numeric_limits<double>::infinity(), hi[a] = -lo[a];
   struct Found { int64_t non_finite = -1, outside = -1; };
   const Found found = tbb::parallel_reduce(
       tbb::blocked_range<size_t>(0, p.Size()), Found{},
