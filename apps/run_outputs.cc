@@ -48,15 +48,21 @@ int64_t RunOutputs::SnapshotEverySteps(double timestep_s) const {
 }
 
 bool RunOutputs::WriteSnapshot(const core::Simulation& sim, std::string* error) {
-  if (!series_.Write(sim.particles(), sim.time_s(), error)) return false;
+  const core::Clumps& clumps = sim.system().clumps;
+  if (!series_.Write(sim.particles(), sim.time_s(), error, &clumps)) return false;
   last_snapshot_step_ = sim.steps();
   return true;
 }
 
 bool RunOutputs::WriteFinal(const core::Simulation& sim, std::string* error) {
   if (last_snapshot_step_ != sim.steps() && !WriteSnapshot(sim, error)) return false;
-  if (!core::io::WriteParticlesCsv(CsvPath(), sim.particles(), error)) return false;
+  const core::Clumps& clumps = sim.system().clumps;
+  if (!core::io::WriteParticlesCsv(CsvPath(), sim.particles(), error, &clumps)) return false;
   csv_written_ = true;
+  if (clumps.Size() > 0) {
+    if (!core::io::WriteClumpsCsv(ClumpCsvPath(), clumps, error)) return false;
+    clump_csv_written_ = true;
+  }
   return true;
 }
 
@@ -70,6 +76,7 @@ nlohmann::ordered_json RunOutputs::Describe() const {
         settings_.vtk.encoding == core::io::VtkOptions::Encoding::kBinary ? "binary" : "ascii";
   }
   if (csv_written_) out["final_particles_csv"] = "final_particles.csv";
+  if (clump_csv_written_) out["final_clumps_csv"] = "final_clumps.csv";
   return out;
 }
 

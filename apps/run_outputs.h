@@ -3,7 +3,8 @@
 //   DIR/vtk/particles_NNNNNN.vtk   snapshots (core/io/vtk_writer.h): the initial state, one
 //                                  every round(vtk_interval_s / Δt) steps, and the final state
 //   DIR/vtk/particles.vtk.series   ParaView's index of the snapshots with their times
-//   DIR/final_particles.csv        the final state, one row per particle (core/io/csv_writer.h)
+//   DIR/final_particles.csv        the final state, one row per sphere (core/io/csv_writer.h)
+//   DIR/final_clumps.csv           the final state of the clumps, one row each (only if any)
 //   DIR/scene.json                 a byte-for-byte copy of the scene file, so that DIR alone
 //                                  reproduces the run
 // summary.json is written by the caller (summary_json.h) with Describe() as its "outputs".
@@ -36,11 +37,12 @@ class RunOutputs {
   int64_t SnapshotEverySteps(double timestep_s) const;
   // Writes a snapshot of the current state (and refreshes the series index).
   bool WriteSnapshot(const core::Simulation& sim, std::string* error);
-  // Writes the final snapshot (unless the current step already has one) and the CSV table.
+  // Writes the final snapshot (unless the current step already has one) and the CSV tables.
   bool WriteFinal(const core::Simulation& sim, std::string* error);
 
   std::string SummaryPath() const { return directory_ + "/summary.json"; }
   std::string CsvPath() const { return directory_ + "/final_particles.csv"; }
+  std::string ClumpCsvPath() const { return directory_ + "/final_clumps.csv"; }
   // The outputs written so far, with paths relative to DIR, for summary.json.
   nlohmann::ordered_json Describe() const;
 
@@ -50,6 +52,7 @@ class RunOutputs {
   core::io::VtkSeries series_;
   int64_t last_snapshot_step_ = -1;
   bool csv_written_ = false;
+  bool clump_csv_written_ = false;
   bool scene_copied_ = false;
 };
 

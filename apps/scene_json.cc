@@ -14,9 +14,9 @@ using nlohmann::json;
 
 const std::vector<std::string>& TopLevelKeys() {
   static const std::vector<std::string> keys = {
-      "format", "description",  "materials",       "species",   "interactions", "contact_model",
-      "domain", "gravity_m_s2", "walls",           "particles", "fills",        "seed",
-      "time",   "skin_m",       "max_wall_time_s", "output"};
+      "format", "description",  "materials", "species",         "interactions", "contact_model",
+      "domain", "gravity_m_s2", "walls",     "particles",       "fills",        "factories",
+      "seed",   "time",         "skin_m",    "max_wall_time_s", "output"};
   return keys;
 }
 
@@ -107,8 +107,9 @@ bool ParseSceneJson(const json& document, const std::string& source, SceneFile* 
   internal::ParseWalls(top, &scene, &status);
   internal::ParseParticles(top, &scene, &status);
   internal::ParseFills(top, &scene, &status);
-  if (status.ok() && scene.particles.empty() && scene.fills.empty())
-    status.Fail("the scene places no particles: give 'particles' or 'fills'");
+  internal::ParseFactories(top, &scene, &status);
+  if (status.ok() && scene.particles.empty() && scene.fills.empty() && scene.factories.empty())
+    status.Fail("the scene places no particles: give 'particles', 'fills' or 'factories'");
   ParseTime(top, &scene, &status);
   top.Number("skin_m", &scene.skin_m, kOptional, Range::LeftOpen(0, 1, "m"));
   top.Number("max_wall_time_s", &scene.max_wall_time_s, kOptional);

@@ -49,6 +49,21 @@ void ParseBox(JsonFields& f, const std::string& name, int material, core::Scene*
     scene->walls.push_back(w);
 }
 
+// particles[i].orientation: a quaternion [w, x, y, z] (body principal frame -> space),
+// normalised; only for clump species.
+void ReadOrientation(JsonFields& f, const core::Scene& scene, core::ParticleSpec* p) {
+  std::vector<double> q;
+  f.Numbers("orientation", 4, &q, kOptional);
+  if (!f.ok() || q.empty()) return;
+  if (scene.species[p->species].clump_shape.empty())
+    return f.Fail("orientation", "applies only to clump species ('" +
+                                     scene.species[p->species].name + "' is a plain sphere)");
+  const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  if (!(norm > 1e-12))
+    return f.Fail("orientation", "must be a non-zero quaternion [w, x, y, z] (it is normalised)");
+  p->orientation = core::Quaternion(q[0] / norm, q[1] / norm, q[2] / norm, q[3] / norm);
+}
+
 }  // namespace
 
 void ParseWalls(JsonFields& top, core::Scene* scene, JsonStatus* status) {
@@ -88,7 +103,8 @@ void ParseParticles(JsonFields& top, core::Scene* scene, JsonStatus* status) {
   const std::vector<std::string> species = SpeciesNames(*scene);
   for (size_t i = 0; i < list->size() && status->ok(); ++i) {
     JsonFields f((*list)[i], IndexPath("particles", i),
-                 {"species", "position_m", "velocity_m_s", "angular_velocity_rad_s", "diameter_m"},
+                 {"species", "position_m", "velocity_m_s", "angular_velocity_rad_s", "diameter_m",
+                  "orientation"},
                  status);
     core::ParticleSpec p;
     p.species = ReadNameReference(f, "species", "species", species, status);
@@ -97,6 +113,7 @@ void ParseParticles(JsonFields& top, core::Scene* scene, JsonStatus* status) {
     f.Vector("angular_velocity_rad_s", &p.angular_velocity_rad_s, kOptional);
     // Absent: drawn from the species' size distribution (core's diameter_m = 0).
     f.Number("diameter_m", &p.diameter_m, kOptional, Range::LeftOpen(0, 10, "m"));
+    ReadOrientation(f, *scene, &p);
     scene->particles.push_back(p);
   }
 }

@@ -2,6 +2,7 @@
 #include <algorithm>
 
 #include "apps/scene_json_sections.h"
+#include "core/clump_shapes.h"
 #include "core/contact/rolling_model.h"
 
 namespace demcal::apps::internal {
@@ -30,6 +31,43 @@ const std::vector<std::string>& PairKeys() {
   static const std::vector<std::string> keys = {"sliding_friction", "rolling_friction",
                                                 "restitution", "interfacial_energy_J_m2"};
   return keys;
+}
+
+// species[i].clump: {"spheres": [{"centre": [x, y, z], "radius": r}, ...]} or
+// {"ellipsoid": {"semi_axes": [a, b, c], "sphere_count": n}}. Lengths are in any one unit: the
+// engine scales the shape so that the species' diameter is its equivalent-volume diameter.
+void ParseClump(JsonFields& f, core::Species* sp, JsonStatus* status) {
+  const json* clump = f.Object("clump", kOptional);
+  if (!clump) return;
+  JsonFields c(*clump, f.PathOf("clump"), {"spheres", "ellipsoid"}, status);
+  if (c.ok() && c.Has("spheres") == c.Has("ellipsoid"))
+    c.Fail("spheres", "give exactly one of 'spheres' or 'ellipsoid'");
+  if (const json* spheres = c.Array("spheres", kOptional)) {
+    if (spheres->empty()) c.Fail("spheres", "must list at least one sphere");
+    for (size_t k = 0; k < spheres->size() && status->ok(); ++k) {
+      JsonFields s((*spheres)[k], IndexPath(c.PathOf("spheres"), k), {"centre", "radius"}, status);
+      core::ShapeSphere member;
+      s.Vector("centre", &member.centre, kRequired);
+      s.Number("radius", &member.radius, kRequired, Range::Open(0, 1e300));
+      sp->clump_shape.push_back(member);
+    }
+  }
+  if (const json* ellipsoid = c.Object("ellipsoid", kOptional)) {
+    JsonFields e(*ellipsoid, c.PathOf("ellipsoid"), {"semi_axes", "sphere_count"}, status);
+    core::Vec3 axes;
+    int64_t n = 0;
+    e.Vector("semi_axes", &axes, kRequired);
+    e.Integer("sphere_count", &n, kRequired, Range::Closed(1, 5));
+    if (!e.ok()) return;
+    if (!(axes.x >= axes.y && axes.y >= axes.z && axes.z > 0))
+      return e.Fail("semi_axes", "must be [a, b, c] with a >= b >= c > 0");
+    core::ShapeApproximation shape;
+    std::string why;
+    if (!core::ApproximateEllipsoid(axes, static_cast<int>(n), &shape, &why))
+      return e.Fail("semi_axes", "cannot be approximated: " + why);
+    for (const core::ClumpSphere& s : shape.spheres)
+      sp->clump_shape.push_back({s.centre_m, s.radius_m});
+  }
 }
 
 }  // namespace
@@ -108,7 +146,8 @@ void ParseSpecies(JsonFields& top, core::Scene* scene, JsonStatus* status) {
   const std::vector<std::string> materials = MaterialNames(*scene);
   for (size_t i = 0; i < list->size() && status->ok(); ++i) {
     JsonFields f((*list)[i], IndexPath("species", i),
-                 {"name", "material", "diameter_m", "diameter_range_m", "diameter_table"}, status);
+                 {"name", "material", "diameter_m", "diameter_range_m", "diameter_table", "clump"},
+                 status);
     core::Species sp;
     f.String("name", &sp.name, kRequired);
     if (f.ok()) CheckUnique(f, SpeciesNames(*scene), sp.name);
@@ -153,6 +192,7 @@ void ParseSpecies(JsonFields& top, core::Scene* scene, JsonStatus* status) {
         sp.size.table_number_fraction.push_back(fraction);
       }
     }
+    ParseClump(f, &sp, status);
     scene->species.push_back(sp);
   }
 }

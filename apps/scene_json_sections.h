@@ -4,6 +4,7 @@
 // in `status` (see json_fields.h). Split by theme to keep files small:
 //   scene_json_materials.cc  materials, species, interactions, contact_model
 //   scene_json_bodies.cc     walls, particles, fills
+//   scene_json_factories.cc  factories
 #include <string>
 #include <vector>
 
@@ -19,6 +20,7 @@ void ParseContactModel(JsonFields& top, core::Scene* scene, JsonStatus* status);
 void ParseWalls(JsonFields& top, core::Scene* scene, JsonStatus* status);
 void ParseParticles(JsonFields& top, core::Scene* scene, JsonStatus* status);
 void ParseFills(JsonFields& top, core::Scene* scene, JsonStatus* status);
+void ParseFactories(JsonFields& top, core::Scene* scene, JsonStatus* status);
 
 // The names of the scene's materials / species, in index order.
 std::vector<std::string> MaterialNames(const core::Scene& scene);

@@ -118,6 +118,7 @@ int RunSimulate(const SimulateOptions& options, std::ostream& log) {
     return true;
   };
   record.summary = sim.Run(duration_s, observer);
+  record.factories = sim.FactoryReports();
 
   // The final state is written for failed runs too: it shows where things went wrong.
   if (!snapshot_error.empty())

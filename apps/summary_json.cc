@@ -36,6 +36,19 @@ nlohmann::ordered_json RunRecordToJson(const RunRecord& r) {
   j["wall_time_s"] = Finite(s.wall_time_s);
   j["setup_wall_time_s"] = Finite(r.setup_wall_time_s);
   j["total_wall_time_s"] = Finite(r.total_wall_time_s);
+  j["factories"] = nlohmann::ordered_json::array();
+  for (const core::FactoryReport& f : r.factories) {
+    nlohmann::ordered_json fj;
+    fj["name"] = f.name;
+    fj["particles"] = f.particles;
+    fj["inserted_mass_kg"] = Finite(f.inserted_mass_kg);
+    fj["requested_mass_kg"] = Finite(f.requested_mass_kg);
+    fj["active_time_s"] = Finite(f.active_time_s);
+    fj["requested_rate_kg_s"] = Finite(f.RequestedRate());
+    fj["achieved_rate_kg_s"] = Finite(f.AchievedRate());
+    fj["full_batches"] = f.full_batches;
+    j["factories"].push_back(fj);
+  }
   j["output_error"] =
       r.output_error.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.output_error);
   j["outputs"] = r.outputs;

@@ -11,7 +11,9 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "core/factory.h"
 #include "core/run_summary.h"
 
 namespace demcal::apps {
@@ -25,10 +27,11 @@ struct RunRecord {
   std::optional<double> requested_duration_s;
   int threads_requested = 0;  // 0: all cores
   int threads_used = 0;
-  core::RunSummary summary;      // termination, message, steps, times, energy
-  double setup_wall_time_s = 0;  // scene loading, particle placement, first forces
-  double total_wall_time_s = 0;  // the whole command, outputs included
-  std::string output_error;      // non-empty if an output file could not be written
+  core::RunSummary summary;                    // termination, message, steps, times, energy
+  double setup_wall_time_s = 0;                // scene loading, particle placement, first forces
+  double total_wall_time_s = 0;                // the whole command, outputs included
+  std::vector<core::FactoryReport> factories;  // one per scene factory
+  std::string output_error;                    // non-empty if an output file could not be written
   nlohmann::ordered_json outputs = nlohmann::ordered_json::object();  // RunOutputs::Describe()
 };
 

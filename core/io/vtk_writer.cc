@@ -105,7 +105,7 @@ bool ParseVtkEncoding(const std::string& name, VtkOptions::Encoding* encoding) {
 }
 
 bool WriteParticlesVtk(const std::string& path, const Particles& p, double time_s,
-                       const VtkOptions& options, std::string* error) {
+                       const VtkOptions& options, std::string* error, const Clumps* clumps) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   if (!out) {
     if (error) *error = "cannot open '" + path + "' for writing";
@@ -116,6 +116,8 @@ bool WriteParticlesVtk(const std::string& path, const Particles& p, double time_
   const size_t n = order.size();
   int64_t max_id = 0;
   for (int64_t id : p.id) max_id = std::max(max_id, id);
+  if (clumps)
+    for (int64_t id : clumps->id) max_id = std::max(max_id, id);
   // Ids beyond int32 are stored as doubles (exact up to 2^53) rather than a 64-bit type that
   // older legacy readers do not know.
   const bool id_fits_int = max_id <= std::numeric_limits<int32_t>::max();
@@ -154,14 +156,20 @@ bool WriteParticlesVtk(const std::string& path, const Particles& p, double time_
   out << "SCALARS species int 1\nLOOKUP_TABLE default\n";
   for (size_t s : order) body.Int(p.species[s]);
   body.EndBlock();
-  out << "SCALARS id " << (id_fits_int ? "int" : "double") << " 1\nLOOKUP_TABLE default\n";
-  for (size_t s : order) {
-    if (id_fits_int)
-      body.Int(static_cast<int32_t>(p.id[s]));
-    else
-      body.Double(static_cast<double>(p.id[s]));
-  }
-  body.EndBlock();
+  auto write_ids = [&](const char* name, auto id_of) {
+    out << "SCALARS " << name << " " << (id_fits_int ? "int" : "double")
+        << " 1\nLOOKUP_TABLE default\n";
+    for (size_t s : order) {
+      const int64_t id = id_of(s);
+      if (id_fits_int)
+        body.Int(static_cast<int32_t>(id));
+      else
+        body.Double(static_cast<double>(id));
+    }
+    body.EndBlock();
+  };
+  write_ids("id", [&](size_t s) { return p.id[s]; });
+  write_ids("body_id", [&](size_t s) { return BodyId(p, clumps, s); });
   out.flush();
   if (!out) {
     if (error) *error = "write to '" + path + "' failed (disk full?)";
@@ -175,9 +183,11 @@ VtkSeries::VtkSeries(std::string directory, std::string prefix, VtkOptions optio
 
 std::string VtkSeries::SeriesPath() const { return directory_ + "/" + prefix_ + ".vtk.series"; }
 
-bool VtkSeries::Write(const Particles& particles, double time_s, std::string* error) {
+bool VtkSeries::Write(const Particles& particles, double time_s, std::string* error,
+                      const Clumps* clumps) {
   const std::string name = SnapshotName(prefix_, entries_.size());
-  if (!WriteParticlesVtk(directory_ + "/" + name, particles, time_s, options_, error)) return false;
+  if (!WriteParticlesVtk(directory_ + "/" + name, particles, time_s, options_, error, clumps))
+    return false;
   entries_.push_back({name, time_s});
   return WriteIndex(error);
 }

@@ -2,7 +2,9 @@
 // Legacy-VTK particle snapshots for ParaView. One file per snapshot: POLYDATA with one point and
 // one vertex cell per sphere, the snapshot time as field data (TIME), and point data
 //   radius_m, diameter_m (double), velocity_m_s, angular_velocity_rad_s (3-vectors, double),
-//   species (int, index into the scene's species), id (int; stable particle id).
+//   species (int, index into the scene's species), id (int; stable sphere id),
+//   body_id (int; the sphere's own id for a free sphere, its clump's id for a clump member).
+// Every sphere is written, clump members included, so ParaView shows clumps at their true shape.
 // Points are written in id order, so a point index refers to the same particle in every file.
 // Binary files follow the legacy format's big-endian convention. VtkSeries collects the files of
 // a run and writes the ParaView ".vtk.series" index (file names and simulated times), which
@@ -16,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "core/clumps.h"
 #include "core/particles.h"
 
 namespace demcal::core::io {
@@ -28,9 +31,11 @@ struct VtkOptions {
 // Parses "ascii" | "binary"; returns false for anything else.
 bool ParseVtkEncoding(const std::string& name, VtkOptions::Encoding* encoding);
 
-// Writes one snapshot. Returns false and explains in `error` if the file cannot be written.
+// Writes one snapshot of the spheres (`clumps`, if any, supplies the members' body ids). Returns
+// false and explains in `error` if the file cannot be written.
 bool WriteParticlesVtk(const std::string& path, const Particles& particles, double time_s,
-                       const VtkOptions& options, std::string* error);
+                       const VtkOptions& options, std::string* error,
+                       const Clumps* clumps = nullptr);
 
 // The snapshots of one run and their ParaView series index.
 class VtkSeries {
@@ -43,7 +48,8 @@ class VtkSeries {
   VtkSeries(std::string directory, std::string prefix, VtkOptions options);
 
   // Writes the next snapshot and rewrites the series index (so it is valid after a crash).
-  bool Write(const Particles& particles, double time_s, std::string* error);
+  bool Write(const Particles& particles, double time_s, std::string* error,
+             const Clumps* clumps = nullptr);
   const std::vector<Entry>& entries() const { return entries_; }
   std::string SeriesPath() const;
 

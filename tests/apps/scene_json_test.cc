@@ -72,7 +72,7 @@ TEST_CASE("shear moduli become Young's moduli and plane normals are normalised",
   REQUIRE(ParseSceneJson(d, "scene.json", &file, &error));
   CHECK(file.scene.materials[0].youngs_modulus_Pa == Approx(2 * 2e6 * 1.25));
   REQUIRE(file.scene.walls.size() == 1);
-  CHECK(file.scene.walls[0].normal.z == 1.0);
+  CHECK(std::get<demcal::core::PlaneSurface>(file.scene.walls[0].shape).normal.z == 1.0);
   CHECK(file.scene.walls[0].velocity_m_s.z == 0.1);
   CHECK(file.scene.walls[0].name == "walls[0]");
 }
@@ -91,6 +91,83 @@ TEST_CASE("explicit particles and diameter tables are read", "[unit]") {
   CHECK(file.scene.particles[0].species == 1);
   CHECK(file.scene.particles[0].angular_velocity_rad_s.y == 3);
   CHECK(file.scene.species[1].size.table_number_fraction[1] == 0.75);
+}
+
+TEST_CASE("clump shapes are read as explicit spheres or from an ellipsoid", "[unit]") {
+  json d = PourBox();
+  d["species"][0]["clump"] = json::parse(
+      R"({"spheres": [{"centre": [-0.5, 0, 0], "radius": 0.6}, {"centre": [0.5, 0, 0], "radius": 0.6}]})");
+  d["species"].push_back(json::parse(R"({"name": "rods", "material": "glass", "diameter_m": 0.002,
+      "clump": {"ellipsoid": {"semi_axes": [3, 1, 1], "sphere_count": 4}}})"));
+  d["particles"] = json::parse(R"([{"species": "rods", "position_m": [0.02, 0.02, 0.1],
+      "orientation": [2, 0, 0, 0]}])");
+  SceneFile file;
+  std::string error;
+  REQUIRE(ParseSceneJson(d, "scene.json", &file, &error));
+  REQUIRE(file.scene.species[0].clump_shape.size() == 2);
+  CHECK(file.scene.species[0].clump_shape[1].centre.x == 0.5);
+  CHECK(file.scene.species[0].clump_shape[1].radius == 0.6);
+  CHECK(file.scene.species[1].clump_shape.size() == 4);
+  CHECK(file.scene.particles[0].orientation.w == 1.0);  // normalised
+
+  json plain = PourBox();
+  plain["particles"] = json::parse(R"([{"species": "beads", "position_m": [0.02, 0.02, 0.1],
+      "orientation": [1, 0, 0, 0]}])");
+  CHECK_THAT(ErrorOf(plain), Catch::Contains("'particles[0].orientation' applies only to clump "
+                                             "species ('beads' is a plain sphere)"));
+  json bad_axes = d;
+  bad_axes["species"][1]["clump"]["ellipsoid"]["semi_axes"] = json::array({1, 3, 1});
+  CHECK_THAT(ErrorOf(bad_axes), Catch::Contains("'species[1].clump.ellipsoid.semi_axes' must be "
+                                                "[a, b, c] with a >= b >= c > 0"));
+  json zero_radius = d;
+  zero_radius["species"][0]["clump"]["spheres"][1]["radius"] = 0;
+  CHECK_THAT(ErrorOf(zero_radius),
+             Catch::Contains("'species[0].clump.spheres[1].radius' = 0 is outside"));
+}
+
+TEST_CASE("factories are read with box or cylinder regions and mass fractions", "[unit]") {
+  json d = PourBox();
+  d["species"].push_back(
+      json::parse(R"({"name": "fines", "material": "glass", "diameter_m": 0.0015})"));
+  d["factories"] = json::parse(R"([
+    {"name": "hopper", "species": [{"name": "beads", "mass_fraction": 0.7},
+                                   {"name": "fines", "mass_fraction": 0.3}],
+     "region": {"min_m": [0.005, 0.005, 0.08], "max_m": [0.035, 0.035, 0.11]},
+     "mass_rate_kg_s": 0.01, "start_s": 0.1, "end_s": 0.3, "velocity_m_s": [0, 0, -0.2]},
+    {"species": [{"name": "beads"}], "mass_rate_kg_s": 0.005, "total_mass_kg": 0.001,
+     "region": {"shape": "cylinder", "axis_point_m": [0.02, 0.02, 0], "radius_m": 0.01,
+                "z_range_m": [0.08, 0.11]}}])");
+  SceneFile file;
+  std::string error;
+  REQUIRE(ParseSceneJson(d, "scene.json", &file, &error));
+  REQUIRE(file.scene.factories.size() == 2);
+  const auto& hopper = file.scene.factories[0];
+  CHECK(hopper.name == "hopper");
+  CHECK(hopper.species == std::vector<int>{0, 1});
+  CHECK(hopper.mass_fractions == std::vector<double>{0.7, 0.3});
+  CHECK(hopper.end_s == 0.3);
+  CHECK(hopper.velocity_m_s.z == -0.2);
+  const auto& tube = file.scene.factories[1];
+  CHECK(tube.name == "factories[1]");
+  CHECK(tube.mass_fractions == std::vector<double>{1.0});
+  CHECK(tube.region.shape == demcal::core::InsertionRegion::Shape::kCylinder);
+  CHECK(tube.region.radius_m == 0.01);
+  CHECK(tube.total_mass_kg == 0.001);
+
+  json missing_fraction = d;
+  missing_fraction["factories"][0]["species"][1].erase("mass_fraction");
+  CHECK_THAT(ErrorOf(missing_fraction),
+             Catch::Contains("missing required field 'factories[0].species[1].mass_fraction'"));
+  json unknown = d;
+  unknown["factories"][1]["species"][0]["name"] = "sand";
+  CHECK_THAT(ErrorOf(unknown),
+             Catch::Contains("'factories[1].species[0].name' = 'sand' names no species"));
+  json sum = d;
+  sum["factories"][0]["species"][1]["mass_fraction"] = 0.2;
+  CHECK_THAT(ErrorOf(sum), Catch::Contains("'factories[0].species' mass fractions must sum to 1"));
+  json rate = d;
+  rate["factories"][0]["mass_rate_kg_s"] = 0;
+  CHECK_THAT(ErrorOf(rate), Catch::Contains("'factories[0].mass_rate_kg_s' = 0 kg/s is outside"));
 }
 
 TEST_CASE("each kind of bad input gives an error naming the file and the field", "[unit]") {

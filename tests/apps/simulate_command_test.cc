@@ -178,3 +178,32 @@ TEST_CASE("the pour_box example places its 3000 spheres and steps without failur
   CHECK(s["termination"] == "ok");
   CHECK(CountLines(dir.str("out/final_particles.csv")) == 1 + 3000);
 }
+
+TEST_CASE("simulate runs clumps fed by a factory and reports the factory", "[unit]") {
+  json scene = TinyScene();
+  scene["species"][0]["clump"] =
+      json::parse(R"({"ellipsoid": {"semi_axes": [1.5, 1, 1], "sphere_count": 2}})");
+  scene["domain"]["max_m"] = json::array({0.02, 0.02, 0.04});
+  scene["walls"][0]["max_m"] = json::array({0.02, 0.02, 0.04});
+  scene["factories"] = json::parse(R"([{"name": "top", "species": [{"name": "beads"}],
+      "mass_rate_kg_s": 0.002,
+      "region": {"min_m": [0.002, 0.002, 0.025], "max_m": [0.018, 0.018, 0.038]}}])");
+  scene["time"]["duration_s"] = 0.05;
+  ScratchDir dir("simulate_factory");
+  SimulateOptions o;
+  o.scene_path = WriteScene(dir, scene);
+  o.out_dir = dir.str("out");
+  o.quiet = true;
+  std::ostringstream log;
+  REQUIRE(RunSimulate(o, log) == kExitOk);
+  const json s = ReadJson(dir.str("out/summary.json"));
+  CHECK(s["termination"] == "ok");
+  REQUIRE(s["factories"].size() == 1);
+  CHECK(s["factories"][0]["name"] == "top");
+  const int64_t inserted = s["factories"][0]["particles"].get<int64_t>();
+  CHECK(inserted > 0);
+  CHECK(s["particles"].get<int64_t>() == 20 + inserted);  // bodies: clumps count once
+  CHECK(s["outputs"]["final_clumps_csv"] == "final_clumps.csv");
+  CHECK(CountLines(dir.str("out/final_clumps.csv")) == 1 + 20 + inserted);
+  CHECK(CountLines(dir.str("out/final_particles.csv")) == 1 + 2 * (20 + inserted));  // members
+}

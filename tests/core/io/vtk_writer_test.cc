@@ -6,6 +6,7 @@
 
 #include "core/io/legacy_vtk_reader.h"
 #include "core/io/scratch_dir.h"
+#include "core/particle_system.h"
 
 using namespace demcal::core;
 using namespace demcal::core::io;
@@ -37,6 +38,7 @@ void CheckRoundTrip(VtkOptions::Encoding encoding) {
   CHECK(v.field_data.at("TIME") == std::vector<double>{0.125});
   // Points come in id order (2, 5, 7) and are exact (shortest round-trip text or raw bits).
   CHECK(v.point_data.at("id") == std::vector<double>{2, 5, 7});
+  CHECK(v.point_data.at("body_id") == std::vector<double>{2, 5, 7});  // free spheres
   CHECK(v.points[0] == -1.0 / 3.0);
   CHECK(v.points[1] == 1e-9);
   CHECK(v.points[6] == 0.1);
@@ -92,6 +94,21 @@ TEST_CASE("a VTK series indexes every snapshot with its time", "[unit]") {
   CHECK(index["files"][1]["time"].get<double>() == 0.05);
   const auto second = ReadLegacyVtk(dir.str("particles_000001.vtk"));
   CHECK(second.points[8] == 0.25);  // id 7 is the third point
+}
+
+TEST_CASE("VTK snapshots give clump members their clump's id as body_id", "[unit]") {
+  std::vector<Species> species(1);
+  species[0].clump_shape = {{{-0.5, 0, 0}, 0.5}, {{0.5, 0, 0}, 0.5}};
+  ParticleSystem system;
+  std::string error;
+  REQUIRE(system.SetSpecies(species, &error));
+  system.Add(0, 0, 1000, 0.002, {0, 0, 0}, {}, {}, Quaternion());
+  ScratchDir dir("vtk_clump");
+  REQUIRE(WriteParticlesVtk(dir.str("c.vtk"), system.spheres, 0, {}, &error, &system.clumps));
+  const auto v = ReadLegacyVtk(dir.str("c.vtk"));
+  REQUIRE(v.point_data_count == 2);  // the members are the points
+  const double clump_id = static_cast<double>(system.clumps.id[0]);
+  CHECK(v.point_data.at("body_id") == std::vector<double>{clump_id, clump_id});
 }
 
 TEST_CASE("VTK encodings are parsed by name", "[unit]") {
