@@ -34,9 +34,9 @@ TEST_CASE("the particle CSV has unit-named columns and one exact row per particl
   std::ifstream in(dir.str("p.csv"));
   std::string header, row1, row2, extra;
   REQUIRE(std::getline(in, header));
-  CHECK(
-      header ==
-      "id,species,x_m,y_m,z_m,vx_m_s,vy_m_s,vz_m_s,wx_rad_s,wy_rad_s,wz_rad_s,diameter_m,mass_kg");
+  CHECK(header ==
+        "id,species,x_m,y_m,z_m,vx_m_s,vy_m_s,vz_m_s,wx_rad_s,wy_rad_s,wz_rad_s,diameter_m,mass_kg,"
+        "body_id");
   CHECK(Split(header) == io::ParticleCsvColumns());
   REQUIRE(std::getline(in, row1));
   REQUIRE(std::getline(in, row2));
