@@ -14,9 +14,9 @@ using nlohmann::json;
 
 const std::vector<std::string>& TopLevelKeys() {
   static const std::vector<std::string> keys = {
-      "format", "description",  "materials", "species",         "interactions", "contact_model",
-      "domain", "gravity_m_s2", "walls",     "particles",       "fills",        "factories",
-      "seed",   "time",         "skin_m",    "max_wall_time_s", "output"};
+      "format",    "description", "materials",    "species", "interactions",    "contact_model",
+      "domain",    "periodic",    "gravity_m_s2", "walls",   "particles",       "fills",
+      "factories", "seed",        "time",         "skin_m",  "max_wall_time_s", "output"};
   return keys;
 }
 
@@ -26,6 +26,19 @@ void ParseDomain(JsonFields& top, core::Scene* scene, JsonStatus* status) {
   JsonFields f(*domain, "domain", {"min_m", "max_m"}, status);
   f.Vector("min_m", &scene->domain_min_m, kRequired);
   f.Vector("max_m", &scene->domain_max_m, kRequired);
+}
+
+// periodic: {"x": bool, "y": bool, "z": bool}; a periodic axis wraps the domain box.
+void ParsePeriodic(JsonFields& top, core::Scene* scene, JsonStatus* status) {
+  const json* periodic = top.Object("periodic", kOptional);
+  if (!periodic) return;
+  JsonFields f(*periodic, "periodic", {"x", "y", "z"}, status);
+  const char* axes[3] = {"x", "y", "z"};
+  for (int a = 0; a < 3; ++a) {
+    bool on = false;
+    f.Bool(axes[a], &on, kOptional);
+    scene->periodic[a] = on;
+  }
 }
 
 void ParseTime(JsonFields& top, core::Scene* scene, JsonStatus* status) {
@@ -103,6 +116,7 @@ bool ParseSceneJson(const json& document, const std::string& source, SceneFile* 
   internal::ParseInteractions(top, &scene, &status);
   internal::ParseContactModel(top, &scene, &status);
   ParseDomain(top, &scene, &status);
+  ParsePeriodic(top, &scene, &status);
   top.Vector("gravity_m_s2", &scene.gravity_m_s2, kOptional);
   internal::ParseWalls(top, &scene, &status);
   internal::ParseParticles(top, &scene, &status);

@@ -77,6 +77,25 @@ TEST_CASE("shear moduli become Young's moduli and plane normals are normalised",
   CHECK(file.scene.walls[0].name == "walls[0]");
 }
 
+TEST_CASE("periodic axes are read per axis and checked against gravity by the core", "[unit]") {
+  json d = PourBox();
+  d["walls"] = json::array();
+  d["walls"].push_back(json::parse(
+      R"({"type": "plane", "point_m": [0, 0, 0], "normal": [0, 0, 1], "material": "steel"})"));
+  d["periodic"] = json::parse(R"({"x": true, "y": true})");
+  SceneFile file;
+  std::string error;
+  REQUIRE(ParseSceneJson(d, "scene.json", &file, &error));
+  CHECK(file.scene.periodic[0]);
+  CHECK(file.scene.periodic[1]);
+  CHECK_FALSE(file.scene.periodic[2]);
+  d["periodic"]["z"] = true;
+  CHECK_THAT(ErrorOf(d), Catch::Contains("field 'periodic.z': a periodic axis must be "
+                                         "perpendicular to gravity"));
+  d["periodic"] = json::parse(R"({"x": 1})");
+  CHECK_THAT(ErrorOf(d), Catch::Contains("field 'periodic.x' must be true or false"));
+}
+
 TEST_CASE("explicit particles and diameter tables are read", "[unit]") {
   json d = PourBox();
   d["species"].push_back(json::parse(R"({"name": "mix", "material": "glass",
