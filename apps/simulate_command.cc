@@ -63,8 +63,9 @@ int RunSimulate(const SimulateOptions& options, std::ostream& log) {
   // The output directory comes first so that even an invalid scene leaves a summary.json.
   RunOutputs outputs(options.out_dir, loaded ? file.output : OutputSettings{});
   if (!outputs.Prepare(&error)) {
+    if (!loaded) log << "error: " << scene_error << "\n";
     log << "error: " << error << "\n";
-    return kExitOutputError;
+    return loaded ? kExitOutputError : kExitInvalidInput;
   }
   auto finish = [&](int code) {
     record.total_wall_time_s = SecondsSince(start);
