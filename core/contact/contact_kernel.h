@@ -18,7 +18,7 @@ struct ContactModel {
 
   // Whether a pair at this overlap is in contact. Without adhesion: when pressed (δ > 0). With
   // JKR: a new contact forms at δ > 0 and an existing one survives until δ <= −BreakGap.
-  static bool InContact(double overlap, bool was_in_contact, double r_eff, const ResolvedPair& p) {
+  DEMCAL_HOT_INLINE static bool InContact(double overlap, bool was_in_contact, double r_eff, const ResolvedPair& p) {
     if (overlap > 0) return true;
     if constexpr (Normal::kAdhesive) {
       return was_in_contact && p.interfacial_energy_J_m2 > 0 &&
@@ -27,7 +27,7 @@ struct ContactModel {
     return false;
   }
 
-  ContactResult Evaluate(const ContactGeometry& g, const ResolvedPair& p, double dt,
+  DEMCAL_HOT_INLINE ContactResult Evaluate(const ContactGeometry& g, const ResolvedPair& p, double dt,
                          ContactHistory& h) const {
     const NormalForce n = Normal::Compute(g, p);
     const Vec3 f_t = MindlinTangential::Compute(g, p, n, dt, h);

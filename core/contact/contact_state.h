@@ -6,6 +6,10 @@
 #include "core/interaction_table.h"
 #include "core/vec3.h"
 
+// Contact-law functions run once per contact per step; they must be inlined into the force loop
+// (GCC's heuristics otherwise keep some as calls once the loop body grows).
+#define DEMCAL_HOT_INLINE [[gnu::always_inline]] inline
+
 namespace demcal::core {
 
 // Per-contact memory kept between steps (zeroed when the contact ends).

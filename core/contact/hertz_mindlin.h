@@ -13,7 +13,7 @@ struct HertzMindlinNormal {
   static constexpr bool kAdhesive = false;
   static double BreakGap(double, double, double) { return 0; }
 
-  static NormalForce Compute(const ContactGeometry& g, const ResolvedPair& p) {
+  DEMCAL_HOT_INLINE static NormalForce Compute(const ContactGeometry& g, const ResolvedPair& p) {
     constexpr double kTwoSqrtFiveSixths = 1.8257418583505538;  // 2 sqrt(5/6)
     const double a = std::sqrt(g.effective_radius_m * g.overlap_m);
     const double e_star = p.effective_youngs_Pa;

@@ -52,7 +52,7 @@ struct JkrNormal {
     return a;
   }
 
-  static NormalForce Compute(const ContactGeometry& g, const ResolvedPair& p) {
+  DEMCAL_HOT_INLINE static NormalForce Compute(const ContactGeometry& g, const ResolvedPair& p) {
     const double gamma = p.interfacial_energy_J_m2;
     if (gamma <= 0) return HertzMindlinNormal::Compute(g, p);
     constexpr double kTwoSqrtFiveSixths = 1.8257418583505538;

@@ -12,7 +12,7 @@
 namespace demcal::core {
 
 struct MindlinTangential {
-  static Vec3 Compute(const ContactGeometry& g, const ResolvedPair& p, const NormalForce& n,
+  DEMCAL_HOT_INLINE static Vec3 Compute(const ContactGeometry& g, const ResolvedPair& p, const NormalForce& n,
                       double dt, ContactHistory& h) {
     constexpr double kTwoSqrtFiveSixths = 1.8257418583505538;
     const Vec3 v_t = g.relative_velocity_m_s - Dot(g.relative_velocity_m_s, g.normal) * g.normal;

@@ -11,7 +11,7 @@ namespace demcal::core {
 
 struct RollingCdt {
   static constexpr const char* kName = "cdt";
-  void Apply(const ContactGeometry& g, const ResolvedPair& p, const NormalForce& n, double,
+  DEMCAL_HOT_INLINE void Apply(const ContactGeometry& g, const ResolvedPair& p, const NormalForce& n, double,
              ContactHistory&, ContactResult& r) const {
     const double magnitude = p.rolling_friction * n.rolling_load_N;
     r.torque_i -= TorqueDirection(g.omega_i) * (magnitude * g.radius_i_m);

@@ -22,7 +22,7 @@ struct RollingEpsd {
   static RollingEpsd Epsd(double damping_ratio = 0.3) { return {"epsd", false, damping_ratio}; }
   static RollingEpsd Epsd2() { return {"epsd2", true, 0.0}; }
 
-  void Apply(const ContactGeometry& g, const ResolvedPair& p, const NormalForce& n, double dt,
+  DEMCAL_HOT_INLINE void Apply(const ContactGeometry& g, const ResolvedPair& p, const NormalForce& n, double dt,
              ContactHistory& h, ContactResult& r) const {
     const double mu_r = p.rolling_friction;
     if (mu_r <= 0) return;
