@@ -8,7 +8,7 @@
 
 namespace demcal::core {
 namespace {
-constexpr char kMagic[] = "demcal-checkpoint/1";
+constexpr char kMagic[] = "demcal-checkpoint/2";  // 2: mesh wall histories, wall loads
 }  // namespace
 
 template <class A>
@@ -66,6 +66,7 @@ bool Simulation::LoadCheckpoint(const std::string& path, std::string* error) {
     if (error) *error = "checkpoint '" + path + "' is truncated or corrupt";
     return false;
   }
+  PlaceWalls(time_s_);
   return true;
 }
 

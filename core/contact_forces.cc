@@ -39,22 +39,6 @@ inline bool PairGeometry(const Particles& p, size_t i, uint32_t j, bool was_in_c
   return true;
 }
 
-inline ContactGeometry WallGeometry(const Particles& p, size_t i, const PlaneWall& wall,
-                                    double overlap) {
-  ContactGeometry g;
-  const double ri = p.radius_m[i];
-  g.normal = wall.normal;
-  g.overlap_m = overlap;
-  g.radius_i_m = ri;
-  g.radius_j_m = 0;
-  g.effective_radius_m = ri;
-  g.mass_i_kg = g.effective_mass_kg = p.mass_kg[i];
-  g.mass_j_kg = 0;
-  g.omega_i = p.angular_velocity_rad_s[i];
-  g.relative_velocity_m_s = p.velocity_m_s[i] - wall.velocity_m_s - Cross(ri * g.omega_i, wall.normal);
-  return g;
-}
-
 template <class Model>
 bool ContactForces::EvaluatePair(const Particles& p, const InteractionTable& table,
                                  const Model& model, double dt, size_t i, uint32_t k, uint32_t j,
@@ -91,7 +75,7 @@ void ContactForces::ComputeCrossChunkPairs(const Particles& p, const NeighbourLi
 
 template <class Model>
 void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
-                             const std::vector<PlaneWall>& walls, const InteractionTable& table,
+                             const std::vector<Wall>& walls, const InteractionTable& table,
                              const Model& model, const Vec3& gravity, double dt, size_t c) {
   const uint32_t begin = chunk_[c], end = chunk_[c + 1];
   const uint32_t first_own_entry = list.RowBegin(begin);
@@ -126,20 +110,7 @@ void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
       p.force_N[j] -= r.force_i;
       p.torque_N_m[j] += r.torque_j;
     }
-    for (uint32_t e = wall_start_[i]; e < wall_start_[i + 1]; ++e) {
-      const PlaneWall& wall = walls[wall_index_[e]];
-      const double overlap = p.radius_m[i] - Dot(p.position_m[i] - wall.point_m, wall.normal);
-      const ResolvedPair& pair = table.Get(p.material[i], wall.material);
-      if (!Model::InContact(overlap, wall_active_[e], p.radius_m[i], pair)) {
-        if (wall_active_[e]) wall_history_[e] = ContactHistory{}, wall_active_[e] = 0;
-        continue;
-      }
-      const ContactResult r =
-          model.Evaluate(WallGeometry(p, i, wall, overlap), pair, dt, wall_history_[e]);
-      wall_active_[e] = 1;
-      fi += r.force_i;
-      ti += r.torque_i;
-    }
+    walls_.Sum(p, i, walls, table, model, dt, mesh_scratch_[c], fi, ti);
   }
 }
 
@@ -156,9 +127,9 @@ void ContactForces::SplitIntoChunks(const NeighbourList& list, size_t n) {
 }
 
 void ContactForces::Compute(Particles& p, const NeighbourList& list,
-                            const std::vector<PlaneWall>& walls, const InteractionTable& table,
-                            const RollingModel& rolling, bool adhesive, const Vec3& gravity,
-                            double dt) {
+                            const std::vector<Wall>& walls, double time_s,
+                            const InteractionTable& table, const RollingModel& rolling,
+                            bool adhesive, const Vec3& gravity, double dt) {
   if (pair_history_.size() != list.PairCount()) {
     pair_history_.resize(list.PairCount());
     pair_active_.resize(list.PairCount(), 0);
@@ -166,6 +137,8 @@ void ContactForces::Compute(Particles& p, const NeighbourList& list,
   pair_result_.resize(list.PairCount());
   SplitIntoChunks(list, p.Size());
   const size_t chunks = chunk_.size() - 1;
+  if (mesh_scratch_.size() < chunks) mesh_scratch_.resize(chunks);
+  walls_.SetVelocities(walls, time_s);
   auto run = [&](const auto& model) {
     if (chunks == 1) {
       SumChunk(p, list, walls, table, model, gravity, dt, 0);
@@ -189,9 +162,9 @@ void ContactForces::Compute(Particles& p, const NeighbourList& list,
 
 void ContactForces::Rebuild(const Particles& p, const NeighbourList& old_list,
                             const NeighbourList& new_list, const std::vector<uint32_t>& order,
-                            const std::vector<PlaneWall>& walls, double skin_m) {
+                            const std::vector<Wall>& walls, double skin_m) {
   RemapPairs(old_list, new_list, order);
-  RebuildWallCandidates(p, order, walls, skin_m);
+  walls_.Rebuild(p, order, walls, skin_m);
 }
 
 void ContactForces::RemapPairs(const NeighbourList& old_list, const NeighbourList& new_list,
@@ -219,39 +192,6 @@ void ContactForces::RemapPairs(const NeighbourList& old_list, const NeighbourLis
   pair_active_.swap(active);
 }
 
-void ContactForces::RebuildWallCandidates(const Particles& p, const std::vector<uint32_t>& order,
-                                          const std::vector<PlaneWall>& walls, double skin_m) {
-  const size_t n = p.Size();
-  auto old_slot = [&](size_t s) { return order.empty() ? s : order[s]; };
-  const size_t old_n = wall_start_.size() - 1;  // particles appended since keep no history
-  std::vector<uint32_t> start(n + 1, 0), index;
-  std::vector<ContactHistory> history;
-  std::vector<uint8_t> active;
-  for (size_t i = 0; i < n; ++i) {
-    for (uint32_t w = 0; w < walls.size(); ++w) {
-      const PlaneWall& wall = walls[w];
-      const bool moving = !(wall.velocity_m_s == Vec3{});
-      const double gap = Dot(p.position_m[i] - wall.point_m, wall.normal) - p.radius_m[i];
-      if (!moving && gap > skin_m) continue;
-      ContactHistory h;
-      uint8_t on = 0;
-      const size_t o = old_slot(i);
-      if (o < old_n) {  // keep the history of a wall contact that persists
-        for (uint32_t e = wall_start_[o]; e < wall_start_[o + 1]; ++e)
-          if (wall_index_[e] == w) h = wall_history_[e], on = wall_active_[e];
-      }
-      index.push_back(w);
-      history.push_back(h);
-      active.push_back(on);
-    }
-    start[i + 1] = static_cast<uint32_t>(index.size());
-  }
-  wall_start_.swap(start);
-  wall_index_.swap(index);
-  wall_history_.swap(history);
-  wall_active_.swap(active);
-}
-
 double ContactForces::PairElasticEnergy(const Particles& p, const NeighbourList& list,
                                         const InteractionTable& table) const {
   double energy = 0;
@@ -270,7 +210,7 @@ double ContactForces::PairElasticEnergy(const Particles& p, const NeighbourList&
 
 size_t ContactForces::ActiveContacts() const {
   return std::accumulate(pair_active_.begin(), pair_active_.end(), size_t{0}) +
-         std::accumulate(wall_active_.begin(), wall_active_.end(), size_t{0});
+         walls_.ActiveContacts();
 }
 
 }  // namespace demcal::core

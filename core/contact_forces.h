@@ -1,7 +1,8 @@
 #pragma once
 // ContactForces: evaluates every particle–particle and particle–wall contact and accumulates
 // force and torque per particle, keeping the per-contact histories (tangential spring, rolling
-// spring) across steps and across neighbour-list rebuilds.
+// spring) across steps and across neighbour-list rebuilds. Wall contacts of every shape (plane,
+// cylinder, cone, mesh) and the loads on the walls are kept by WallContacts.
 //
 // Determinism: particles are split into one contiguous chunk per worker; each pair is evaluated
 // once, and every particle's force is summed in the order of a serial sweep (see SumChunk), so
@@ -14,6 +15,7 @@
 #include "core/interaction_table.h"
 #include "core/neighbour_list.h"
 #include "core/particles.h"
+#include "core/wall_contacts.h"
 #include "core/walls.h"
 
 namespace demcal::core {
@@ -22,16 +24,18 @@ class ContactForces {
  public:
   // Sets all forces and torques of `p` (gravity included). `adhesive` selects the JKR normal
   // model (needed when any pair has Γ > 0; pairs with Γ = 0 still get plain Hertz–Mindlin).
-  void Compute(Particles& p, const NeighbourList& list, const std::vector<PlaneWall>& walls,
-               const InteractionTable& table, const RollingModel& rolling, bool adhesive,
-               const Vec3& gravity, double dt);
+  // `walls` are placed where they are at time_s (the time of the positions in `p`), which also
+  // selects their velocities.
+  void Compute(Particles& p, const NeighbourList& list, const std::vector<Wall>& walls,
+               double time_s, const InteractionTable& table, const RollingModel& rolling,
+               bool adhesive, const Vec3& gravity, double dt);
 
   // Called after every neighbour-list rebuild: carries pair histories over to the new list and
   // lists, per particle, the walls within its radius + skin (moving walls always), keeping their
   // histories. `order[new_slot] = old_slot` describes a particle permutation applied together
   // with the rebuild (identity if empty).
   void Rebuild(const Particles& p, const NeighbourList& old_list, const NeighbourList& new_list,
-               const std::vector<uint32_t>& order, const std::vector<PlaneWall>& walls,
+               const std::vector<uint32_t>& order, const std::vector<Wall>& walls,
                double skin_m);
 
   // Hertz elastic energy stored in the overlapping particle pairs, (8/15) E* sqrt(R*) δ^{5/2}
@@ -44,11 +48,15 @@ class ContactForces {
 
   // Number of particle–particle and particle–wall contacts with positive overlap last step.
   size_t ActiveContacts() const;
+  // Force and torque the particles exerted on each wall in the last Compute (see WallContacts).
+  std::vector<WallLoad> WallLoads(const Particles& p, const std::vector<Wall>& walls) const {
+    return walls_.Loads(p, walls);
+  }
   // Checkpointing: every contact history and wall candidate list.
   template <class A>
   void Serialize(A& a) {
-    a.Vector(pair_history_), a.Vector(pair_active_), a.Vector(wall_start_), a.Vector(wall_index_);
-    a.Vector(wall_history_), a.Vector(wall_active_);
+    a.Vector(pair_history_), a.Vector(pair_active_);
+    walls_.Serialize(a);
   }
 
   const std::vector<ContactHistory>& PairHistory() const { return pair_history_; }
@@ -63,26 +71,21 @@ class ContactForces {
                               const InteractionTable& table, const Model& model, double dt,
                               size_t chunk);
   template <class Model>
-  void SumChunk(Particles& p, const NeighbourList& list, const std::vector<PlaneWall>& walls,
+  void SumChunk(Particles& p, const NeighbourList& list, const std::vector<Wall>& walls,
                 const InteractionTable& table, const Model& model, const Vec3& gravity,
                 double dt, size_t chunk);
   void SplitIntoChunks(const NeighbourList& list, size_t n);
 
   void RemapPairs(const NeighbourList& old_list, const NeighbourList& new_list,
                   const std::vector<uint32_t>& order);
-  void RebuildWallCandidates(const Particles& p, const std::vector<uint32_t>& order,
-                             const std::vector<PlaneWall>& walls, double skin_m);
 
   std::vector<ContactHistory> pair_history_;  // aligned with NeighbourList entries
   std::vector<ContactResult> pair_result_;    // cross-chunk pairs only, aligned with entries
   std::vector<uint8_t> pair_active_;
   PeriodicBox periodic_;
   std::vector<uint32_t> chunk_;               // particle-slot boundaries of the worker chunks
-  // Wall candidates in compressed rows: particle i's entries are [wall_start_[i], wall_start_[i+1]).
-  std::vector<uint32_t> wall_start_{0};
-  std::vector<uint32_t> wall_index_;
-  std::vector<ContactHistory> wall_history_;  // aligned with wall_index_
-  std::vector<uint8_t> wall_active_;
+  WallContacts walls_;
+  std::vector<std::vector<MeshContact>> mesh_scratch_;  // one per chunk, reused
 };
 
 }  // namespace demcal::core

@@ -101,17 +101,50 @@ void CheckPairs(const Scene& s, Checker& c) {
   }
 }
 
+// A surface's IsValid message "cylinder: radius_m must be ..." becomes
+// "field 'walls[2].radius_m' must be ... (cylinder 'silo')".
+void CheckWall(const Scene& s, size_t i, Checker& c) {
+  const Wall& w = s.walls[i];
+  const std::string f = Indexed("walls", i);
+  if (w.material < 0 || w.material >= static_cast<int>(s.materials.size()))
+    c.Fail("field '" + f + ".material' names no defined material");
+  std::string message;
+  const bool shape_ok = std::visit(
+      [&](const auto& shape) {
+        using S = std::decay_t<decltype(shape)>;
+        if constexpr (std::is_same_v<S, MeshRef>) {
+          if (shape.mesh && IsFinite(shape.offset_m)) return true;
+          message = shape.mesh ? "mesh: offset_m is not finite"
+                               : "mesh: mesh holds no triangle mesh (read the STL file with "
+                                 "ReadMeshWall before validating the scene)";
+          return false;
+        } else {
+          return shape.IsValid(&message);
+        }
+      },
+      w.shape);
+  if (!shape_ok) {
+    const size_t colon = message.find(": ");
+    const size_t space = message.find(' ', colon + 2);
+    if (colon == std::string::npos || space == std::string::npos) {
+      c.Fail("field '" + f + "' (" + ShapeName(w.shape) + "): " + message);
+    } else {
+      c.Fail("field '" + f + "." + message.substr(colon + 2, space - colon - 2) + "'" +
+             message.substr(space) + " (" + ShapeName(w.shape) + " '" + w.name + "')");
+    }
+  }
+  if (!IsFinite(w.velocity_m_s)) c.Fail("field '" + f + ".velocity_m_s' must be finite");
+  if (!IsFinite(w.load_point_m)) c.Fail("field '" + f + ".load_point_m' must be finite");
+  c.Range(f + ".motion_start_s", w.motion_start_s, 0, 1e9, false, false, "s");
+  if (!std::isinf(w.motion_end_s) || w.motion_end_s < 0)
+    c.Range(f + ".motion_end_s", w.motion_end_s, w.motion_start_s, 1e9, false, false, "s");
+}
+
 void CheckGeometry(const Scene& s, Checker& c) {
   for (int a = 0; a < 3; ++a)
     if (!(s.domain_max_m[a] > s.domain_min_m[a]))
       c.Fail("field 'domain.max_m' must exceed 'domain.min_m' on every axis");
-  for (size_t i = 0; i < s.walls.size(); ++i) {
-    const PlaneWall& w = s.walls[i];
-    if (std::abs(Norm(w.normal) - 1.0) > 1e-9)
-      c.Fail("field '" + Indexed("walls", i) + ".normal' must be a unit vector");
-    if (w.material < 0 || w.material >= static_cast<int>(s.materials.size()))
-      c.Fail("field '" + Indexed("walls", i) + ".material' names no defined material");
-  }
+  for (size_t i = 0; i < s.walls.size(); ++i) CheckWall(s, i, c);
   if (!IsFinite(s.gravity_m_s2)) c.Fail("field 'gravity_m_s2' must be finite");
   const char* axis_names[3] = {"x", "y", "z"};
   for (int a = 0; a < 3 && c.ok(); ++a) {

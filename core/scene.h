@@ -53,7 +53,7 @@ struct Scene {
   std::vector<Species> species;
   std::vector<PairParameters> pair_parameters;  // materials² entries, symmetric, row-major
   RollingModelSpec rolling;
-  std::vector<PlaneWall> walls;
+  std::vector<Wall> walls;  // meshes already read (see ReadMeshWall); PlaneWall converts
   Vec3 domain_min_m, domain_max_m;  // a particle leaving this box ends the run
   std::array<bool, 3> periodic{};   // periodic boundaries along x, y, z of the domain box
   Vec3 gravity_m_s2{0, 0, -9.81};

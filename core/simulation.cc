@@ -73,9 +73,13 @@ bool Simulation::Initialize(std::string* error) {
   list_settings_ = {scene_.domain_min_m, scene_.domain_max_m, NeighbourSkin(scene_),
                     0.5 * scene_.MaxDiameter(), box};
   forces_.SetPeriodic(box);
+  walls_ = scene_.walls;
+  walls_move_ = false;
+  for (const Wall& w : walls_) walls_move_ = walls_move_ || w.Moves();
+  PlaceWalls(time_s_);
   arena_->execute([&] {
     RebuildNeighbours(true);
-    ComputeForces();
+    ComputeForces(time_s_);
     system_.ReduceClumpForces(scene_.gravity_m_s2);
   });
   CreateFactories();
@@ -173,20 +177,44 @@ void Simulation::RebuildNeighbours(bool allow_reorder) {
   }
   ++rebuilds_since_reorder_;
   list_.Build(list_settings_, p.position_m, p.radius_m, system_.clumps.Size() ? &p.body : nullptr);
-  forces_.Rebuild(p, spare_list_, list_, order, scene_.walls, list_settings_.skin_m);
+  forces_.Rebuild(p, spare_list_, list_, order, walls_, list_settings_.skin_m);
 }
 
-void Simulation::ComputeForces() {
-  forces_.Compute(system_.spheres, list_, scene_.walls, table_, rolling_, adhesive_,
+void Simulation::PlaceWalls(double time_s) {
+  if (!walls_move_) return;
+  for (size_t w = 0; w < walls_.size(); ++w) {
+    const Wall& initial = scene_.walls[w];
+    if (!initial.Moves()) continue;
+    const Vec3 d = initial.DisplacementAt(time_s);
+    ShapeOrigin(walls_[w].shape) = ShapeOrigin(initial.shape) + d;
+    walls_[w].load_point_m = initial.load_point_m + d;
+  }
+}
+
+void Simulation::AddWallWork(double time_s) {
+  if (!walls_move_) return;
+  const std::vector<WallLoad> loads = WallLoads();
+  double work = 0;  // by the walls on the particles: −(force on the wall) · v Δt
+  for (size_t w = 0; w < walls_.size(); ++w)
+    work -= Dot(loads[w].force_N, walls_[w].VelocityAt(time_s)) * dt_;
+  energy_budget_J_ += work;
+  energy_scale_J_ += std::abs(work);
+}
+
+void Simulation::ComputeForces(double time_s) {
+  forces_.Compute(system_.spheres, list_, walls_, time_s, table_, rolling_, adhesive_,
                   scene_.gravity_m_s2, dt_);
 }
 
 void Simulation::Step() {
   system_.KickDrift(dt_);
   if (list_settings_.periodic.Any()) system_.WrapPeriodic(list_settings_.periodic);
+  const double t = time_s_ + dt_;  // the time of the drifted positions
+  PlaceWalls(t);
   const bool inserted = !factories_.empty() && InsertFromFactories();
   if (inserted || list_.NeedsRebuild(system_.spheres.position_m)) RebuildNeighbours(true);
-  ComputeForces();
+  ComputeForces(t);
+  AddWallWork(t);
   system_.ReduceAndKick(scene_.gravity_m_s2, dt_);
   time_s_ += dt_;
   ++steps_;

@@ -70,6 +70,11 @@ class Simulation {
   double timestep_s() const { return dt_; }
   double KineticEnergy() const { return system_.KineticEnergy(); }
   size_t ActiveContacts() const { return forces_.ActiveContacts(); }
+  // The walls where they are now (moving walls translated; scene().walls holds them at t = 0).
+  const std::vector<Wall>& walls() const { return walls_; }
+  // Per wall (scene order): the force and torque the particles exerted on it in the last force
+  // pass (the last step, or Initialize). Summed in particle order: identical for any thread count.
+  std::vector<WallLoad> WallLoads() const { return forces_.WallLoads(system_.spheres, walls_); }
   const NeighbourList& neighbours() const { return list_; }
   std::vector<FactoryReport> FactoryReports() const;
 
@@ -79,7 +84,11 @@ class Simulation {
   // Runs the factories due now; true if particles were added.
   bool InsertFromFactories();
   void Step();
-  void ComputeForces();
+  // Translates the moving walls to where they are at time t.
+  void PlaceWalls(double time_s);
+  // Adds the work the moving walls did on the particles this step to the energy budget.
+  void AddWallWork(double time_s);
+  void ComputeForces(double time_s);
   template <class A>
   void SerializeState(A& a);
   void RebuildNeighbours(bool allow_reorder);
@@ -96,6 +105,8 @@ class Simulation {
   NeighbourList spare_list_;  // the previous list, kept for history transfer and its buffers
   NeighbourList::Settings list_settings_;
   ContactForces forces_;
+  std::vector<Wall> walls_;  // current placement of scene_.walls
+  bool walls_move_ = false;
   std::vector<ParticleFactory> factories_;
   double dt_ = 0;
   double time_s_ = 0;

@@ -72,7 +72,7 @@ TEST_CASE("shear moduli become Young's moduli and plane normals are normalised",
   REQUIRE(ParseSceneJson(d, "scene.json", &file, &error));
   CHECK(file.scene.materials[0].youngs_modulus_Pa == Approx(2 * 2e6 * 1.25));
   REQUIRE(file.scene.walls.size() == 1);
-  CHECK(file.scene.walls[0].normal.z == 1.0);
+  CHECK(std::get<demcal::core::PlaneSurface>(file.scene.walls[0].shape).normal.z == 1.0);
   CHECK(file.scene.walls[0].velocity_m_s.z == 0.1);
   CHECK(file.scene.walls[0].name == "walls[0]");
 }

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "core/simulation.h"
+#include "core/wall_test_support.h"
 
 using namespace demcal::core;
 
@@ -93,5 +94,48 @@ TEST_CASE("a checkpoint of another scene or a corrupt file is refused", "[unit][
   REQUIRE(c.Initialize(&err));
   CHECK_FALSE(c.LoadCheckpoint(path, &err));
   CHECK_THAT(err, Catch::Contains("truncated"));
+  std::remove(path.c_str());
+}
+
+TEST_CASE("a restart with mesh and moving walls continues bit-identically", "[unit][checkpoint]") {
+  // Spheres poured into a mesh box (several mesh contacts per sphere, each with its history)
+  // onto a mesh plate that starts to slide, beside a rising cylinder.
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "demcal_checkpoint_mesh_test.bin").string();
+  Scene s = RichScene();
+  s.walls = {wall_test::MeshBox("box", {0, 0, 0}, {0.03, 0.03, 0.1}, /*open_top=*/true)};
+  Wall plate = wall_test::MeshPlate("plate", 0.008, 0);
+  std::get<MeshRef>(plate.shape).offset_m = {0.015, 0.015, 0.005};
+  plate.velocity_m_s = {0.02, 0.01, 0};
+  plate.motion_start_s = 0.12;
+  s.walls.push_back(plate);
+  Wall post("post", 0, CylinderSurface{.axis_point_m = {0.004, 0.004, 0}, .radius_m = 0.002,
+                                       .inside = false});
+  post.velocity_m_s = {0, 0, 0.05};
+  s.walls.push_back(post);
+  std::string err;
+  Simulation reference(s, {.threads = 2});
+  REQUIRE(reference.Initialize(&err));
+  REQUIRE(reference.Run(0.15).ok());
+  REQUIRE(reference.SaveCheckpoint(path, &err));
+  REQUIRE(reference.Run(0.1).ok());
+
+  Simulation restarted(s, {.threads = 1});
+  REQUIRE(restarted.Initialize(&err));
+  REQUIRE(restarted.LoadCheckpoint(path, &err));
+  REQUIRE(restarted.Run(0.1).ok());
+  CHECK(restarted.particles().position_m == reference.particles().position_m);
+  CHECK(restarted.particles().angular_velocity_rad_s ==
+        reference.particles().angular_velocity_rad_s);
+  CHECK(restarted.ActiveContacts() == reference.ActiveContacts());
+  CHECK(std::get<MeshRef>(restarted.walls()[1].shape).offset_m ==
+        std::get<MeshRef>(reference.walls()[1].shape).offset_m);
+  const std::vector<WallLoad> a = reference.WallLoads(), b = restarted.WallLoads();
+  for (size_t w = 0; w < a.size(); ++w) {
+    CHECK(a[w].force_N == b[w].force_N);
+    CHECK(a[w].torque_N_m == b[w].torque_N_m);
+  }
+  CHECK(Norm(a[0].force_N) > 0);
+  CHECK(Norm(a[1].force_N) > 0);
   std::remove(path.c_str());
 }

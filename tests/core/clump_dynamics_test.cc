@@ -24,7 +24,7 @@ Scene ThrownOnFloor(bool as_clump) {
   pair.restitution = 0.6;
   s.pair_parameters = {pair};
   s.rolling.name = "epsd";
-  s.walls = {{"floor", {0, 0, 0}, {0, 0, 1}, 0, {}}};
+  s.walls = {PlaneWall{"floor", {0, 0, 0}, {0, 0, 1}, 0, {}}};
   s.domain_min_m = {-1, -1, -0.01};
   s.domain_max_m = {1, 1, 0.2};
   s.particles = {{0, {0, 0, 0.01}, {0.3, 0.1, -0.2}, {5, -20, 3}, 0, {}}};

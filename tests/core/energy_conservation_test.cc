@@ -33,8 +33,10 @@ double ElasticEnergy(const Simulation& sim) {
       u += hertz(p.radius_m[i] * p.radius_m[j] / rsum,
                  rsum - Norm(p.position_m[i] - p.position_m[j]));
     }
-    for (const PlaneWall& w : s.walls)
-      u += hertz(p.radius_m[i], p.radius_m[i] - Dot(p.position_m[i] - w.point_m, w.normal));
+    for (const Wall& w : s.walls) {
+      const PlaneSurface& plane = std::get<PlaneSurface>(w.shape);
+      u += hertz(p.radius_m[i], p.radius_m[i] - Dot(p.position_m[i] - plane.point_m, plane.normal));
+    }
   }
   return u;
 }

@@ -185,7 +185,7 @@ TEST_CASE("Chung & Ooi test 2: elastic impact of a sphere on a rigid plane match
                                   SphereMass(r, c.material.density_kg_m3), v);
       Scene s = ImpactScene(c.material, &wall, 2 * r, 1.0, 0.35);
       const double gap = 1e-6;
-      s.walls = {{"floor", {0, 0, 0}, {0, 0, 1}, 1, {}}};
+      s.walls = {PlaneWall{"floor", {0, 0, 0}, {0, 0, 1}, 1, {}}};
       s.particles = {{0, {0, 0, r + gap}, {0, 0, -v}, {}, 2 * r}};
       s.domain_min_m = {-1, -1, -1};
       s.domain_max_m = {1, 1, 1};
@@ -218,7 +218,7 @@ TEST_CASE("Chung & Ooi test 3: restitution out equals restitution in", "[physics
         const Hertz h = HertzImpact(EffectiveYoungs(m, wall), r, SphereMass(r, m.density_kg_m3), v);
         Scene s = ImpactScene(m, &wall, 2 * r, e, 0.0);
         const double gap = 1e-6;
-        s.walls = {{"floor", {0, 0, 0}, {0, 0, 1}, 1, {}}};
+        s.walls = {PlaneWall{"floor", {0, 0, 0}, {0, 0, 1}, 1, {}}};
         s.particles = {{0, {0, 0, r + gap}, {0, 0, -v}, {}, 2 * r}};
         s.domain_min_m = {-0.1, -0.1, -0.1};
         s.domain_max_m = {0.1, 0.1, 0.1};

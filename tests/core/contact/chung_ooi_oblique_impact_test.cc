@@ -43,7 +43,7 @@ Rebound ObliqueImpact(const Material& m, double r, double restitution, double fr
   s.pair_parameters.assign(4, pp);
   s.rolling.name = "none";
   s.gravity_m_s2 = {0, 0, 0};
-  s.walls = {{"floor", {0, 0, 0}, {0, 0, 1}, 1, {}}};
+  s.walls = {PlaneWall{"floor", {0, 0, 0}, {0, 0, 1}, 1, {}}};
   const double gap = 1e-3 * r;
   s.particles = {{0, {0, 0, r + gap}, {v_t, 0, -v_n}, {}, 2 * r}};
   s.domain_min_m = {-0.5, -0.5, -0.5};

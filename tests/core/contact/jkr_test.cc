@@ -83,7 +83,7 @@ Scene SphereOnFloor(double restitution, double gamma, double z, double vz, doubl
   pair.interfacial_energy_J_m2 = gamma;
   s.pair_parameters = {pair};
   s.rolling.name = "none";
-  s.walls = {{"floor", {0, 0, 0}, {0, 0, 1}, 0, {}}};
+  s.walls = {PlaneWall{"floor", {0, 0, 0}, {0, 0, 1}, 0, {}}};
   s.domain_min_m = {-0.01, -0.01, -0.01};
   s.domain_max_m = {0.01, 0.01, 0.05};
   s.gravity_m_s2 = {0, 0, 0};

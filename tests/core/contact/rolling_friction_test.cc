@@ -37,7 +37,7 @@ Scene SphereOnFloor(const std::string& rolling, double mu_r, const Vec3& gravity
   s.pair_parameters = {pp};
   s.rolling.name = rolling;
   s.gravity_m_s2 = gravity;
-  s.walls = {{"floor", {0, 0, 0}, {0, 0, 1}, 0, {}}};
+  s.walls = {PlaneWall{"floor", {0, 0, 0}, {0, 0, 1}, 0, {}}};
   const double mass =
       kMaterial.density_kg_m3 * 4.0 / 3.0 * std::numbers::pi * kRadius * kRadius * kRadius;
   const double e_star =

@@ -24,7 +24,7 @@ TEST_CASE("a sphere launched without spin slides, then rolls at 5/7 of its speed
   s.pair_parameters = {pp};
   s.rolling.name = "none";
   s.gravity_m_s2 = {0, 0, -g};
-  s.walls = {{"floor", {0, 0, 0}, {0, 0, 1}, 0, {}}};
+  s.walls = {PlaneWall{"floor", {0, 0, 0}, {0, 0, 1}, 0, {}}};
   // Start at the static Hertz overlap, m g = (4/3) E* sqrt(R) δ^{3/2}, so the sphere does not
   // bounce (E* = E/(2(1 − ν²)) for a wall of the same material).
   const double mass = m.density_kg_m3 * 4.0 / 3.0 * std::numbers::pi * r * r * r;
