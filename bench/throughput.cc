@@ -18,7 +18,7 @@ namespace {
 Scene BenchScene(int particles, uint64_t seed) {
   Scene s;
   s.materials = {{"glass", 5e6, 0.25, 2500}};
-  s.species = {{"sphere", 0, {}}};
+  s.species = {{"sphere", 0, {}, {}}};
   s.species[0].size.diameter_m = 0.002;
   PairParameters pair;
   pair.sliding_friction = 0.5;
@@ -56,7 +56,7 @@ bool LoadBed(const std::string& path, Scene& scene) {
   in.read(reinterpret_cast<char*>(w.data()), n * sizeof(Vec3));
   if (!in) return false;
   scene.fills.clear();
-  for (uint64_t i = 0; i < n; ++i) scene.particles.push_back({0, x[i], v[i], w[i], 0.002});
+  for (uint64_t i = 0; i < n; ++i) scene.particles.push_back({0, x[i], v[i], w[i], 0.002, {}});
   return true;
 }
 

@@ -14,7 +14,7 @@ namespace demcal::core {
 
 // Geometry of the contact between listed partners i < j, or false if they are not in contact.
 template <class Model>
-inline bool PairGeometry(const Particles& p, size_t i, uint32_t j, bool was_in_contact,
+DEMCAL_HOT_INLINE bool PairGeometry(const Particles& p, size_t i, uint32_t j, bool was_in_contact,
                          const ResolvedPair& pair, const PeriodicBox* box, ContactGeometry& g) {
   const Vec3 d = box ? box->MinimumImage(p.position_m[i] - p.position_m[j])
                      : p.position_m[i] - p.position_m[j];
@@ -40,7 +40,7 @@ inline bool PairGeometry(const Particles& p, size_t i, uint32_t j, bool was_in_c
 }
 
 template <class Model>
-bool ContactForces::EvaluatePair(const Particles& p, const InteractionTable& table,
+DEMCAL_HOT_INLINE bool ContactForces::EvaluatePair(const Particles& p, const InteractionTable& table,
                                  const Model& model, double dt, size_t i, uint32_t k, uint32_t j,
                                  ContactResult& out) {
   ContactGeometry g;
@@ -115,15 +115,24 @@ void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
 }
 
 void ContactForces::SplitIntoChunks(const NeighbourList& list, size_t n) {
-  // Chunks of about equal pair counts, one per worker (a serial run has one chunk).
-  const size_t chunks = std::max<size_t>(1, std::min<size_t>(tbb::this_task_arena::max_concurrency(), n / 64 + 1));
+  // Chunks of about equal pair counts; a serial run has one chunk, a parallel one two per
+  // worker so the scheduler can balance uneven chunks (wall contacts, dense regions). The result
+  // does not depend on the chunk count (see SumChunk).
+  const size_t workers = tbb::this_task_arena::max_concurrency();
+  const size_t chunks = workers <= 1 ? 1 : std::max<size_t>(1, std::min(2 * workers, n / 256 + 1));
   chunk_.assign(chunks + 1, static_cast<uint32_t>(n));
   chunk_[0] = 0;
   const double per_chunk = static_cast<double>(list.PairCount() + n) / chunks;
-  size_t c = 1;
-  for (size_t i = 0; i < n && c < chunks; ++i)
-    if (list.RowBegin(i) + i >= per_chunk * c) chunk_[c++] = static_cast<uint32_t>(i);
-  for (; c < chunks; ++c) chunk_[c] = static_cast<uint32_t>(n);
+  // Work before row i, RowBegin(i) + i, grows with i: binary-search each boundary.
+  for (size_t c = 1; c < chunks; ++c) {
+    size_t lo = chunk_[c - 1], hi = n;
+    while (lo < hi) {
+      const size_t mid = (lo + hi) / 2;
+      if (list.RowBegin(mid) + mid >= per_chunk * c) hi = mid;
+      else lo = mid + 1;
+    }
+    chunk_[c] = static_cast<uint32_t>(lo);
+  }
 }
 
 void ContactForces::Compute(Particles& p, const NeighbourList& list,

@@ -41,7 +41,8 @@ void ParticleSystem::Add(int species, int material, double density, double d, co
     spheres.Add(next_id++, species, material, 0.5 * d, density, x, v, omega);
     return;
   }
-  const size_t c = clumps.Add(next_id++, species, material, shapes[species], d, density, x, q, v,
+  const int64_t clump_id = next_id++;  // members take the ids after it
+  const size_t c = clumps.Add(clump_id, species, material, shapes[species], d, density, x, q, v,
                               spheres, next_id);
   clumps.rotation[c] = StateFromAngularVelocity(q, omega, clumps.principal_inertia_kg_m2[c]);
   clumps.UpdateMembers(c, spheres);

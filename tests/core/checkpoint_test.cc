@@ -4,6 +4,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <string>
+
+#include <unistd.h>
 
 #include "core/simulation.h"
 #include "core/wall_test_support.h"
@@ -11,6 +14,13 @@
 using namespace demcal::core;
 
 namespace {
+
+// A file name unique to this process: test processes (ctest --parallel, other builds) share /tmp.
+std::string TempPath(const std::string& tag) {
+  return (std::filesystem::temp_directory_path() /
+          ("demcal_checkpoint_" + tag + "_" + std::to_string(::getpid()) + ".bin"))
+      .string();
+}
 
 // Everything with state: a factory pouring spheres and 2-sphere clumps, friction, EPSD rolling
 // springs, JKR adhesion (hysteresis), walls.
@@ -45,7 +55,7 @@ Scene RichScene() {
 
 TEST_CASE("a restarted run continues bit-identically", "[unit][checkpoint]") {
   const std::string path =
-      (std::filesystem::temp_directory_path() / "demcal_checkpoint_test.bin").string();
+      TempPath("a");
   std::string err;
   Simulation reference(RichScene(), {.threads = 2});
   REQUIRE(reference.Initialize(&err));
@@ -72,7 +82,7 @@ TEST_CASE("a restarted run continues bit-identically", "[unit][checkpoint]") {
 
 TEST_CASE("a checkpoint of another scene or a corrupt file is refused", "[unit][checkpoint]") {
   const std::string path =
-      (std::filesystem::temp_directory_path() / "demcal_checkpoint_test2.bin").string();
+      TempPath("b");
   std::string err;
   Simulation a(RichScene(), {.threads = 1});
   REQUIRE(a.Initialize(&err));
@@ -101,7 +111,7 @@ TEST_CASE("a restart with mesh and moving walls continues bit-identically", "[un
   // Spheres poured into a mesh box (several mesh contacts per sphere, each with its history)
   // onto a mesh plate that starts to slide, beside a rising cylinder.
   const std::string path =
-      (std::filesystem::temp_directory_path() / "demcal_checkpoint_mesh_test.bin").string();
+      TempPath("mesh");
   Scene s = RichScene();
   s.walls = {wall_test::MeshBox("box", {0, 0, 0}, {0.03, 0.03, 0.1}, /*open_top=*/true)};
   Wall plate = wall_test::MeshPlate("plate", 0.008, 0);

@@ -8,6 +8,20 @@
 
 using namespace demcal::core;
 
+namespace {
+// 2 mm spheres in a 20 mm cube, no walls.
+Scene SmallBox() {
+  Scene s;
+  s.materials = {{"m", 1e7, 0.25, 1000}};
+  s.species = {{"a", 0, {}, {}}};
+  s.species[0].size.diameter_m = 0.002;
+  s.pair_parameters = {PairParameters{}};
+  s.domain_min_m = {0, 0, 0};
+  s.domain_max_m = {0.02, 0.02, 0.02};
+  return s;
+}
+}  // namespace
+
 TEST_CASE("periodic neighbour list matches a minimum-image brute force", "[unit][periodic]") {
   const Vec3 lo{0, 0, 0}, hi{0.02, 0.015, 0.03};
   for (uint64_t seed : {1u, 2u, 3u}) {
@@ -36,13 +50,7 @@ TEST_CASE("periodic neighbour list matches a minimum-image brute force", "[unit]
 }
 
 TEST_CASE("two spheres touching across a periodic boundary repel through it", "[unit][periodic]") {
-  Scene s;
-  s.materials = {{"m", 1e7, 0.25, 1000}};
-  s.species = {{"a", 0, {}, {}}};
-  s.species[0].size.diameter_m = 0.002;
-  s.pair_parameters = {PairParameters{}};
-  s.domain_min_m = {0, 0, 0};
-  s.domain_max_m = {0.02, 0.02, 0.02};
+  Scene s = SmallBox();
   s.periodic = {true, false, false};
   s.gravity_m_s2 = {0, 0, 0};
   // Centres 1.9 mm apart through the x boundary (0.0009 and 0.019): overlap 0.1 mm.
@@ -63,13 +71,7 @@ TEST_CASE("two spheres touching across a periodic boundary repel through it", "[
 }
 
 TEST_CASE("a sphere leaving through a periodic face re-enters on the other side", "[unit][periodic]") {
-  Scene s;
-  s.materials = {{"m", 1e7, 0.25, 1000}};
-  s.species = {{"a", 0, {}, {}}};
-  s.species[0].size.diameter_m = 0.002;
-  s.pair_parameters = {PairParameters{}};
-  s.domain_min_m = {0, 0, 0};
-  s.domain_max_m = {0.02, 0.02, 0.02};
+  Scene s = SmallBox();
   s.periodic = {false, true, false};
   s.gravity_m_s2 = {0, 0, 0};
   s.particles = {{0, {0.01, 0.019, 0.01}, {0, 1.0, 0}, {}, 0, {}}};
@@ -82,12 +84,7 @@ TEST_CASE("a sphere leaving through a periodic face re-enters on the other side"
 }
 
 TEST_CASE("periodic axes along gravity or too short are rejected", "[unit][periodic]") {
-  Scene s;
-  s.materials = {{"m", 1e7, 0.25, 1000}};
-  s.species = {{"a", 0, {}, {}}};
-  s.species[0].size.diameter_m = 0.002;
-  s.pair_parameters = {PairParameters{}};
-  s.domain_min_m = {0, 0, 0};
+  Scene s = SmallBox();
   s.domain_max_m = {0.005, 0.02, 0.02};
   s.periodic = {false, false, true};
   std::string err;
