@@ -7,4 +7,4 @@ cd "$(dirname "$0")/.."
 bash scripts/install_deps.sh
 bash scripts/build.sh
 "${BUILD_DIR:-build}/apps/demcal" simulate examples/pour_box.json --out out/pour_box
-echo "outputs in out/pour_box/: summary.json, final_particles.csv, snapshots/*.vtk" >&2
+echo "outputs in out/pour_box/: summary.json, final_particles.csv, scene.json, vtk/particles.vtk.series (open in ParaView)" >&2
