@@ -340,21 +340,22 @@ double NeighbourSkin(const Scene& scene) {
   return std::max(0.25 * scene.MinDiameter(), 2.5 * MaxAdhesiveBreakGap(scene));
 }
 
+namespace {
+// Rayleigh time of one sphere (LIGGGHTS fix_check_timestep_gran; physics.md §1.5).
+double SphereRayleighTime(const Material& m, double radius_m) {
+  return std::numbers::pi * radius_m * std::sqrt(m.density_kg_m3 / m.ShearModulus()) /
+         (0.1631 * m.poisson_ratio + 0.8766);
+}
+}  // namespace
+
 double RayleighTime(const Scene& scene) {
   double t = std::numeric_limits<double>::infinity();
-  for (const Species& sp : scene.species) {
-    const Material& m = scene.materials[sp.material];
-    const double r = 0.5 * sp.size.MinDiameter();
-    t = std::min(t, std::numbers::pi * r * std::sqrt(m.density_kg_m3 / m.ShearModulus()) /
-                        (0.1631 * m.poisson_ratio + 0.8766));
-  }
-  for (const ParticleSpec& p : scene.particles) {
-    if (p.diameter_m <= 0) continue;
-    const Material& m = scene.materials[scene.species[p.species].material];
-    t = std::min(t, std::numbers::pi * 0.5 * p.diameter_m *
-                        std::sqrt(m.density_kg_m3 / m.ShearModulus()) /
-                        (0.1631 * m.poisson_ratio + 0.8766));
-  }
+  for (const Species& sp : scene.species)
+    t = std::min(t, SphereRayleighTime(scene.materials[sp.material], 0.5 * sp.size.MinDiameter()));
+  for (const ParticleSpec& p : scene.particles)
+    if (p.diameter_m > 0)
+      t = std::min(t, SphereRayleighTime(scene.materials[scene.species[p.species].material],
+                                         0.5 * p.diameter_m));
   return t;
 }
 
