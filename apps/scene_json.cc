@@ -1,5 +1,6 @@
 #include "apps/scene_json.h"
 
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -118,7 +119,8 @@ bool ParseSceneJson(const json& document, const std::string& source, SceneFile* 
   ParseDomain(top, &scene, &status);
   ParsePeriodic(top, &scene, &status);
   top.Vector("gravity_m_s2", &scene.gravity_m_s2, kOptional);
-  internal::ParseWalls(top, &scene, &status);
+  internal::ParseWalls(top, std::filesystem::path(source).parent_path().string(), &scene,
+                       &status);
   internal::ParseParticles(top, &scene, &status);
   internal::ParseFills(top, &scene, &status);
   internal::ParseFactories(top, &scene, &status);

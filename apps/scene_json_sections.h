@@ -17,7 +17,9 @@ void ParseMaterials(JsonFields& top, core::Scene* scene, JsonStatus* status);
 void ParseSpecies(JsonFields& top, core::Scene* scene, JsonStatus* status);
 void ParseInteractions(JsonFields& top, core::Scene* scene, JsonStatus* status);
 void ParseContactModel(JsonFields& top, core::Scene* scene, JsonStatus* status);
-void ParseWalls(JsonFields& top, core::Scene* scene, JsonStatus* status);
+// Mesh wall files are resolved relative to `base_dir` (the scene file's directory).
+void ParseWalls(JsonFields& top, const std::string& base_dir, core::Scene* scene,
+                JsonStatus* status);
 void ParseParticles(JsonFields& top, core::Scene* scene, JsonStatus* status);
 void ParseFills(JsonFields& top, core::Scene* scene, JsonStatus* status);
 void ParseFactories(JsonFields& top, core::Scene* scene, JsonStatus* status);

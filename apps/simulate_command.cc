@@ -120,6 +120,11 @@ int RunSimulate(const SimulateOptions& options, std::ostream& log) {
   };
   record.summary = sim.Run(duration_s, observer);
   record.factories = sim.FactoryReports();
+  {
+    const std::vector<core::WallLoad> loads = sim.WallLoads();
+    for (size_t i = 0; i < loads.size() && i < sim.walls().size(); ++i)
+      record.wall_loads.push_back({sim.walls()[i].name, loads[i]});
+  }
 
   // The final state is written for failed runs too: it shows where things went wrong.
   if (!snapshot_error.empty())

@@ -11,6 +11,9 @@ namespace {
 nlohmann::ordered_json Finite(double v) {
   return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json();
 }
+nlohmann::ordered_json FiniteVector(const core::Vec3& v) {
+  return nlohmann::ordered_json::array({Finite(v.x), Finite(v.y), Finite(v.z)});
+}
 }  // namespace
 
 nlohmann::ordered_json RunRecordToJson(const RunRecord& r) {
@@ -48,6 +51,15 @@ nlohmann::ordered_json RunRecordToJson(const RunRecord& r) {
     fj["achieved_rate_kg_s"] = Finite(f.AchievedRate());
     fj["full_batches"] = f.full_batches;
     j["factories"].push_back(fj);
+  }
+  j["wall_loads"] = nlohmann::ordered_json::array();
+  for (const NamedWallLoad& w : r.wall_loads) {
+    nlohmann::ordered_json wj;
+    wj["name"] = w.name;
+    wj["force_N"] = FiniteVector(w.load.force_N);
+    wj["torque_N_m"] = FiniteVector(w.load.torque_N_m);
+    wj["point_m"] = FiniteVector(w.load.point_m);
+    j["wall_loads"].push_back(wj);
   }
   j["output_error"] =
       r.output_error.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.output_error);

@@ -15,10 +15,17 @@
 
 #include "core/factory.h"
 #include "core/run_summary.h"
+#include "core/walls.h"
 
 namespace demcal::apps {
 
 inline constexpr const char* kRunSummaryFormat = "demcal-run-summary/1";
+
+// The load on one wall at the end of the run (see core::Simulation::WallLoads).
+struct NamedWallLoad {
+  std::string name;
+  core::WallLoad load;
+};
 
 struct RunRecord {
   std::string scene_path;
@@ -31,6 +38,7 @@ struct RunRecord {
   double setup_wall_time_s = 0;                // scene loading, particle placement, first forces
   double total_wall_time_s = 0;                // the whole command, outputs included
   std::vector<core::FactoryReport> factories;  // one per scene factory
+  std::vector<NamedWallLoad> wall_loads;       // one per wall, at the end of the run
   std::string output_error;                    // non-empty if an output file could not be written
   nlohmann::ordered_json outputs = nlohmann::ordered_json::object();  // RunOutputs::Describe()
 };

@@ -1,6 +1,7 @@
 #include "apps/scene_json.h"
 
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -75,6 +76,85 @@ TEST_CASE("shear moduli become Young's moduli and plane normals are normalised",
   CHECK(std::get<demcal::core::PlaneSurface>(file.scene.walls[0].shape).normal.z == 1.0);
   CHECK(file.scene.walls[0].velocity_m_s.z == 0.1);
   CHECK(file.scene.walls[0].name == "walls[0]");
+}
+
+TEST_CASE("cylinder, cone and mesh walls are read with motion and load point", "[unit]") {
+  namespace core = demcal::core;
+  json d = PourBox();
+  d["walls"] = json::parse(R"([
+    {"type": "cylinder", "name": "silo", "material": "steel", "axis_point_m": [0.02, 0.02, 0],
+     "axis": [0, 0, 3], "radius_m": 0.015, "axial_max_m": 0.1, "velocity_m_s": [0, 0, 0.01],
+     "motion_start_s": 0.1, "motion_end_s": 0.5, "load_point_m": [0.02, 0.02, 0]},
+    {"type": "cone", "material": "steel", "axis_point_m": [0.02, 0.02, 0.05], "axis": [0, 0, 1],
+     "height0_m": 0, "radius0_m": 0.005, "height1_m": 0.03, "radius1_m": 0.018,
+     "inside": true, "shell": false},
+    {"type": "mesh", "name": "cube", "material": "steel", "file": "cube_10mm_ascii.stl",
+     "scale": 0.001, "offset_m": [0.01, 0.01, 0.02]}])");
+  SceneFile file;
+  std::string error;
+  const std::string source = (RepoRoot() / "tests" / "data" / "scene.json").string();
+  REQUIRE(ParseSceneJson(d, source, &file, &error));
+  REQUIRE(file.scene.walls.size() == 3);
+  const core::Wall& silo = file.scene.walls[0];
+  CHECK(silo.name == "silo");
+  const auto& cyl = std::get<core::CylinderSurface>(silo.shape);
+  CHECK(cyl.axis.z == 1.0);
+  CHECK(cyl.radius_m == 0.015);
+  CHECK(std::isinf(cyl.axial_min_m));
+  CHECK(cyl.axial_max_m == 0.1);
+  CHECK(cyl.inside);
+  CHECK(silo.shell);
+  CHECK(silo.velocity_m_s.z == 0.01);
+  CHECK(silo.motion_start_s == 0.1);
+  CHECK(silo.motion_end_s == 0.5);
+  CHECK(silo.load_point_m.x == 0.02);
+  const core::Wall& funnel = file.scene.walls[1];
+  CHECK(funnel.name == "walls[1]");
+  const auto& cone = std::get<core::ConeFrustumSurface>(funnel.shape);
+  CHECK(cone.radius0_m == 0.005);
+  CHECK(cone.height1_m == 0.03);
+  CHECK(!funnel.shell);
+  CHECK(funnel.motion_start_s == 0);
+  CHECK(std::isinf(funnel.motion_end_s));
+  const auto& mesh = std::get<core::MeshRef>(file.scene.walls[2].shape);
+  REQUIRE(mesh.mesh);
+  CHECK(mesh.offset_m.z == 0.02);
+  CHECK(mesh.source.find("cube_10mm_ascii.stl") != std::string::npos);
+}
+
+TEST_CASE("bad cylinder, cone and mesh walls are rejected naming the field", "[unit]") {
+  auto error_of = [](const char* walls) {
+    json d = PourBox();
+    d["walls"] = json::parse(walls);
+    SceneFile file;
+    std::string error;
+    const std::string source = (RepoRoot() / "tests" / "data" / "scene.json").string();
+    return ParseSceneJson(d, source, &file, &error) ? std::string() : error;
+  };
+  CHECK_THAT(error_of(R"([{"type": "cylinder", "material": "steel", "axis_point_m": [0, 0, 0],
+                           "axis": [0, 0, 0], "radius_m": 0.01}])"),
+             Catch::Contains("field 'walls[0].axis' must be a non-zero vector"));
+  CHECK_THAT(error_of(R"([{"type": "cylinder", "material": "steel", "axis_point_m": [0, 0, 0],
+                           "axis": [0, 0, 1], "radius_m": -0.01}])"),
+             Catch::Contains("field 'walls[0].radius_m' = -0.01 is outside the allowed range"));
+  CHECK_THAT(error_of(R"([{"type": "cone", "material": "steel", "axis_point_m": [0, 0, 0],
+                           "axis": [0, 0, 1], "height0_m": 0, "radius0_m": -1,
+                           "height1_m": 1, "radius1_m": 1}])"),
+             Catch::Contains("field 'walls[0].radius0_m' = -1 is outside the allowed range"));
+  CHECK_THAT(error_of(R"([{"type": "cone", "material": "steel", "axis_point_m": [0, 0, 0],
+                           "axis": [0, 0, 1], "height0_m": 0, "radius0_m": 0.01,
+                           "height1_m": 0.02, "radius1_m": 0.02, "radius_m": 1}])"),
+             Catch::Contains("unknown key 'walls[0].radius_m'"));
+  const std::string missing = error_of(
+      R"([{"type": "mesh", "material": "steel", "file": "no_such_file.stl"}])");
+  CHECK_THAT(missing, Catch::Contains("field 'walls[0].file'"));
+  CHECK_THAT(missing, Catch::Contains("no_such_file.stl"));
+  CHECK_THAT(error_of(R"([{"type": "mesh", "material": "steel", "file": "cube_10mm_ascii.stl",
+                           "scale": 0}])"),
+             Catch::Contains("field 'walls[0].scale' = 0 is outside the allowed range"));
+  CHECK_THAT(error_of(R"([{"type": "plane", "material": "steel", "point_m": [0, 0, 0],
+                           "normal": [0, 0, 1], "motion_start_s": 2, "motion_end_s": 1}])"),
+             Catch::Contains("field 'walls[0].motion_end_s' must not be before"));
 }
 
 TEST_CASE("periodic axes are read per axis and checked against gravity by the core", "[unit]") {

@@ -73,6 +73,12 @@ TEST_CASE("simulate runs a tiny scene and writes summary, snapshots and the fina
   CHECK(s["seed"] == 3);
   CHECK(s["threads"] == 1);
   CHECK(s["particles"] == 20);
+  REQUIRE(s["wall_loads"].is_array());
+  REQUIRE(!s["wall_loads"].empty());
+  CHECK(s["wall_loads"][0]["name"].is_string());
+  CHECK(s["wall_loads"][0]["force_N"].size() == 3);
+  CHECK(s["wall_loads"][0]["torque_N_m"].size() == 3);
+  CHECK(s["wall_loads"][0]["point_m"].size() == 3);
   CHECK(s["steps"].get<int64_t>() > 0);
   CHECK(s["simulated_time_s"].get<double>() == Approx(0.02).margin(s["timestep_s"].get<double>()));
   CHECK(s["timestep_s"].get<double>() > 0);
