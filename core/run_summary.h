@@ -27,7 +27,7 @@ struct RunSummary {
   int64_t particles = 0;
   double timestep_s = 0;
   double final_kinetic_energy_J = 0;
-  uint64_t neighbour_rebuilds = 0;
+  uint64_t neighbour_rebuilds = 0;  // during this Run() call
 
   bool ok() const { return termination == Termination::kOk; }
   std::string BriefReport() const;

@@ -229,6 +229,7 @@ RunSummary Simulation::Run(double duration_s, const Observer& observer) {
     return s;
   }
   const auto start = std::chrono::steady_clock::now();
+  const uint64_t builds_before = list_.Builds() + spare_list_.Builds();
   auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
@@ -262,7 +263,7 @@ RunSummary Simulation::Run(double duration_s, const Observer& observer) {
   s.particles = static_cast<int64_t>(system_.BodyCount());
   s.timestep_s = dt_;
   s.final_kinetic_energy_J = system_.KineticEnergy();
-  s.neighbour_rebuilds = list_.Builds() + spare_list_.Builds();
+  s.neighbour_rebuilds = list_.Builds() + spare_list_.Builds() - builds_before;
   return s;
 }
 
