@@ -59,4 +59,11 @@ double Particles::KineticEnergy() const {
   return e;
 }
 
+void Particles::Fix(size_t i) {
+  velocity_m_s[i] = {};
+  angular_velocity_rad_s[i] = {};
+  inv_mass[i] = 0;
+  inv_inertia[i] = 0;
+}
+
 }  // namespace demcal::core

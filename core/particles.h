@@ -40,6 +40,10 @@ struct Particles {
   size_t Add(int64_t particle_id, int species_index, int material_index, double radius,
              double density, const Vec3& position, const Vec3& velocity, const Vec3& omega);
 
+  // Glues slot i in place: zero velocity, infinite mass and inertia (inv_mass = inv_inertia = 0),
+  // so contacts push on it but it never moves (a rough base layer of fixed spheres). Contact
+  // damping still uses its real mass in m*, so restitution against it is approximate.
+  void Fix(size_t i);
   // Reorders every per-particle array so that new slot k holds old slot order[k].
   void Permute(const std::vector<uint32_t>& order);
 

@@ -177,6 +177,9 @@ void CheckParticles(const Scene& s, Checker& c) {
         c.Fail("field '" + f + ".position_m' lies outside the domain");
     if (!IsFinite(p.velocity_m_s) || !IsFinite(p.angular_velocity_rad_s))
       c.Fail("field '" + f + "' has a non-finite velocity");
+    if (p.fixed && p.species >= 0 && p.species < ns && !s.species[p.species].clump_shape.empty())
+      c.Fail("field '" + f + ".fixed': only spheres can be fixed, species '" +
+             s.species[p.species].name + "' is a clump");
   }
   for (size_t i = 0; i < s.fills.size(); ++i) {
     const FillSpec& fl = s.fills[i];

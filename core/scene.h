@@ -30,6 +30,7 @@ struct ParticleSpec {
   Vec3 angular_velocity_rad_s;
   double diameter_m = 0;  // 0: draw from the species' size distribution
   Quaternion orientation; // of a clump (principal frame → space); identity by default
+  bool fixed = false;     // glued in place (infinite mass and inertia): a rough base layer
 };
 
 // Fill an axis-aligned box region at t = 0 with `count` non-overlapping particles of a species

@@ -105,6 +105,7 @@ void Simulation::PlaceInitialParticles(std::string* error) {
     const double d = p.diameter_m > 0 ? p.diameter_m : sp.size.Sample(rng.Uniform());
     system_.Add(p.species, sp.material, scene_.materials[sp.material].density_kg_m3, d,
                 p.position_m, p.velocity_m_s, p.angular_velocity_rad_s, p.orientation);
+    if (p.fixed) system_.spheres.Fix(system_.spheres.Size() - 1);
   }
   for (size_t f = 0; f < scene_.fills.size(); ++f) {
     const FillSpec& fill = scene_.fills[f];
@@ -250,7 +251,7 @@ RunSummary Simulation::Run(double duration_s, const Observer& observer) {
         }
         if (s.termination != Termination::kOk) break;
       }
-      if (observer.callback && observer.every_steps > 0 && (k + 1) % observer.every_steps == 0 &&
+      if (observer.callback && observer.every_steps > 0 && steps_ % observer.every_steps == 0 &&
           !observer.callback(*this)) {
         s.message = "stopped by observer";
         break;
