@@ -1,10 +1,9 @@
 #include "apps/scene_json.h"
 
 #include <filesystem>
-#include <fstream>
-#include <set>
 #include <sstream>
 
+#include "apps/json_document.h"
 #include "apps/json_fields.h"
 #include "apps/scene_json_sections.h"
 
@@ -67,35 +66,6 @@ void ParseOutput(JsonFields& top, OutputSettings* output, JsonStatus* status) {
   if (f.ok()) core::io::ParseVtkEncoding(encoding, &output->vtk.encoding);
 }
 
-// nlohmann keeps the last of duplicated keys silently; a scene file with two "seed"s is
-// ambiguous, so the parse callback records the first duplicate.
-class DuplicateKeyCheck {
- public:
-  bool operator()(int /*depth*/, json::parse_event_t event, json& parsed) {
-    switch (event) {
-      case json::parse_event_t::object_start:
-        keys_.emplace_back();
-        break;
-      case json::parse_event_t::object_end:
-        if (!keys_.empty()) keys_.pop_back();
-        break;
-      case json::parse_event_t::key:
-        if (!keys_.empty() && !keys_.back().insert(parsed.get<std::string>()).second &&
-            duplicate_.empty())
-          duplicate_ = parsed.get<std::string>();
-        break;
-      default:
-        break;
-    }
-    return true;
-  }
-  const std::string& duplicate() const { return duplicate_; }
-
- private:
-  std::vector<std::set<std::string>> keys_;
-  std::string duplicate_;
-};
-
 }  // namespace
 
 bool ParseSceneJson(const json& document, const std::string& source, SceneFile* out,
@@ -142,37 +112,15 @@ bool ParseSceneJson(const json& document, const std::string& source, SceneFile* 
 
 bool ParseSceneText(const std::string& text, const std::string& source, SceneFile* out,
                     std::string* error) {
-  DuplicateKeyCheck duplicates;
   json document;
-  try {
-    document = json::parse(text, std::ref(duplicates));
-  } catch (const json::parse_error& e) {
-    // e.what() is "[json.exception.parse_error.101] parse error at line L, column C: ...".
-    std::string what = e.what();
-    const size_t start = what.find("] ");
-    if (error)
-      *error = source +
-               ": invalid JSON: " + (start == std::string::npos ? what : what.substr(start + 2));
-    return false;
-  }
-  if (!duplicates.duplicate().empty()) {
-    if (error)
-      *error = source + ": key '" + duplicates.duplicate() +
-               "' appears twice in one object; JSON keys must be unique";
-    return false;
-  }
-  return ParseSceneJson(document, source, out, error);
+  return ParseJsonText(text, source, &document, error) &&
+         ParseSceneJson(document, source, out, error);
 }
 
 bool LoadSceneFile(const std::string& path, SceneFile* out, std::string* error) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    if (error) *error = path + ": cannot open the scene file";
-    return false;
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return ParseSceneText(text.str(), path, out, error);
+  json document;
+  return ReadJsonFile(path, "scene file", &document, error) &&
+         ParseSceneJson(document, path, out, error);
 }
 
 }  // namespace demcal::apps

@@ -56,16 +56,12 @@ Snapshot TakeSnapshot(const core::Simulation& simulation) {
   return snap;
 }
 
-Snapshot Crop(const Snapshot& snapshot, const Vec3& lo_m, const Vec3& hi_m) {
-  auto inside = [&](const Vec3& x) {
-    return x.x >= lo_m.x && x.x <= hi_m.x && x.y >= lo_m.y && x.y <= hi_m.y && x.z >= lo_m.z &&
-           x.z <= hi_m.z;
-  };
+Snapshot Select(const Snapshot& snapshot, const std::function<bool(const Grain&)>& keep) {
   Snapshot out;
   out.time_s = snapshot.time_s;
   std::vector<int> new_index(snapshot.grains.size(), -1);
   for (size_t g = 0; g < snapshot.grains.size(); ++g) {
-    if (!inside(snapshot.grains[g].position_m)) continue;
+    if (!keep(snapshot.grains[g])) continue;
     new_index[g] = static_cast<int>(out.grains.size());
     out.grains.push_back(snapshot.grains[g]);
   }
@@ -74,6 +70,14 @@ Snapshot Crop(const Snapshot& snapshot, const Vec3& lo_m, const Vec3& hi_m) {
     out.spheres.push_back({s.position_m, s.radius_m, new_index[s.grain]});
   }
   return out;
+}
+
+Snapshot Crop(const Snapshot& snapshot, const Vec3& lo_m, const Vec3& hi_m) {
+  return Select(snapshot, [&](const Grain& g) {
+    const Vec3& x = g.position_m;
+    return x.x >= lo_m.x && x.x <= hi_m.x && x.y >= lo_m.y && x.y <= hi_m.y && x.z >= lo_m.z &&
+           x.z <= hi_m.z;
+  });
 }
 
 }  // namespace demcal::objectives

@@ -7,6 +7,7 @@
 // Axis convention of the experiments: gravity along −z; a pseudo-2D box spans x (width) and z
 // (height), its thin depth is y; the front face is at the box's y_min, the back face at y_max.
 #include <cstdint>
+#include <functional>
 #include <vector>
 #include "core/vec3.h"
 
@@ -43,6 +44,9 @@ struct Snapshot {
 
 // The current state of a simulation as a Snapshot (grains ordered by id).
 Snapshot TakeSnapshot(const core::Simulation& simulation);
+
+// The grains for which keep(grain) is true, with their spheres.
+Snapshot Select(const Snapshot& snapshot, const std::function<bool(const Grain&)>& keep);
 
 // Grains with a centre inside the axis-aligned box [lo, hi] (e.g. the heap, not the funnel).
 Snapshot Crop(const Snapshot& snapshot, const Vec3& lo_m, const Vec3& hi_m);

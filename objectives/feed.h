@@ -1,0 +1,36 @@
+#pragma once
+// Feed: what an experiment pours — species with mass fractions — and the factory that pours it
+// at a mass rate from a region above the test (the outlet of a funnel or a feeder).
+#include <string>
+#include <vector>
+
+#include "core/factory.h"
+#include "core/scene.h"
+
+namespace demcal::objectives {
+
+struct FeedComponent {
+  int species = 0;           // index into the model's species
+  double mass_fraction = 1;  // of the feed; the fractions of a feed sum to 1
+};
+
+struct Feed {
+  std::vector<FeedComponent> components;
+  double mass_kg = 0;          // total mass poured, > 0
+  double mass_rate_kg_s = 0;   // > 0
+  double start_s = 0;
+  core::Vec3 velocity_m_s;     // initial velocity of the poured particles
+  double DurationS() const { return mass_kg / mass_rate_kg_s; }
+  // Checks fractions (sum 1 within 1e-6), species indices, mass and rate; `path` prefixes the
+  // field names in the message (e.g. "aor.feed").
+  bool IsValid(const core::Scene& model, const std::string& path, std::string* error) const;
+};
+
+// The factory pouring `feed` from `region`.
+core::FactorySpec MakeFeedFactory(const Feed& feed, const core::InsertionRegion& region);
+
+// Largest particle diameter among the feed's species (after fidelity scaling).
+double FeedMaxDiameter(const core::Scene& model, const Feed& feed);
+double FeedMinDiameter(const core::Scene& model, const Feed& feed);
+
+}  // namespace demcal::objectives

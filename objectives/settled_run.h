@@ -1,0 +1,39 @@
+#pragma once
+// RunUntilSettled: runs a poured experiment until the feed has finished and the particles have
+// come to rest (mean specific kinetic energy below a threshold, physics of a static heap), or
+// until a time limit. A run that does not settle in time, or that fails in the engine, is a
+// normal outcome reported in the status, never an exception.
+#include <functional>
+#include <string>
+
+#include "core/simulation.h"
+
+namespace demcal::objectives {
+
+struct SettleCriteria {
+  double feed_end_s = 0;                 // the pour has finished by then
+  double min_settle_s = 0.05;            // at least this long after feed_end_s
+  double specific_kinetic_J_kg = 1e-5;   // KE / mass of the moving particles below this
+  double check_interval_s = 0.01;        // of simulated time
+  double max_time_s = 10;                // give up (status "not_settled")
+};
+
+struct SettleResult {
+  std::string status = "ok";   // "ok", "not_settled", or a core termination name
+  std::string message;
+  core::RunSummary run;
+  double settle_time_s = 0;     // simulated time when the criterion was met
+  double specific_kinetic_J_kg = 0;
+  bool ok() const { return status == "ok"; }
+};
+
+// progress(simulated_time_s, expected_end_s) is called every check (may be empty).
+using ProgressCallback = std::function<void(double, double)>;
+
+SettleResult RunUntilSettled(core::Simulation& sim, const SettleCriteria& criteria,
+                             const ProgressCallback& progress);
+
+// Kinetic energy per unit mass of the non-fixed particles (J/kg); 0 without particles.
+double SpecificKineticEnergy(const core::Simulation& sim);
+
+}  // namespace demcal::objectives
