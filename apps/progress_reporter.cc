@@ -6,9 +6,10 @@
 namespace demcal::apps {
 
 double EstimateRemainingWallTime(const ProgressSample& s) {
-  if (!(s.simulated_time_s > 0) || !(s.elapsed_wall_s > 0) || !(s.duration_s > 0)) return -1;
+  const double done = s.simulated_time_s - s.start_time_s;  // in this process's wall time
+  if (!(done > 0) || !(s.elapsed_wall_s > 0) || !(s.duration_s > 0)) return -1;
   const double remaining_sim = std::max(0.0, s.duration_s - s.simulated_time_s);
-  return remaining_sim * s.elapsed_wall_s / s.simulated_time_s;
+  return remaining_sim * s.elapsed_wall_s / done;
 }
 
 std::string FormatDuration(double seconds) {
@@ -51,6 +52,7 @@ void ProgressReporter::Update(double simulated_time_s, int64_t particles) {
   ProgressSample s;
   s.simulated_time_s = simulated_time_s;
   s.duration_s = duration_s_;
+  s.start_time_s = options_.start_time_s;
   s.particles = particles;
   s.elapsed_wall_s = std::chrono::duration<double>(now - start_).count();
   out_ << FormatProgressLine(s) << std::endl;

@@ -21,6 +21,7 @@ namespace demcal::apps {
 struct ProgressSample {
   double simulated_time_s = 0;
   double duration_s = 0;
+  double start_time_s = 0;  // simulated time when the wall clock started (a restarted run)
   int64_t particles = 0;
   double elapsed_wall_s = 0;
 };
@@ -37,6 +38,7 @@ class ProgressReporter {
   struct Options {
     double interval_s = 2.0;  // minimum wall time between lines, > 0
     bool enabled = true;      // false: print nothing (--quiet)
+    double start_time_s = 0;  // simulated time at the start (> 0 for a restarted run)
   };
 
   ProgressReporter(std::ostream& out, double duration_s, Options options);

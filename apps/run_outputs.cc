@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <system_error>
 
 #include "core/io/csv_writer.h"
@@ -11,6 +12,25 @@ namespace {
 constexpr const char* kVtkDir = "vtk";
 constexpr const char* kVtkPrefix = "particles";
 constexpr const char* kSceneCopy = "scene.json";
+constexpr const char* kCheckpoint = "checkpoint.bin";
+
+// The snapshots of an earlier run listed in a ParaView series index, up to `time_s` and only
+// while their files exist (a run killed while writing leaves no gaps in the numbering).
+bool ReadSeriesUpTo(const std::filesystem::path& index, double time_s,
+                    std::vector<core::io::VtkSeries::Entry>* entries, std::string* error) {
+  try {
+    const nlohmann::json j = nlohmann::json::parse(std::ifstream(index));
+    for (const nlohmann::json& f : j.at("files")) {
+      core::io::VtkSeries::Entry e{f.at("name").get<std::string>(), f.at("time").get<double>()};
+      if (e.time_s > time_s || !std::filesystem::exists(index.parent_path() / e.file_name)) break;
+      entries->push_back(std::move(e));
+    }
+  } catch (const nlohmann::json::exception& e) {
+    if (error) *error = "cannot continue the snapshot series '" + index.string() + "': " + e.what();
+    return false;
+  }
+  return true;
+}
 }  // namespace
 
 RunOutputs::RunOutputs(std::string directory, OutputSettings settings)
@@ -39,6 +59,36 @@ bool RunOutputs::CopyScene(const std::string& scene_path, std::string* error) {
     return false;
   }
   scene_copied_ = true;
+  return true;
+}
+
+bool RunOutputs::ResumeFrom(const core::Simulation& sim, std::string* error) {
+  const std::filesystem::path index = series_.SeriesPath();
+  std::vector<core::io::VtkSeries::Entry> earlier;
+  if (std::filesystem::exists(index) && !ReadSeriesUpTo(index, sim.time_s(), &earlier, error))
+    return false;
+  const bool have_this_time = !earlier.empty() && earlier.back().time_s == sim.time_s();
+  if (!series_.Resume(std::move(earlier), error)) return false;
+  if (have_this_time) {
+    last_snapshot_step_ = sim.steps();
+    return true;
+  }
+  return WriteSnapshot(sim, error);
+}
+
+std::string RunOutputs::CheckpointPath() const { return directory_ + "/" + kCheckpoint; }
+
+bool RunOutputs::WriteCheckpoint(const core::Simulation& sim, std::string* error) {
+  namespace fs = std::filesystem;
+  const std::string path = CheckpointPath(), temporary = path + ".tmp";
+  if (!sim.SaveCheckpoint(temporary, error)) return false;
+  std::error_code ec;
+  fs::rename(temporary, path, ec);
+  if (ec) {
+    if (error) *error = "cannot rename '" + temporary + "' to '" + path + "': " + ec.message();
+    return false;
+  }
+  checkpoint_time_s_ = sim.time_s();
   return true;
 }
 
@@ -77,6 +127,10 @@ nlohmann::ordered_json RunOutputs::Describe() const {
   }
   if (csv_written_) out["final_particles_csv"] = "final_particles.csv";
   if (clump_csv_written_) out["final_clumps_csv"] = "final_clumps.csv";
+  if (checkpoint_time_s_ >= 0) {
+    out["checkpoint"] = kCheckpoint;
+    out["checkpoint_time_s"] = checkpoint_time_s_;
+  }
   return out;
 }
 

@@ -7,6 +7,10 @@
 //   DIR/final_clumps.csv           the final state of the clumps, one row each (only if any)
 //   DIR/scene.json                 a byte-for-byte copy of the scene file, so that DIR alone
 //                                  reproduces the run
+//   DIR/checkpoint.bin             the latest checkpoint (core::Simulation::SaveCheckpoint),
+//                                  when asked for; replaced atomically (temporary file + rename)
+// A restarted run (demcal simulate --restart) writing into the DIR of the run it continues keeps
+// that run's snapshots up to the restart time and numbers its own after them.
 // summary.json is written by the caller (summary_json.h) with Describe() as its "outputs".
 //
 // Thread-safety: single-threaded use; WriteSnapshot may be called from a Simulation observer.
@@ -33,6 +37,10 @@ class RunOutputs {
   bool Prepare(std::string* error);
   // Copies the scene file to DIR/scene.json (nothing to do if it is that file already).
   bool CopyScene(const std::string& scene_path, std::string* error);
+  // For a run restarted at `time_s`: continues the VTK series found in DIR (if any) with its
+  // snapshots up to `time_s`, and writes a snapshot of the restored state unless the series
+  // already has one at exactly that time.
+  bool ResumeFrom(const core::Simulation& sim, std::string* error);
   // Steps between periodic snapshots for a time step; 0 when only initial and final are kept.
   int64_t SnapshotEverySteps(double timestep_s) const;
   // Writes a snapshot of the current state (and refreshes the series index).
@@ -40,9 +48,14 @@ class RunOutputs {
   // Writes the final snapshot (unless the current step already has one) and the CSV tables.
   bool WriteFinal(const core::Simulation& sim, std::string* error);
 
+  // Writes DIR/checkpoint.bin via a temporary file and a rename, so a crash while writing
+  // leaves the previous checkpoint intact.
+  bool WriteCheckpoint(const core::Simulation& sim, std::string* error);
+
   std::string SummaryPath() const { return directory_ + "/summary.json"; }
   std::string CsvPath() const { return directory_ + "/final_particles.csv"; }
   std::string ClumpCsvPath() const { return directory_ + "/final_clumps.csv"; }
+  std::string CheckpointPath() const;
   // The outputs written so far, with paths relative to DIR, for summary.json.
   nlohmann::ordered_json Describe() const;
 
@@ -54,6 +67,7 @@ class RunOutputs {
   bool csv_written_ = false;
   bool clump_csv_written_ = false;
   bool scene_copied_ = false;
+  double checkpoint_time_s_ = -1;  // simulated time of the last checkpoint written (< 0: none)
 };
 
 }  // namespace demcal::apps

@@ -3,6 +3,7 @@
 #include <tbb/info.h>
 
 #include <chrono>
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <numeric>
@@ -29,6 +30,26 @@ int ResolveThreads(int requested) {
   return requested > 0 ? requested : tbb::info::default_concurrency();
 }
 
+// Steps between checkpoints; 0 when none are asked for.
+int64_t CheckpointEverySteps(double every_s, double timestep_s) {
+  return every_s > 0 ? std::max<int64_t>(1, std::llround(every_s / timestep_s)) : 0;
+}
+
+// The observer cadence: a divisor of every periodic action's cadence (0 = no such action).
+int64_t ObserverEverySteps(int64_t snapshot_every, int64_t checkpoint_every) {
+  int64_t every = kProgressEverySteps;
+  if (snapshot_every > 0) every = std::gcd(every, snapshot_every);
+  if (checkpoint_every > 0) every = std::gcd(every, checkpoint_every);
+  return every;
+}
+
+// A final checkpoint is worth keeping when the state is sound: the run completed or only ran
+// out of wall time (the case a restart is for). After a NaN or a blow-up the last periodic
+// checkpoint stays.
+bool StateWorthCheckpointing(core::Termination t) {
+  return t == core::Termination::kOk || t == core::Termination::kWallTimeExceeded;
+}
+
 }  // namespace
 
 bool SimulateOptions::IsValid(std::string* error) const {
@@ -41,6 +62,9 @@ bool SimulateOptions::IsValid(std::string* error) const {
     problem = "--threads = " + std::to_string(threads) + " must be >= 0";
   else if (!(progress_interval_s > 0))
     problem = "--progress-interval-s must be > 0";
+  else if (!(checkpoint_every_s >= 0) || !std::isfinite(checkpoint_every_s))
+    problem = "--checkpoint-every-s = " + std::to_string(checkpoint_every_s) +
+              " must be >= 0 (0: no checkpoints)";
   if (!problem.empty() && error) *error = problem;
   return problem.empty();
 }
@@ -91,34 +115,50 @@ int RunSimulate(const SimulateOptions& options, std::ostream& log) {
   const double duration_s = file.scene.time.duration_s;
   core::Simulation sim(file.scene, {.threads = options.threads});
   if (!sim.Initialize(&error)) return invalid(options.scene_path + ": " + error);
+  const bool restart = !options.restart_path.empty();
+  if (restart) {
+    if (!sim.LoadCheckpoint(options.restart_path, &error)) return invalid("--restart: " + error);
+    record.restarted_from = RunRecord::Restart{options.restart_path, sim.time_s(), sim.steps()};
+  }
   record.setup_wall_time_s = SecondsSince(start);
+  // Steps still to take: an uninterrupted run takes round(duration / Δt) steps in all.
+  const int64_t steps_left =
+      std::max<int64_t>(0, std::llround(duration_s / sim.timestep_s()) - sim.steps());
   if (!options.quiet) {
     log << "demcal simulate: " << options.scene_path << ": " << sim.particles().Size()
-        << " particles, time step " << sim.timestep_s() << " s, "
-        << std::llround(duration_s / sim.timestep_s()) << " steps to " << duration_s << " s on "
-        << record.threads_used << " thread(s)\n";
+        << " particles, time step " << sim.timestep_s() << " s, " << steps_left << " steps to "
+        << duration_s << " s";
+    if (restart) log << " from the checkpoint at t = " << sim.time_s() << " s";
+    log << " on " << record.threads_used << " thread(s)\n";
   }
-  if (!outputs.CopyScene(options.scene_path, &error) || !outputs.WriteSnapshot(sim, &error)) {
+  if (!outputs.CopyScene(options.scene_path, &error) ||
+      !(restart ? outputs.ResumeFrom(sim, &error) : outputs.WriteSnapshot(sim, &error))) {
     record.output_error = error;
     log << "error: " << error << "\n";
     return finish(kExitOutputError);
   }
 
   ProgressReporter progress(log, duration_s,
-                            {.interval_s = options.progress_interval_s, .enabled = !options.quiet});
+                            {.interval_s = options.progress_interval_s,
+                             .enabled = !options.quiet,
+                             .start_time_s = sim.time_s()});
   const int64_t snapshot_every = outputs.SnapshotEverySteps(sim.timestep_s());
-  std::string snapshot_error;
+  const int64_t checkpoint_every =
+      CheckpointEverySteps(options.checkpoint_every_s, sim.timestep_s());
+  std::string run_output_error;  // an output that failed during the run stops it
   core::Simulation::Observer observer;
-  observer.every_steps =
-      snapshot_every > 0 ? std::gcd(snapshot_every, kProgressEverySteps) : kProgressEverySteps;
+  observer.every_steps = ObserverEverySteps(snapshot_every, checkpoint_every);
   observer.callback = [&](const core::Simulation& s) {
     if (snapshot_every > 0 && s.steps() % snapshot_every == 0 &&
-        !outputs.WriteSnapshot(s, &snapshot_error))
-      return false;  // stop: the run's output is incomplete
+        !outputs.WriteSnapshot(s, &run_output_error))
+      return false;
+    if (checkpoint_every > 0 && s.steps() % checkpoint_every == 0 &&
+        !outputs.WriteCheckpoint(s, &run_output_error))
+      return false;
     progress.Update(s.time_s(), static_cast<int64_t>(s.particles().Size()));
     return true;
   };
-  record.summary = sim.Run(duration_s, observer);
+  record.summary = sim.Run(static_cast<double>(steps_left) * sim.timestep_s(), observer);
   record.factories = sim.FactoryReports();
   {
     const std::vector<core::WallLoad> loads = sim.WallLoads();
@@ -127,9 +167,12 @@ int RunSimulate(const SimulateOptions& options, std::ostream& log) {
   }
 
   // The final state is written for failed runs too: it shows where things went wrong.
-  if (!snapshot_error.empty())
-    record.output_error = snapshot_error;
+  if (!run_output_error.empty())
+    record.output_error = run_output_error;
   else if (!outputs.WriteFinal(sim, &error))
+    record.output_error = error;
+  else if (checkpoint_every > 0 && StateWorthCheckpointing(record.summary.termination) &&
+           !outputs.WriteCheckpoint(sim, &error))
     record.output_error = error;
 
   int code = kExitOk;
@@ -159,13 +202,20 @@ Command AddSimulateCommand(CLI::App& parent) {
   sub->add_option("--threads,-t", options->threads, "worker threads (0: all cores)")
       ->check(CLI::Range(0, 4096))
       ->capture_default_str();
+  sub->add_option("--checkpoint-every-s", options->checkpoint_every_s,
+                  "write DIR/checkpoint.bin every S simulated seconds and at the end (0: never)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  sub->add_option("--restart", options->restart_path,
+                  "continue from a checkpoint.bin written for this scene, up to its duration");
   sub->add_flag("--quiet,-q", options->quiet, "print only errors (no progress, no report)");
   sub->add_option("--progress-interval-s", options->progress_interval_s,
                   "wall time between progress lines on stderr")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   sub->footer(
-      "Exit codes: 0 ok, 2 invalid input (nothing ran), 3 the run failed (NaN, energy blow-up, "
+      "Exit codes: 0 ok, 2 invalid input (nothing ran; also a checkpoint that does not fit the "
+      "scene), 3 the run failed (NaN, energy blow-up, "
       "particles lost, wall-time budget), 4 an output could not be written. summary.json is "
       "written in every case but 4. See docs/cli.md.");
   return {sub, [options] { return RunSimulate(*options, std::cerr); }};

@@ -29,6 +29,12 @@ nlohmann::ordered_json RunRecordToJson(const RunRecord& r) {
   j["termination"] = core::TerminationName(s.termination);
   j["message"] = s.message;
   j["steps"] = s.steps;
+  j["restarted_from"] = nlohmann::ordered_json();
+  if (r.restarted_from) {
+    j["restarted_from"]["checkpoint"] = r.restarted_from->checkpoint_path;
+    j["restarted_from"]["time_s"] = Finite(r.restarted_from->time_s);
+    j["restarted_from"]["steps"] = r.restarted_from->steps;
+  }
   j["simulated_time_s"] = Finite(s.simulated_time_s);
   j["requested_duration_s"] =
       r.requested_duration_s ? Finite(*r.requested_duration_s) : nlohmann::ordered_json();

@@ -39,6 +39,12 @@ struct RunRecord {
   double total_wall_time_s = 0;                // the whole command, outputs included
   std::vector<core::FactoryReport> factories;  // one per scene factory
   std::vector<NamedWallLoad> wall_loads;       // one per wall, at the end of the run
+  struct Restart {
+    std::string checkpoint_path;  // as given to --restart
+    double time_s = 0;            // simulated time of the checkpoint
+    int64_t steps = 0;            // steps taken before the checkpoint
+  };
+  std::optional<Restart> restarted_from;  // set if the run continued a checkpoint
   std::string output_error;                    // non-empty if an output file could not be written
   nlohmann::ordered_json outputs = nlohmann::ordered_json::object();  // RunOutputs::Describe()
 };

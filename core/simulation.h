@@ -35,7 +35,9 @@ class Simulation {
     int check_every_steps = 100;      // cadence of the NaN / energy / domain checks
     int reorder_every_rebuilds = 20;  // spatial re-sort of particles for cache locality (0: never)
   };
-  // Called every `every_steps` steps during Run(); return false to stop the run early (ok).
+  // Called during Run() after every step whose step count (steps(), counted from the start of
+  // the simulation, so a restarted run keeps the cadence) is a multiple of `every_steps`;
+  // return false to stop the run early (ok).
   struct Observer {
     int64_t every_steps = 0;
     std::function<bool(const Simulation&)> callback;

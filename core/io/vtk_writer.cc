@@ -192,6 +192,11 @@ bool VtkSeries::Write(const Particles& particles, double time_s, std::string* er
   return WriteIndex(error);
 }
 
+bool VtkSeries::Resume(std::vector<Entry> earlier, std::string* error) {
+  entries_ = std::move(earlier);
+  return WriteIndex(error);
+}
+
 bool VtkSeries::WriteIndex(std::string* error) const {
   const std::string path = SeriesPath();
   std::ofstream out(path, std::ios::trunc);

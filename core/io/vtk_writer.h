@@ -47,6 +47,9 @@ class VtkSeries {
   // `directory` receives the snapshots "<prefix>_NNNNNN.vtk" and "<prefix>.vtk.series".
   VtkSeries(std::string directory, std::string prefix, VtkOptions options);
 
+  // Continues the series of an earlier run (a restart into the same directory): `earlier` are
+  // its first snapshots, so the next Write is numbered after them. Rewrites the index.
+  bool Resume(std::vector<Entry> earlier, std::string* error);
   // Writes the next snapshot and rewrites the series index (so it is valid after a crash).
   bool Write(const Particles& particles, double time_s, std::string* error,
              const Clumps* clumps = nullptr);

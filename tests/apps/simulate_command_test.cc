@@ -8,42 +8,20 @@
 
 #include "apps/exit_codes.h"
 #include "apps/test_paths.h"
+#include "apps/tiny_scene.h"
 #include "core/io/legacy_vtk_reader.h"
 #include "core/io/scratch_dir.h"
 
 using namespace demcal::apps;
 using demcal::testing::ReadLegacyVtk;
 using demcal::testing::RepoRoot;
+using demcal::testing::ReadJson;
 using demcal::testing::ScratchDir;
+using demcal::testing::TinyScene;
+using demcal::testing::WriteScene;
 using nlohmann::json;
 
 namespace {
-
-// 20 spheres dropped into a closed 20 mm box for 20 ms, snapshots every 5 ms.
-json TinyScene() {
-  return json::parse(R"({
-    "format": "demcal-scene/1",
-    "seed": 3,
-    "materials": [{"name": "glass", "youngs_modulus_Pa": 5e6, "poisson_ratio": 0.25,
-                   "density_kg_m3": 2500}],
-    "species": [{"name": "beads", "material": "glass", "diameter_m": 0.002}],
-    "domain": {"min_m": [0, 0, 0], "max_m": [0.02, 0.02, 0.02]},
-    "walls": [{"type": "box", "min_m": [0, 0, 0], "max_m": [0.02, 0.02, 0.02],
-               "material": "glass"}],
-    "fills": [{"species": "beads", "count": 20,
-               "region": {"min_m": [0.001, 0.001, 0.001], "max_m": [0.019, 0.019, 0.019]}}],
-    "time": {"duration_s": 0.02},
-    "output": {"vtk_interval_s": 0.005, "vtk_format": "ascii"}
-  })");
-}
-
-std::string WriteScene(const ScratchDir& dir, const json& scene) {
-  const std::string path = dir.str("scene.json");
-  std::ofstream(path) << scene.dump(2);
-  return path;
-}
-
-json ReadJson(const std::string& path) { return json::parse(std::ifstream(path)); }
 
 int CountLines(const std::string& path) {
   std::ifstream in(path);
