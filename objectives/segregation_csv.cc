@@ -1,0 +1,79 @@
+#include "objectives/segregation_csv.h"
+
+#include <fstream>
+#include <functional>
+
+namespace demcal::objectives {
+namespace {
+
+std::string Name(const std::vector<std::string>& names, int species) {
+  return species < static_cast<int>(names.size()) ? names[species] : std::to_string(species);
+}
+
+bool WriteFile(const std::string& path, std::string* error,
+               const std::function<void(std::ostream&)>& write) {
+  std::ofstream out(path);
+  write(out);
+  if (out) return true;
+  if (error) *error = "cannot write CSV file " + path;
+  return false;
+}
+
+void WriteIndexRows(std::ostream& out, const RegionSegregation& region,
+                    const std::vector<std::string>& names) {
+  for (const SpeciesSegregation& s : region.species) {
+    for (const auto& [basis, index] : {std::pair{"number", &s.number}, {"mass", &s.mass}}) {
+      out << region.range.name << ',' << s.species << ',' << Name(names, s.species) << ','
+          << basis << ',' << index->defined << ',' << index->bins_used << ','
+          << index->mean_fraction << ',' << index->cov_m << ',' << index->cov_r << ','
+          << index->cov_r_standard_error << ',' << index->s_n << '\n';
+    }
+  }
+}
+
+}  // namespace
+
+void WriteBinCsv(std::ostream& out, const HeapBinGrid& grid, const BinCounts& counts,
+                 const std::vector<std::string>& species_names) {
+  out.precision(10);
+  out << "layer,row,col,x_min_m,x_max_m,z_min_m,z_max_m,y_min_m,y_max_m,species,species_name,"
+         "count,mass_kg,solid_volume_m3,number_fraction,mass_fraction\n";
+  for (int layer = 0; layer < counts.layers; ++layer) {
+    const double y_min = grid.y_min_m() + layer * grid.LayerThicknessM();
+    for (int face = 0; face < counts.face_bins; ++face) {
+      const FaceBin& f = grid.face_bins()[face];
+      const BinComposition& bin = counts.at(layer, face);
+      for (int s = 0; s < counts.species_count; ++s) {
+        out << layer << ',' << f.row << ',' << f.col << ',' << f.x_min_m << ',' << f.x_max_m << ','
+            << f.z_min_m << ',' << f.z_max_m << ',' << y_min << ','
+            << y_min + grid.LayerThicknessM() << ',' << s << ',' << Name(species_names, s) << ','
+            << bin.count[s] << ',' << bin.mass_kg[s] << ',' << bin.volume_m3[s] << ','
+            << bin.NumberFraction(s) << ',' << bin.MassFraction(s) << '\n';
+      }
+    }
+  }
+}
+
+bool WriteBinCsv(const std::string& path, const HeapBinGrid& grid, const BinCounts& counts,
+                 const std::vector<std::string>& species_names, std::string* error) {
+  return WriteFile(path, error,
+                   [&](std::ostream& out) { WriteBinCsv(out, grid, counts, species_names); });
+}
+
+void WriteSegregationCsv(std::ostream& out, const HeapSegregation& heap,
+                         const std::vector<std::string>& species_names) {
+  out.precision(10);
+  out << "region,species,species_name,basis,defined,bins_used,mean_fraction,cov_m,cov_r,"
+         "cov_r_standard_error,s_n\n";
+  for (const RegionSegregation* region : {&heap.front, &heap.back, &heap.whole})
+    WriteIndexRows(out, *region, species_names);
+  for (const RegionSegregation& layer : heap.layers) WriteIndexRows(out, layer, species_names);
+}
+
+bool WriteSegregationCsv(const std::string& path, const HeapSegregation& heap,
+                         const std::vector<std::string>& species_names, std::string* error) {
+  return WriteFile(path, error,
+                   [&](std::ostream& out) { WriteSegregationCsv(out, heap, species_names); });
+}
+
+}  // namespace demcal::objectives
