@@ -134,4 +134,21 @@ ReposeAngle MeasureConicalHeapAngle(const Snapshot& snapshot, Vec3 axis_point_m,
   return result;
 }
 
+bool EstimateHeapAxis(const Snapshot& snapshot, double base_z_m, Vec3* axis_point_m,
+                      double top_fraction) {
+  double top = -INFINITY;
+  for (const SurfaceSphere& sphere : snapshot.spheres)
+    top = std::max(top, sphere.position_m.z + sphere.radius_m);
+  if (!(top > base_z_m) || !std::isfinite(top) || !(top_fraction > 0)) return false;
+  const double threshold = top - top_fraction * (top - base_z_m);
+  double x = 0, y = 0;
+  int n = 0;
+  for (const SurfaceSphere& sphere : snapshot.spheres) {
+    if (sphere.position_m.z + sphere.radius_m < threshold) continue;
+    x += sphere.position_m.x, y += sphere.position_m.y, ++n;
+  }
+  *axis_point_m = {x / n, y / n, base_z_m};
+  return true;
+}
+
 }  // namespace demcal::objectives

@@ -37,8 +37,10 @@ struct ReposeAngleOptions {
 struct FlankFit {
   double angle_deg = 0;  // atan(|slope|)
   double r_squared = 0;
-  int points = 0;                   // profile points in the height window
-  double two_point_angle_deg = 0;   // paper Fig. 5: from the 10% and 90% height points
+  int points = 0;  // profile points in the height window
+  // Paper Fig. 5: from the surface points at the window heights (first crossings walking out from
+  // the apex, linearly interpolated). Like the paper's manual reading it has no outlier guard.
+  double two_point_angle_deg = 0;
   bool two_point_ok = false;        // false when the profile does not cross both heights
   double angle_sem_deg = 0;         // standard error of angle_deg from the fit residuals
   double slope = 0;                 // d top / d s; negative for a heap flank
@@ -65,5 +67,11 @@ ReposeAngle MeasureSlotHeapAngle(const Snapshot& snapshot, const ReposeAngleOpti
 // Free conical heap: sectors around the vertical axis through axis_point_m (its z is ignored).
 ReposeAngle MeasureConicalHeapAngle(const Snapshot& snapshot, Vec3 axis_point_m,
                                     const ReposeAngleOptions& options);
+
+// The vertical axis of a conical heap when the inflow axis is not known (../shared/physics.md §5.1
+// step 3): the centroid (x, y) of the spheres whose top is within top_fraction·H of the highest
+// top, H = max top − base_z_m. z of the result is base_z_m. False when nothing is above the base.
+bool EstimateHeapAxis(const Snapshot& snapshot, double base_z_m, Vec3* axis_point_m,
+                      double top_fraction = 0.1);
 
 }  // namespace demcal::objectives

@@ -28,8 +28,8 @@ std::vector<std::vector<SurfacePoint>> SectorProfiles(const Snapshot& snapshot, 
                                                       int sectors, double cell_m);
 
 // Index of the apex of a profile: the highest point within one neighbour of the maximum of the
-// 3-point moving average, so a single high outlier does not move the apex but an exact profile
-// keeps its true peak. -1 for an empty profile.
+// 3-point moving average, so a single high outlier away from the peak does not move the apex but
+// an exact profile keeps its true peak. -1 for an empty profile.
 int ApexIndex(const std::vector<SurfacePoint>& profile);
 
 }  // namespace demcal::objectives

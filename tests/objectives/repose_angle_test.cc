@@ -93,6 +93,20 @@ TEST_CASE("slot heap: jittered positions and random sizes stay within the noise"
   CHECK(std::abs(a.flanks[0].angle_deg - deg) > 1e-6);
 }
 
+TEST_CASE("slot heap: a stray grain above the apex height does not move the apex", "[unit]") {
+  Snapshot heap = SlotHeap({.left_deg = 30, .right_deg = 40}, kDiameter, {});
+  // A grain resting on the left flank near its toe, its top 2 mm above the apex.
+  heap.spheres.push_back({{-0.06, 0, 0.042 - kDiameter / 2}, kDiameter / 2, 0});
+  const ReposeAngle a = MeasureSlotHeapAngle(heap, {});
+  REQUIRE(a.ok);
+  REQUIRE(a.flanks.size() == 2);
+  CHECK(a.apex_s_m == Approx(0).margin(1e-12));
+  CHECK(a.heap_height_m == Approx(0.042).margin(1e-12));
+  // Its cell top is above the window and drops out; the flanks keep their slopes.
+  CHECK(a.flanks[0].angle_deg == Approx(30).margin(1e-6));
+  CHECK(a.flanks[1].angle_deg == Approx(40).margin(1e-6));
+}
+
 TEST_CASE("slot heap: a heap poured against a wall is measured on its one flank", "[unit]") {
   const Snapshot heap = SlotHeap({.apex_x_m = 0, .right_deg = 38, .x_min_m = 0}, kDiameter, {});
   const ReposeAngle a = MeasureSlotHeapAngle(heap, {});
@@ -117,6 +131,19 @@ TEST_CASE("conical heap: a 35 degree cone gives 35 degrees in every sector", "[u
     CHECK(f.two_point_ok);
     CHECK(f.two_point_angle_deg == Approx(35).margin(1e-6));
   }
+}
+
+TEST_CASE("conical heap: the axis is found from the top of the heap", "[unit]") {
+  // Every ring of the constructed cone is evenly spaced around the axis, so its centroid is exact.
+  const Snapshot cone = ConicalHeap(0.1, -0.05, 0.04, 35, kDiameter, {});
+  Vec3 axis;
+  REQUIRE(EstimateHeapAxis(cone, 0, &axis));
+  CHECK(axis.x == Approx(0.1).margin(1e-12));
+  CHECK(axis.y == Approx(-0.05).margin(1e-12));
+  CHECK(axis.z == 0);
+  CHECK(MeasureConicalHeapAngle(cone, axis, {}).angle_deg == Approx(35).margin(1e-6));
+  CHECK_FALSE(EstimateHeapAxis(cone, 1.0, &axis));
+  CHECK_FALSE(EstimateHeapAxis(Snapshot{}, 0, &axis));
 }
 
 TEST_CASE("conical heap: jittered positions and random sizes stay within the noise", "[unit]") {
