@@ -89,7 +89,8 @@ std::vector<BinComposition> Compose(const BinCounts& counts, const LayerRange& r
   const int last = std::min(range.last, counts.layers - 1);
   for (int face = 0; face < counts.face_bins; ++face) {
     merged.push_back(EmptyBin(face, counts.species_count));
-    for (int layer = first; layer <= last; ++layer) Accumulate(merged.back(), counts.at(layer, face));
+    for (int layer = first; layer <= last; ++layer)
+      Accumulate(merged.back(), counts.at(layer, face));
   }
   return merged;
 }

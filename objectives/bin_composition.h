@@ -29,7 +29,7 @@ struct BinComposition {
   std::vector<double> volume_m3;  // per species: solid volume of the grains
   int TotalCount() const;
   double TotalMassKg() const;
-  double SolidVolumeM3() const;   // all species
+  double SolidVolumeM3() const;  // all species
   // Species fractions; 0 in an empty bin (callers skip empty bins, see HoldsGrains).
   double NumberFraction(int species) const;
   double MassFraction(int species) const;

@@ -10,8 +10,8 @@ std::optional<CovStats> CoefficientOfVariation(const std::vector<double>& values
     if (error) *error = "CoV: " + message;
     return std::nullopt;
   };
-  if (values.size() < 2) return fail("needs at least two bins, got " +
-                                     std::to_string(values.size()));
+  if (values.size() < 2)
+    return fail("needs at least two bins, got " + std::to_string(values.size()));
   double sum = 0;
   for (double v : values) sum += v;
   const double n = static_cast<double>(values.size());

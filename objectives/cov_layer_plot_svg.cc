@@ -19,7 +19,8 @@ double LargestCov(const HeapSegregation& heap, bool by_mass) {
   double top = 0;
   for (const RegionSegregation& layer : heap.layers)
     for (const SpeciesSegregation& s : layer.species) top = std::max(top, Pick(s, by_mass).cov_m);
-  for (const SpeciesSegregation& s : heap.whole.species) top = std::max(top, Pick(s, by_mass).cov_m);
+  for (const SpeciesSegregation& s : heap.whole.species)
+    top = std::max(top, Pick(s, by_mass).cov_m);
   return top > 0 ? top * 1.1 : 1.0;
 }
 
@@ -67,8 +68,8 @@ SvgCanvas DrawPlot(const HeapSegregation& heap, const std::vector<std::string>& 
     if (whole.defined)
       svg.Line(kLeft, px_y(whole.cov_m), o.width_px - kRight, px_y(whole.cov_m), colour, 1, "5,4");
     const double legend_y = kTop + 18.0 * static_cast<double>(s + 1);
-    svg.Line(o.width_px - kRight + 10, legend_y - 4, o.width_px - kRight + 30, legend_y - 4,
-             colour, 2);
+    svg.Line(o.width_px - kRight + 10, legend_y - 4, o.width_px - kRight + 30, legend_y - 4, colour,
+             2);
     svg.Text(o.width_px - kRight + 34, legend_y, s < names.size() ? names[s] : std::to_string(s),
              11);
   }

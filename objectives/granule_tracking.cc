@@ -22,9 +22,7 @@ std::optional<double> SurfaceNearGrain(const Snapshot& snapshot, int index,
 
 }  // namespace
 
-double GranuleSample::SpecificKineticEnergyJPerKg() const {
-  return 0.5 * Norm2(velocity_m_s);
-}
+double GranuleSample::SpecificKineticEnergyJPerKg() const { return 0.5 * Norm2(velocity_m_s); }
 double GranuleSample::SpeedMS() const { return Norm(velocity_m_s); }
 
 std::optional<double> SurfaceHeightAt(const Snapshot& snapshot, double x_m, double column_width_m,

@@ -36,8 +36,8 @@ struct GranuleSample {
   Vec3 position_m;
   Vec3 velocity_m_s;
   double radius_m = 0;
-  bool has_surface = false;      // false: no slow sphere in the column
-  double surface_height_m = 0;   // heap surface at the grain's x in this snapshot
+  bool has_surface = false;                    // false: no slow sphere in the column
+  double surface_height_m = 0;                 // heap surface at the grain's x in this snapshot
   double SpecificKineticEnergyJPerKg() const;  // ½ v²
   double SpeedMS() const;
 };
@@ -58,8 +58,8 @@ std::vector<GranuleTrack> TrackGranules(const std::vector<Snapshot>& snapshots,
                                         const SurfaceOptions& options);
 
 struct ImpactOptions {
-  double min_peak_speed_m_s = 0.3;  // the grain must have been falling this fast before
-  double speed_drop_fraction = 0.5; // impact = speed below (1 − this) × the running peak
+  double min_peak_speed_m_s = 0.3;      // the grain must have been falling this fast before
+  double speed_drop_fraction = 0.5;     // impact = speed below (1 − this) × the running peak
   double approach_gap_diameters = 1.0;  // surface approach: grain bottom within this of surface
 };
 

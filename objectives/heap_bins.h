@@ -91,8 +91,9 @@ class HeapBinGrid {
   int FaceBinOf(double x_m, double z_m) const;
   // Layer of a depth coordinate y, or −1 outside [y_min, y_max].
   int LayerOf(double y_m) const;
-  BinIndex Locate(const Vec3& position_m) const { return {FaceBinOf(position_m.x, position_m.z),
-                                                          LayerOf(position_m.y)}; }
+  BinIndex Locate(const Vec3& position_m) const {
+    return {FaceBinOf(position_m.x, position_m.z), LayerOf(position_m.y)};
+  }
 
  private:
   std::vector<FaceBin> face_bins_;

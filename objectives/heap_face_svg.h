@@ -21,7 +21,7 @@ struct HeapFaceSvgOptions {
   LayerRange layers = FrontFace();  // whose grains are drawn (by centre)
   std::vector<std::string> species_colours = {"#f0f0f0", "#1f5fd6", "#d62728"};
   std::string outline_colour = "#8c8c8c";
-  double width_px = 900;   // picture width; the height follows the heap's aspect ratio
+  double width_px = 900;  // picture width; the height follows the heap's aspect ratio
   bool draw_grid = true;
 };
 

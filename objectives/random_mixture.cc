@@ -42,8 +42,8 @@ int64_t BinomialSmallP(core::Rng& rng, int64_t n, double p) {
 double DrawFraction(core::Rng& rng, double p, double n, RandomDraw draw) {
   if (draw == RandomDraw::kNormal) return p + std::sqrt(p * (1 - p) / n) * StandardNormal(rng);
   const int64_t trials = std::max<int64_t>(1, std::llround(n));
-  const int64_t k = p <= 0.5 ? BinomialSmallP(rng, trials, p)
-                             : trials - BinomialSmallP(rng, trials, 1 - p);
+  const int64_t k =
+      p <= 0.5 ? BinomialSmallP(rng, trials, p) : trials - BinomialSmallP(rng, trials, 1 - p);
   return static_cast<double>(k) / static_cast<double>(trials);
 }
 
@@ -66,7 +66,8 @@ std::vector<double> GrainsPerBin(const std::vector<double>& filled_volumes_m3,
   return n;
 }
 
-std::optional<RandomMixtureCov> RandomMixtureCoV(double p, const std::vector<double>& grains_per_bin,
+std::optional<RandomMixtureCov> RandomMixtureCoV(double p,
+                                                 const std::vector<double>& grains_per_bin,
                                                  const RandomMixtureOptions& options,
                                                  std::string* error) {
   auto fail = [&](const std::string& message) {
@@ -74,7 +75,8 @@ std::optional<RandomMixtureCov> RandomMixtureCoV(double p, const std::vector<dou
     return std::nullopt;
   };
   if (!options.IsValid(error)) return std::nullopt;
-  if (!(p > 0 && p < 1)) return fail("mean fraction P must lie in (0, 1), got " + std::to_string(p));
+  if (!(p > 0 && p < 1))
+    return fail("mean fraction P must lie in (0, 1), got " + std::to_string(p));
   if (grains_per_bin.size() < 2) return fail("needs at least two bins");
   for (double n : grains_per_bin)
     if (!(n > 0) || !std::isfinite(n)) return fail("every bin needs N > 0 grains");

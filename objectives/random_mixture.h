@@ -3,7 +3,8 @@
 // perfectly random mixture of the same mean composition would show in the same bins. Each bin's
 // fraction is drawn from the binomial sampling distribution of a random mixture, mean P and
 // σ_R = sqrt(P(1 − P)/N) (Eq. 6), N = number of granules the bin holds; the CoV of the drawn
-// fractions (Eq. 5, same estimator as CoV_m) is averaged over repetitions (the paper: 100 in Excel).
+// fractions (Eq. 5, same estimator as CoV_m) is averaged over repetitions (the paper: 100 in
+// Excel).
 //
 // N per bin (Eq. 6's N): the paper takes bin volume × 0.6 loose packing / volume of one granule of
 // the species, with smaller N for the partly filled corner and edge bins. Here the filled volume of
@@ -52,7 +53,8 @@ std::vector<double> GrainsPerBin(const std::vector<double>& filled_volumes_m3,
 // Monte Carlo CoV_r for mean fraction p in (0, 1) and N per bin (each > 0, at least 2 bins).
 // Repetitions whose drawn fractions have a non-positive mean (possible for binomial draws of a
 // rare species) have no CoV and are skipped; nullopt and a message if none is left.
-std::optional<RandomMixtureCov> RandomMixtureCoV(double p, const std::vector<double>& grains_per_bin,
+std::optional<RandomMixtureCov> RandomMixtureCoV(double p,
+                                                 const std::vector<double>& grains_per_bin,
                                                  const RandomMixtureOptions& options,
                                                  std::string* error);
 

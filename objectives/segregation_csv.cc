@@ -23,10 +23,10 @@ void WriteIndexRows(std::ostream& out, const RegionSegregation& region,
                     const std::vector<std::string>& names) {
   for (const SpeciesSegregation& s : region.species) {
     for (const auto& [basis, index] : {std::pair{"number", &s.number}, {"mass", &s.mass}}) {
-      out << region.range.name << ',' << s.species << ',' << Name(names, s.species) << ','
-          << basis << ',' << index->defined << ',' << index->bins_used << ','
-          << index->mean_fraction << ',' << index->cov_m << ',' << index->cov_r << ','
-          << index->cov_r_standard_error << ',' << index->s_n << '\n';
+      out << region.range.name << ',' << s.species << ',' << Name(names, s.species) << ',' << basis
+          << ',' << index->defined << ',' << index->bins_used << ',' << index->mean_fraction << ','
+          << index->cov_m << ',' << index->cov_r << ',' << index->cov_r_standard_error << ','
+          << index->s_n << '\n';
     }
   }
 }
@@ -74,6 +74,29 @@ bool WriteSegregationCsv(const std::string& path, const HeapSegregation& heap,
                          const std::vector<std::string>& species_names, std::string* error) {
   return WriteFile(path, error,
                    [&](std::ostream& out) { WriteSegregationCsv(out, heap, species_names); });
+}
+
+void WriteGranuleTracksCsv(std::ostream& out, const std::vector<GranuleTrack>& tracks) {
+  out.precision(10);
+  out << "id,species,time_s,x_m,y_m,z_m,speed_m_s,specific_kinetic_energy_j_kg,surface_height_m,"
+         "depth_below_surface_m\n";
+  for (const GranuleTrack& track : tracks) {
+    for (const GranuleSample& s : track.samples) {
+      out << track.id << ',' << track.species << ',' << s.time_s << ',' << s.position_m.x << ','
+          << s.position_m.y << ',' << s.position_m.z << ',' << s.SpeedMS() << ','
+          << s.SpecificKineticEnergyJPerKg() << ',';
+      if (s.has_surface)
+        out << s.surface_height_m << ',' << s.surface_height_m - s.position_m.z;
+      else
+        out << ',';
+      out << '\n';
+    }
+  }
+}
+
+bool WriteGranuleTracksCsv(const std::string& path, const std::vector<GranuleTrack>& tracks,
+                           std::string* error) {
+  return WriteFile(path, error, [&](std::ostream& out) { WriteGranuleTracksCsv(out, tracks); });
 }
 
 }  // namespace demcal::objectives

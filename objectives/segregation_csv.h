@@ -11,6 +11,11 @@
 //   cov_r_standard_error,s_n
 // basis is "number" or "mass"; an undefined index has defined = 0 and zeros.
 //
+// Tracked granules (Fig. 19; one row per granule and snapshot; surface columns empty when no
+// surface sphere lies in the granule's column):
+//   id,species,time_s,x_m,y_m,z_m,speed_m_s,specific_kinetic_energy_j_kg,surface_height_m,
+//   depth_below_surface_m
+//
 // Usage:
 //   if (!WriteBinCsv("out/segregation_bins.csv", *grid, *counts, names, &error)) ...
 #include <ostream>
@@ -18,6 +23,7 @@
 #include <vector>
 
 #include "objectives/bin_composition.h"
+#include "objectives/granule_tracking.h"
 #include "objectives/heap_bins.h"
 #include "objectives/segregation_index.h"
 
@@ -32,5 +38,9 @@ void WriteSegregationCsv(std::ostream& out, const HeapSegregation& heap,
                          const std::vector<std::string>& species_names);
 bool WriteSegregationCsv(const std::string& path, const HeapSegregation& heap,
                          const std::vector<std::string>& species_names, std::string* error);
+
+void WriteGranuleTracksCsv(std::ostream& out, const std::vector<GranuleTrack>& tracks);
+bool WriteGranuleTracksCsv(const std::string& path, const std::vector<GranuleTrack>& tracks,
+                           std::string* error);
 
 }  // namespace demcal::objectives

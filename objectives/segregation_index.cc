@@ -26,8 +26,8 @@ BinSamples Sample(const std::vector<BinComposition>& bins, int species, Basis ba
       samples.grains_per_bin.push_back(bin.TotalCount());
     } else {
       samples.fractions.push_back(bin.MassFraction(species));
-      samples.grains_per_bin.push_back(
-          FilledVolumeM3(bin.SolidVolumeM3(), packing) * packing / granule_volume_m3);
+      samples.grains_per_bin.push_back(FilledVolumeM3(bin.SolidVolumeM3(), packing) * packing /
+                                       granule_volume_m3);
     }
   }
   return samples;
@@ -90,8 +90,8 @@ std::optional<RegionSegregation> AnalyseRegion(const BinCounts& counts, const La
     species.number = Index(Sample(bins, s, Basis::kNumber, 0, 0), options, stream);
     const double volume = granule_volumes_m3[s];
     if (volume > 0) {
-      species.mass = Index(Sample(bins, s, Basis::kMass, volume, options.packing_fraction),
-                           options, core::DeriveSeed(stream, 1));
+      species.mass = Index(Sample(bins, s, Basis::kMass, volume, options.packing_fraction), options,
+                           core::DeriveSeed(stream, 1));
     } else {
       species.mass.note = "no granule volume for species " + std::to_string(s);
       if (species.number.mean_fraction > 0) return fail(species.mass.note);

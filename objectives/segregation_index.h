@@ -35,13 +35,13 @@ struct SegregationOptions {
 // One species, one concentration basis, one region.
 struct SegregationIndex {
   bool defined = false;
-  std::string note;              // why it is undefined
-  int bins_used = 0;             // bins holding grains
-  double mean_fraction = 0;      // μ of Eq. 5 = P of Eq. 6
-  double cov_m = 0;              // Eq. 5, sample standard deviation
-  double cov_r = 0;              // Eq. 6, mean over the Monte Carlo repetitions
+  std::string note;          // why it is undefined
+  int bins_used = 0;         // bins holding grains
+  double mean_fraction = 0;  // μ of Eq. 5 = P of Eq. 6
+  double cov_m = 0;          // Eq. 5, sample standard deviation
+  double cov_r = 0;          // Eq. 6, mean over the Monte Carlo repetitions
   double cov_r_standard_error = 0;
-  double s_n = 0;                // Eq. 7
+  double s_n = 0;  // Eq. 7
 };
 
 struct SpeciesSegregation {
@@ -56,9 +56,9 @@ struct RegionSegregation {
 };
 
 struct HeapSegregation {
-  RegionSegregation front;   // 2D, first layer
-  RegionSegregation back;    // 2D, last layer
-  RegionSegregation whole;   // 3D, face bins through the full depth
+  RegionSegregation front;                // 2D, first layer
+  RegionSegregation back;                 // 2D, last layer
+  RegionSegregation whole;                // 3D, face bins through the full depth
   std::vector<RegionSegregation> layers;  // Fig. 12, layer 0 = front
 };
 

@@ -1,8 +1,7 @@
-#include <catch2/catch.hpp>
-
-#include <cmath>
-
 #include "objectives/granule_tracking.h"
+
+#include <catch2/catch.hpp>
+#include <cmath>
 
 using namespace demcal::objectives;
 

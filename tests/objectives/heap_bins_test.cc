@@ -1,7 +1,8 @@
+#include "objectives/heap_bins.h"
+
 #include <catch2/catch.hpp>
 
 #include "objectives/bin_composition.h"
-#include "objectives/heap_bins.h"
 #include "synthetic_heap.h"
 
 using namespace demcal::objectives;

@@ -1,9 +1,9 @@
-#include <catch2/catch.hpp>
+#include "objectives/random_mixture.h"
 
+#include <catch2/catch.hpp>
 #include <cmath>
 
 #include "objectives/coefficient_of_variation.h"
-#include "objectives/random_mixture.h"
 
 using namespace demcal::objectives;
 

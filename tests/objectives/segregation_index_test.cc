@@ -1,8 +1,8 @@
-#include <catch2/catch.hpp>
+#include "objectives/segregation_index.h"
 
+#include <catch2/catch.hpp>
 #include <cmath>
 
-#include "objectives/segregation_index.h"
 #include "synthetic_heap.h"
 
 using namespace demcal::objectives;

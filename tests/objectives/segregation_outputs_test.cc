@@ -1,5 +1,4 @@
 #include <catch2/catch.hpp>
-
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -81,7 +80,7 @@ TEST_CASE("the heap face SVG draws the front layer's grains and the 21 bins", "[
   const std::string svg = HeapFaceSvg(f.snap, f.grid, {});
   CHECK(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0) == 0);
   CHECK(Occurrences(svg, "<circle") == front_grains);
-  CHECK(Occurrences(svg, "<rect") == 21 + 1);  // bins + background
+  CHECK(Occurrences(svg, "<rect") == 21 + 1);       // bins + background
   CHECK(Occurrences(svg, "fill=\"#d62728\"") > 0);  // EP red
   CHECK(Occurrences(svg, "fill=\"#1f5fd6\"") > 0);  // TAED blue
   CHECK(Occurrences(svg, "</svg>") == 1);
@@ -98,6 +97,21 @@ TEST_CASE("the CoV-per-layer plot has one line per species", "[unit]") {
   CHECK(Occurrences(svg, "stroke-dasharray") == 3);  // whole-heap CoV per species
   CHECK(Occurrences(svg, ">EP</text>") == 1);
   CHECK(Occurrences(svg, "<circle") == 8 * 3);  // a marker per layer and species
+}
+
+TEST_CASE("the granule track CSV has a row per sample with the specific kinetic energy", "[unit]") {
+  GranuleTrack track{42, 2, {}};
+  track.samples.push_back({0.5, {0.1, 0.0, 0.2}, {0, 0, -2}, 0.001, true, 0.15});
+  track.samples.push_back({0.6, {0.1, 0.0, 0.14}, {0, 0, 0}, 0.001, false, 0});
+  std::ostringstream out;
+  WriteGranuleTracksCsv(out, {track});
+  const auto lines = Lines(out.str());
+  REQUIRE(lines.size() == 3);
+  CHECK(lines[0] ==
+        "id,species,time_s,x_m,y_m,z_m,speed_m_s,specific_kinetic_energy_j_kg,surface_height_m,"
+        "depth_below_surface_m");
+  CHECK(lines[1] == "42,2,0.5,0.1,0,0.2,2,2,0.15,-0.05");  // ½·2² = 2 J/kg
+  CHECK(lines[2] == "42,2,0.6,0.1,0,0.14,0,0,,");
 }
 
 TEST_CASE("the writers create files and report an unwritable path", "[unit]") {
