@@ -80,7 +80,7 @@ SvgPlot SlotHeapProfilePlot(const Snapshot& snapshot, const ReposeAngle& angle,
                .equal_aspect = true};
   if (!(angle.cell_m > 0)) return plot;
   const std::vector<SurfacePoint> profile = SlotProfile(snapshot, angle.cell_m);
-  plot.series.push_back(Dots(profile, "surface (cell tops)"));
+  plot.series.push_back(Dots(profile, "surface points"));
   const Extent x = XRange(profile);
   AddWindow(angle, options, x.lo, x.hi, &plot);
   for (size_t k = 0; k < angle.flanks.size(); ++k) {
@@ -102,7 +102,7 @@ SvgPlot ConicalHeapProfilePlot(const Snapshot& snapshot, Vec3 axis_point_m,
   std::vector<SurfacePoint> all;
   for (const auto& sector : SectorProfiles(snapshot, axis_point_m, options.sectors, angle.cell_m))
     all.insert(all.end(), sector.begin(), sector.end());
-  plot.series.push_back(Dots(all, "surface (cell tops, all sectors)"));
+  plot.series.push_back(Dots(all, "surface points"));
   const Extent r = XRange(all);
   AddWindow(angle, options, r.lo, r.hi, &plot);
   for (size_t k = 0; k < angle.flanks.size(); ++k)

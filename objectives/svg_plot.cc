@@ -3,9 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <iomanip>
-#include <sstream>
+
+#include "objectives/svg_canvas.h"
 
 namespace demcal::objectives {
 
@@ -53,81 +52,64 @@ double TickStep(double span) {
   return 10 * decade;
 }
 
-std::string Escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '&')
-      out += "&amp;";
-    else if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else
-      out += c;
-  }
-  return out;
-}
-
 std::string Number(double v) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.4g", std::abs(v) < 1e-12 ? 0.0 : v);
   return buffer;
 }
 
-class Canvas {
+bool Finite(double x, double y) { return std::isfinite(x) && std::isfinite(y); }
+
+// Draws an SvgPlot on an SvgCanvas (svg_canvas.h): frame, ticks, labels, series, legend.
+class Chart {
  public:
-  Canvas(const SvgPlot& plot, Range x, Range y) : plot_(plot), x_(x), y_(y) {
-    w_ = plot.width_px - kLeft - kRight;
-    h_ = plot.height_px - kTop - kBottom;
-  }
-  double Px(double x) const { return kLeft + (x - x_.lo) / x_.Span() * w_; }
-  double Py(double y) const { return kTop + (y_.hi - y) / y_.Span() * h_; }
+  Chart(const SvgPlot& plot, Range x, Range y)
+      : plot_(plot),
+        x_(x),
+        y_(y),
+        w_(plot.width_px - kLeft - kRight),
+        h_(plot.height_px - kTop - kBottom),
+        px_{x.lo, x.hi, kLeft, kLeft + w_},
+        py_{y.lo, y.hi, kTop + h_, kTop} {}
 
-  void Axes(std::ostringstream& out) const {
-    out << "<rect x='" << kLeft << "' y='" << kTop << "' width='" << w_ << "' height='" << h_
-        << "' fill='none' stroke='black'/>\n";
+  void Axes(SvgCanvas& svg) const {
+    svg.Rect(kLeft, kTop, w_, h_, "none", "black");
     const double sx = TickStep(x_.Span()), sy = TickStep(y_.Span());
-    for (double t = std::ceil(x_.lo / sx) * sx; t <= x_.hi; t += sx)
-      out << "<line x1='" << Px(t) << "' y1='" << kTop + h_ << "' x2='" << Px(t) << "' y2='"
-          << kTop + h_ + 5 << "' stroke='black'/><text x='" << Px(t) << "' y='" << kTop + h_ + 20
-          << "' text-anchor='middle'>" << Number(t) << "</text>\n";
-    for (double t = std::ceil(y_.lo / sy) * sy; t <= y_.hi; t += sy)
-      out << "<line x1='" << kLeft - 5 << "' y1='" << Py(t) << "' x2='" << kLeft << "' y2='"
-          << Py(t) << "' stroke='black'/><text x='" << kLeft - 8 << "' y='" << Py(t) + 4
-          << "' text-anchor='end'>" << Number(t) << "</text>\n";
-    out << "<text x='" << kLeft + w_ / 2 << "' y='" << plot_.height_px - 15
-        << "' text-anchor='middle'>" << Escape(plot_.x_label) << "</text>\n"
-        << "<text transform='translate(20," << kTop + h_ / 2
-        << ") rotate(-90)' text-anchor='middle'>" << Escape(plot_.y_label) << "</text>\n"
-        << "<text x='" << kLeft + w_ / 2 << "' y='25' text-anchor='middle' font-weight='bold'>"
-        << Escape(plot_.title) << "</text>\n";
-  }
-
-  void Series(std::ostringstream& out, const PlotSeries& s) const {
-    const size_t n = std::min(s.x.size(), s.y.size());
-    if (s.dots) {
-      for (size_t i = 0; i < n; ++i)
-        if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]))
-          out << "<circle cx='" << Px(s.x[i]) << "' cy='" << Py(s.y[i]) << "' r='" << s.width_px
-              << "' fill='" << s.color << "'/>\n";
-      return;
+    for (double t = std::ceil(x_.lo / sx) * sx; t <= x_.hi; t += sx) {
+      svg.Line(px_(t), kTop + h_, px_(t), kTop + h_ + 5, "black");
+      svg.Text(px_(t), kTop + h_ + 20, Number(t), 12, "middle");
     }
-    out << "<polyline fill='none' stroke='" << s.color << "' stroke-width='" << s.width_px << "'"
-        << (s.dashed ? " stroke-dasharray='6 4'" : "") << " points='";
-    for (size_t i = 0; i < n; ++i)
-      if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]))
-        out << Px(s.x[i]) << ',' << Py(s.y[i]) << ' ';
-    out << "'/>\n";
+    for (double t = std::ceil(y_.lo / sy) * sy; t <= y_.hi; t += sy) {
+      svg.Line(kLeft - 5, py_(t), kLeft, py_(t), "black");
+      svg.Text(kLeft - 8, py_(t) + 4, Number(t), 12, "end");
+    }
+    svg.Text(kLeft + w_ / 2, plot_.height_px - 15, plot_.x_label, 12, "middle");
+    svg.Text(kLeft, kTop - 8, plot_.y_label, 12, "middle");
+    svg.Text(kLeft + w_ / 2, 18, plot_.title, 14, "middle");
   }
 
-  void Legend(std::ostringstream& out) const {
+  void Series(SvgCanvas& svg, const PlotSeries& s) const {
+    std::vector<std::pair<double, double>> points;
+    for (size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i)
+      if (Finite(s.x[i], s.y[i])) points.emplace_back(px_(s.x[i]), py_(s.y[i]));
+    if (s.dots) {
+      for (const auto& [x, y] : points) svg.Circle(x, y, s.width_px, s.color, "none", 0);
+    } else if (s.dashed) {
+      for (size_t i = 1; i < points.size(); ++i)
+        svg.Line(points[i - 1].first, points[i - 1].second, points[i].first, points[i].second,
+                 s.color, s.width_px, "6 4");
+    } else {
+      svg.Polyline(points, s.color, s.width_px);
+    }
+  }
+
+  void Legend(SvgCanvas& svg) const {
     double y = kTop + 10;
+    const double x = kLeft + w_ + 10;
     for (const PlotSeries& s : plot_.series) {
       if (s.label.empty()) continue;
-      const double x = kLeft + w_ + 10;
-      out << "<line x1='" << x << "' y1='" << y << "' x2='" << x + 20 << "' y2='" << y
-          << "' stroke='" << s.color << "' stroke-width='3'/><text x='" << x + 25 << "' y='"
-          << y + 4 << "'>" << Escape(s.label) << "</text>\n";
+      svg.Line(x, y, x + 20, y, s.color, 3, s.dashed ? "6 4" : "");
+      svg.Text(x + 25, y + 4, s.label);
       y += 18;
     }
   }
@@ -135,7 +117,8 @@ class Canvas {
  private:
   const SvgPlot& plot_;
   Range x_, y_;
-  double w_ = 0, h_ = 0;
+  double w_, h_;
+  LinearMap px_, py_;
 };
 
 }  // namespace
@@ -146,32 +129,27 @@ std::string SeriesColor(int k) {
   return kPalette[((k % 8) + 8) % 8];
 }
 
-std::string RenderSvg(const SvgPlot& plot) {
+namespace {
+
+SvgCanvas Draw(const SvgPlot& plot) {
   Range x, y;
   Bounds(plot, &x, &y);
   const double w = plot.width_px - kLeft - kRight, h = plot.height_px - kTop - kBottom;
   if (plot.equal_aspect) EqualAspect(w, h, &x, &y);
-  const Canvas canvas(plot, x, y);
-  std::ostringstream out;
-  out << std::fixed << std::setprecision(2);  // pixels; tick labels are formatted apart
-  out << "<svg xmlns='http://www.w3.org/2000/svg' width='" << plot.width_px << "' height='"
-      << plot.height_px << "' font-family='sans-serif' font-size='12'>\n"
-      << "<rect width='100%' height='100%' fill='white'/>\n";
-  canvas.Axes(out);
-  for (const PlotSeries& s : plot.series) canvas.Series(out, s);
-  canvas.Legend(out);
-  out << "</svg>\n";
-  return out.str();
+  const Chart chart(plot, x, y);
+  SvgCanvas svg(plot.width_px, plot.height_px);
+  chart.Axes(svg);
+  for (const PlotSeries& s : plot.series) chart.Series(svg, s);
+  chart.Legend(svg);
+  return svg;
 }
 
+}  // namespace
+
+std::string RenderSvg(const SvgPlot& plot) { return Draw(plot).Document(); }
+
 bool WriteSvg(const std::string& path, const SvgPlot& plot, std::string* error) {
-  std::ofstream file(path);
-  if (file) file << RenderSvg(plot);
-  if (!file) {
-    if (error) *error = "cannot write " + path;
-    return false;
-  }
-  return true;
+  return Draw(plot).WriteFile(path, error);
 }
 
 }  // namespace demcal::objectives

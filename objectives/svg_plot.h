@@ -1,8 +1,9 @@
 #pragma once
-// SvgPlot: a minimal x–y plot written as hand-made SVG (no dependencies), for the pictures the
-// experiments leave for users to look at (heap profile with its fitted flanks, discharged mass
-// and outflow composition over time). Lines or dots per series, linear axes with round ticks, a
-// legend of the labelled series. Non-finite points are skipped. Plain data; thread-safe.
+// SvgPlot: a minimal x–y chart drawn on an SvgCanvas (svg_canvas.h, hand-made SVG), for the
+// pictures the experiments leave for users to look at (heap profile with its fitted flanks,
+// discharged mass and outflow composition over time). Lines or dots per series, linear axes with
+// round ticks, a legend of the labelled series. Non-finite points are skipped. Plain data;
+// thread-safe.
 //
 //   SvgPlot plot{.title = "heap", .x_label = "x [mm]", .y_label = "z [mm]"};
 //   plot.series.push_back({.label = "surface", .x = xs, .y = ys, .dots = true});

@@ -25,7 +25,7 @@ int Count(const std::string& text, const std::string& what) {
 // The pixel coordinates of the first polyline.
 std::vector<double> FirstPolyline(const std::string& svg) {
   std::smatch m;
-  REQUIRE(std::regex_search(svg, m, std::regex("points='([^']*)'")));
+  REQUIRE(std::regex_search(svg, m, std::regex("points=\"([^\"]*)\"")));
   std::string numbers = m[1];
   for (char& c : numbers)
     if (c == ',') c = ' ';
@@ -42,7 +42,7 @@ TEST_CASE("svg plot: lines, dots, escaped text, skipped non-finite points", "[un
   plot.series.push_back({.label = "line", .x = {0, 1, 2}, .y = {0, 1, NAN}});
   plot.series.push_back({.label = "", .x = {0, 1}, .y = {1, 0}, .dots = true});
   const std::string svg = RenderSvg(plot);
-  CHECK(svg.rfind("<svg xmlns='http://www.w3.org/2000/svg'", 0) == 0);
+  CHECK(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0) == 0);
   CHECK(svg.find("</svg>") != std::string::npos);
   CHECK(svg.find("a &lt; b &amp; c") != std::string::npos);
   CHECK(Count(svg, "<polyline") == 1);
