@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "objectives/heap_segregation.h"
 #include "synthetic_heap.h"
 
 using namespace demcal::objectives;
@@ -117,4 +118,22 @@ TEST_CASE("a species absent from a region has no index and no NaN", "[unit]") {
   const auto counts = CountGrains(*grid, snap, 3, &error);
   CHECK_FALSE(AnalyseHeap(*counts, {1e-9}, {}, &error));
   CHECK(error.find("granule volume") != std::string::npos);
+}
+
+TEST_CASE("the one-call heap analysis equals the step-by-step one", "[unit]") {
+  const SyntheticHeap heap;
+  const Snapshot snap = MakeHeap(heap, 3000, 8, RandomSpecies(0.2, 0.1));
+  std::string error;
+  SegregationOptions options;
+  options.random.seed = 4;
+  const auto whole = AnalyseSegregationHeap(
+      snap, {}, 3, options, HeapExtent{0.0, heap.width_m, 0.0, heap.height_m}, &error);
+  REQUIRE(whole);
+  CHECK(whole->grid.face_bin_count() == 21);
+  const HeapSegregation steps = Analyse(snap, heap, 4);
+  CHECK(whole->indices.whole.species[1].mass.s_n == steps.whole.species[1].mass.s_n);
+  CHECK(whole->indices.layers.size() == 8);
+  CHECK(AnalyseSegregationHeap(snap, {}, 3, options, std::nullopt, &error));
+  CHECK_FALSE(AnalyseSegregationHeap(Snapshot{}, {}, 3, options, std::nullopt, &error));
+  CHECK(error.find("no grains") != std::string::npos);
 }
