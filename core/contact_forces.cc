@@ -54,31 +54,20 @@ DEMCAL_HOT_INLINE bool ContactForces::EvaluatePair(const Particles& p, const Int
   return true;
 }
 
-// Chunk c owns particle slots [chunk_[c], chunk_[c+1]). Pairs whose partner lies in a later
-// chunk are evaluated first (phase A) into pair_result_; then each chunk sums, per particle and in
-// the order a serial sweep would (contributions from earlier rows first, then its own row, then
-// walls), so results are bit-identical for any number of chunks.
-template <class Model>
-void ContactForces::ComputeCrossChunkPairs(const Particles& p, const NeighbourList& list,
-                                           const InteractionTable& table, const Model& model,
-                                           double dt, size_t c) {
-  const uint32_t end = chunk_[c + 1];
-  for (uint32_t i = chunk_[c]; i < end; ++i) {
-    const uint32_t row_end = list.RowEnd(i);
-    if (row_end == list.RowBegin(i) || list.Partner(row_end - 1) < end) continue;
-    for (uint32_t k = list.RowBegin(i); k < row_end; ++k) {
-      const uint32_t j = list.Partner(k);
-      if (j >= end) EvaluatePair(p, table, model, dt, i, k, j, pair_result_[k]);
-    }
-  }
-}
-
+// Chunk c owns particle slots [Begin(c), End(c)) and sums, per particle and in the order a
+// serial sweep would, the contributions from earlier rows first, then its own row, then walls,
+// so results are bit-identical for any number of chunks. Cross pairs are evaluated into
+// pair_result_ on demand (SweepChunks::Ensure) just before they are first read.
 template <class Model>
 void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
                              const std::vector<Wall>& walls, const InteractionTable& table,
                              const Model& model, const Vec3& gravity, double dt, size_t c) {
-  const uint32_t begin = chunk_[c], end = chunk_[c + 1];
+  auto evaluate_cross = [&](uint32_t i, uint32_t k) {
+    EvaluatePair(p, table, model, dt, i, k, list.Partner(k), pair_result_[k]);
+  };
+  const uint32_t begin = chunks_.Begin(c), end = chunks_.End(c);
   const uint32_t first_own_entry = list.RowBegin(begin);
+  if (c > 0) chunks_.Ensure(c, evaluate_cross);
   for (uint32_t i = begin; i < end; ++i) {
     Vec3 f = p.body[i] < 0 ? gravity * p.mass_kg[i] : Vec3{};  // clumps get gravity whole
     Vec3 t;
@@ -92,12 +81,14 @@ void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
     p.force_N[i] = f;
     p.torque_N_m[i] = t;
   }
+  size_t ready = c;  // chunks up to `ready` have their incoming cross pairs evaluated
   for (uint32_t i = begin; i < end; ++i) {
     Vec3& fi = p.force_N[i];
     Vec3& ti = p.torque_N_m[i];
     for (uint32_t k = list.RowBegin(i); k < list.RowEnd(i); ++k) {
       const uint32_t j = list.Partner(k);
       if (j >= end) {
+        while (j >= chunks_.End(ready)) chunks_.Ensure(++ready, evaluate_cross);
         if (!pair_active_[k]) continue;
         fi += pair_result_[k].force_i;
         ti += pair_result_[k].torque_i;
@@ -114,25 +105,15 @@ void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
   }
 }
 
-void ContactForces::SplitIntoChunks(const NeighbourList& list, size_t n) {
-  // Chunks of about equal pair counts; a serial run has one chunk, a parallel one two per
-  // worker so the scheduler can balance uneven chunks (wall contacts, dense regions). The result
-  // does not depend on the chunk count (see SumChunk).
+void ContactForces::PlanChunks(const NeighbourList& list) {
+  // One chunk per worker: the fewest cross pairs. Chunks of fewer than ~256 particles would
+  // cost more in cross pairs than they gain.
   const size_t workers = tbb::this_task_arena::max_concurrency();
-  const size_t chunks = workers <= 1 ? 1 : std::max<size_t>(1, std::min(2 * workers, n / 256 + 1));
-  chunk_.assign(chunks + 1, static_cast<uint32_t>(n));
-  chunk_[0] = 0;
-  const double per_chunk = static_cast<double>(list.PairCount() + n) / chunks;
-  // Work before row i, RowBegin(i) + i, grows with i: binary-search each boundary.
-  for (size_t c = 1; c < chunks; ++c) {
-    size_t lo = chunk_[c - 1], hi = n;
-    while (lo < hi) {
-      const size_t mid = (lo + hi) / 2;
-      if (list.RowBegin(mid) + mid >= per_chunk * c) hi = mid;
-      else lo = mid + 1;
-    }
-    chunk_[c] = static_cast<uint32_t>(lo);
-  }
+  const size_t chunks = std::min(workers, list.RowsCount() / 256 + 1);
+  if (!plan_stale_ && planned_list_ == &list && chunks_.Count() == chunks) return;
+  chunks_.Plan(list, chunks);
+  plan_stale_ = false;
+  planned_list_ = &list;
 }
 
 void ContactForces::Compute(Particles& p, const NeighbourList& list,
@@ -144,8 +125,8 @@ void ContactForces::Compute(Particles& p, const NeighbourList& list,
     pair_active_.resize(list.PairCount(), 0);
   }
   pair_result_.resize(list.PairCount());
-  SplitIntoChunks(list, p.Size());
-  const size_t chunks = chunk_.size() - 1;
+  PlanChunks(list);
+  const size_t chunks = chunks_.Count();
   if (mesh_scratch_.size() < chunks) mesh_scratch_.resize(chunks);
   walls_.SetVelocities(walls, time_s);
   auto run = [&](const auto& model) {
@@ -153,9 +134,7 @@ void ContactForces::Compute(Particles& p, const NeighbourList& list,
       SumChunk(p, list, walls, table, model, gravity, dt, 0);
       return;
     }
-    tbb::parallel_for(size_t{0}, chunks, [&](size_t c) {
-      ComputeCrossChunkPairs(p, list, table, model, dt, c);
-    });
+    chunks_.ResetClaims();
     tbb::parallel_for(size_t{0}, chunks, [&](size_t c) {
       SumChunk(p, list, walls, table, model, gravity, dt, c);
     });
@@ -173,6 +152,7 @@ void ContactForces::Rebuild(const Particles& p, const NeighbourList& old_list,
                             const NeighbourList& new_list, const std::vector<uint32_t>& order,
                             const std::vector<Wall>& walls, double skin_m) {
   RemapPairs(old_list, new_list, order);
+  plan_stale_ = true;
   walls_.Rebuild(p, order, walls, skin_m);
 }
 

@@ -4,7 +4,7 @@
 // spring) across steps and across neighbour-list rebuilds. Wall contacts of every shape (plane,
 // cylinder, cone, mesh) and the loads on the walls are kept by WallContacts.
 //
-// Determinism: particles are split into one contiguous chunk per worker; each pair is evaluated
+// Determinism: particles are split into contiguous chunks (SweepChunks); each pair is evaluated
 // once, and every particle's force is summed in the order of a serial sweep (see SumChunk), so
 // floating-point results do not depend on the number of threads. A serial run pays no extra
 // cost: it is the plain Newton's-third-law sweep over the half list.
@@ -15,6 +15,7 @@
 #include "core/interaction_table.h"
 #include "core/neighbour_list.h"
 #include "core/particles.h"
+#include "core/sweep_chunks.h"
 #include "core/wall_contacts.h"
 #include "core/walls.h"
 
@@ -55,6 +56,7 @@ class ContactForces {
   // Checkpointing: every contact history and wall candidate list.
   template <class A>
   void Serialize(A& a) {
+    plan_stale_ = true;
     a.Vector(pair_history_), a.Vector(pair_active_);
     walls_.Serialize(a);
   }
@@ -67,23 +69,21 @@ class ContactForces {
   bool EvaluatePair(const Particles& p, const InteractionTable& table, const Model& model,
                     double dt, size_t i, uint32_t k, uint32_t j, ContactResult& out);
   template <class Model>
-  void ComputeCrossChunkPairs(const Particles& p, const NeighbourList& list,
-                              const InteractionTable& table, const Model& model, double dt,
-                              size_t chunk);
-  template <class Model>
   void SumChunk(Particles& p, const NeighbourList& list, const std::vector<Wall>& walls,
                 const InteractionTable& table, const Model& model, const Vec3& gravity,
                 double dt, size_t chunk);
-  void SplitIntoChunks(const NeighbourList& list, size_t n);
+  void PlanChunks(const NeighbourList& list);
 
   void RemapPairs(const NeighbourList& old_list, const NeighbourList& new_list,
                   const std::vector<uint32_t>& order);
 
   std::vector<ContactHistory> pair_history_;  // aligned with NeighbourList entries
-  std::vector<ContactResult> pair_result_;    // cross-chunk pairs only, aligned with entries
+  std::vector<ContactResult> pair_result_;    // cross pairs only, aligned with entries
   std::vector<uint8_t> pair_active_;
   PeriodicBox periodic_;
-  std::vector<uint32_t> chunk_;               // particle-slot boundaries of the worker chunks
+  SweepChunks chunks_;
+  bool plan_stale_ = true;                    // chunks_ predates the list or the thread count
+  const NeighbourList* planned_list_ = nullptr;
   WallContacts walls_;
   std::vector<std::vector<MeshContact>> mesh_scratch_;  // one per chunk, reused
 };
