@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "apps/command.h"
+#include "apps/experiment_command.h"
 #include "apps/exit_codes.h"
 #include "apps/simulate_command.h"
 #include "core/version.h"
@@ -15,6 +16,7 @@ namespace {
 
 constexpr demcal::apps::CommandFactory kCommands[] = {
     &demcal::apps::AddSimulateCommand,
+    &demcal::apps::AddExperimentCommand,
 };
 
 }  // namespace

@@ -50,10 +50,7 @@ void ParticleSystem::Add(int species, int material, double density, double d, co
 
 double ParticleSystem::KineticEnergySince(size_t first_sphere, size_t first_clump) const {
   double e = 0;
-  for (size_t i = first_sphere; i < spheres.Size(); ++i)
-    if (spheres.body[i] < 0)
-      e += 0.5 * spheres.mass_kg[i] * Norm2(spheres.velocity_m_s[i]) +
-           0.5 / spheres.inv_inertia[i] * Norm2(spheres.angular_velocity_rad_s[i]);
+  for (size_t i = first_sphere; i < spheres.Size(); ++i) e += spheres.FreeKineticEnergy(i);
   for (size_t c = first_clump; c < clumps.Size(); ++c) e += clumps.KineticEnergy(c);
   return e;
 }
@@ -116,7 +113,7 @@ void ParticleSystem::ReduceAndKick(const Vec3& gravity, double dt) {
       c.ReduceForces(k, p, gravity);
       c.velocity_m_s[k] += c.force_N[k] * (half / c.mass_kg[k]);
       HalfKick(c.rotation[k], c.torque_N_m[k], dt);
-      c.UpdateMembers(k, p);  // member velocities at the full step, for outputs and energies
+      c.UpdateMemberVelocities(k, p);  // at the full step, for outputs and energies
     }
   });
 }

@@ -49,13 +49,15 @@ void Particles::Permute(const std::vector<uint32_t>& order) {
   ApplyOrder(id, order);
 }
 
+double Particles::FreeKineticEnergy(size_t i) const {
+  if (body[i] >= 0 || inv_mass[i] == 0) return 0;  // clump member, or fixed
+  return 0.5 * mass_kg[i] * Norm2(velocity_m_s[i]) +
+         0.5 / inv_inertia[i] * Norm2(angular_velocity_rad_s[i]);
+}
+
 double Particles::KineticEnergy() const {
   double e = 0;
-  for (size_t i = 0; i < Size(); ++i) {
-    if (body[i] >= 0) continue;
-    e += 0.5 * mass_kg[i] * Norm2(velocity_m_s[i]) +
-         0.5 / inv_inertia[i] * Norm2(angular_velocity_rad_s[i]);
-  }
+  for (size_t i = 0; i < Size(); ++i) e += FreeKineticEnergy(i);
   return e;
 }
 

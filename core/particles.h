@@ -47,6 +47,9 @@ struct Particles {
   // Reorders every per-particle array so that new slot k holds old slot order[k].
   void Permute(const std::vector<uint32_t>& order);
 
+  // Translational + rotational kinetic energy of sphere i if it is free (0 for a clump member,
+  // whose energy is its clump's, and for a fixed sphere), J.
+  double FreeKineticEnergy(size_t i) const;
   // Translational + rotational kinetic energy of the free spheres (clump members excluded), J.
   double KineticEnergy() const;
 };

@@ -114,7 +114,7 @@ core::Scene BuildAorScene(const core::Scene& model, const AorSettings& s, uint64
     AddConicalGeometry(s, top, &scene);
   if (s.glued_base) scene.particles = GluedBase(BaseSpec(model, s, seed));
   *fixed_count = static_cast<int64_t>(scene.particles.size());
-  scene.factories.push_back(MakeFeedFactory(s.feed, FeedRegion(model, s)));
+  scene.factories.push_back(MakeFeedFactory(model, s.feed, FeedRegion(model, s)));
   scene.time.duration_s = s.settle.max_time_s;
   return scene;
 }
@@ -141,18 +141,16 @@ AorRun RunAor(const core::Scene& model, const AorSettings& settings, uint64_t se
   });
   if (hooks.on_finish) hooks.on_finish(sim);
   out.heap = Select(TakeSnapshot(sim), [&](const Grain& g) { return g.id >= fixed; });
+  const bool slot = settings.heap == AorSettings::Heap::kSlot;
+  const double r = 0.5 * settings.width_m;
+  if (!slot) out.heap = Crop(out.heap, {-r, -r, -1}, {r, r, 1e9});
   out.particles = static_cast<int64_t>(out.heap.grains.size());
-  if (out.settle.ok()) {
-    ReposeAngleOptions options = settings.angle;
-    options.base_z_m = settings.glued_base ? GluedBaseTop(BaseSpec(model, settings, seed)) : 0.0;
-    if (settings.heap == AorSettings::Heap::kSlot) {
-      out.angle = MeasureSlotHeapAngle(out.heap, options);
-    } else {
-      const double r = 0.5 * settings.width_m;
-      out.angle = MeasureConicalHeapAngle(Crop(out.heap, {-r, -r, -1}, {r, r, 1e9}), {0, 0, 0},
-                                          options);
-    }
-  }
+  out.angle_options = settings.angle;
+  out.angle_options.base_z_m =
+      settings.glued_base ? GluedBaseTop(BaseSpec(model, settings, seed)) : 0.0;
+  if (out.settle.ok())
+    out.angle = slot ? MeasureSlotHeapAngle(out.heap, out.angle_options)
+                     : MeasureConicalHeapAngle(out.heap, {0, 0, 0}, out.angle_options);
   out.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;

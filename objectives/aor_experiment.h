@@ -45,7 +45,8 @@ struct AorRun {
   uint64_t seed = 0;
   SettleResult settle;
   ReposeAngle angle;
-  Snapshot heap;            // the settled heap (glued base excluded)
+  ReposeAngleOptions angle_options;  // as measured (base height set)
+  Snapshot heap;            // the settled heap (glued base and conical run-off excluded)
   int64_t particles = 0;    // poured particles
   double wall_time_s = 0;
   bool ok() const { return settle.ok() && angle.ok; }

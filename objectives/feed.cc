@@ -35,7 +35,22 @@ bool Feed::IsValid(const core::Scene& model, const std::string& path, std::strin
   return false;
 }
 
-core::FactorySpec MakeFeedFactory(const Feed& feed, const core::InsertionRegion& region) {
+double FeedEntrySpeed(const core::Scene& model, const Feed& feed,
+                      const core::InsertionRegion& region, double solid_fraction, double g_m_s2) {
+  double volume_per_kg = 0;  // of solid, m³/kg, over the feed's mass fractions
+  for (const FeedComponent& c : feed.components)
+    volume_per_kg +=
+        c.mass_fraction / model.materials[model.species[c.species].material].density_kg_m3;
+  const double h = region.max_m.z - region.min_m.z;
+  // Longest batch interval T allowed: rate · T · volume_per_kg <= fraction · region volume.
+  const double t_max = solid_fraction * region.Volume() / (feed.mass_rate_kg_s * volume_per_kg);
+  if (std::sqrt(2 * h / g_m_s2) <= t_max) return 0;
+  // Fall-through time (−v + √(v² + 2gh))/g = T  ⇔  v = h/T − gT/2.
+  return h / t_max - 0.5 * g_m_s2 * t_max;
+}
+
+core::FactorySpec MakeFeedFactory(const core::Scene& model, const Feed& feed,
+                                  const core::InsertionRegion& region) {
   core::FactorySpec spec;
   spec.name = "feed";
   spec.region = region;
@@ -47,6 +62,10 @@ core::FactorySpec MakeFeedFactory(const Feed& feed, const core::InsertionRegion&
   spec.start_s = feed.start_s;
   spec.total_mass_kg = feed.mass_kg;
   spec.velocity_m_s = feed.velocity_m_s;
+  if (feed.velocity_m_s.x == 0 && feed.velocity_m_s.y == 0 && feed.velocity_m_s.z == 0) {
+    const double g = std::sqrt(Dot(model.gravity_m_s2, model.gravity_m_s2));
+    spec.velocity_m_s.z = -FeedEntrySpeed(model, feed, region, 0.2, g);
+  }
   return spec;
 }
 

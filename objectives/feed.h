@@ -19,15 +19,24 @@ struct Feed {
   double mass_kg = 0;          // total mass poured, > 0
   double mass_rate_kg_s = 0;   // > 0
   double start_s = 0;
-  core::Vec3 velocity_m_s;     // initial velocity of the poured particles
+  core::Vec3 velocity_m_s;     // initial velocity of the poured particles; zero: automatic
+                               // (see MakeFeedFactory)
   double DurationS() const { return mass_kg / mass_rate_kg_s; }
   // Checks fractions (sum 1 within 1e-6), species indices, mass and rate; `path` prefixes the
   // field names in the message (e.g. "aor.feed").
   bool IsValid(const core::Scene& model, const std::string& path, std::string* error) const;
 };
 
-// The factory pouring `feed` from `region`.
-core::FactorySpec MakeFeedFactory(const Feed& feed, const core::InsertionRegion& region);
+// The factory pouring `feed` from `region`. A feed without a velocity enters downwards at the
+// lowest speed (see FeedEntrySpeed) at which each batch fills at most 20% of the region, so the
+// random insertion finds room: the stream leaves the feeder like a loose rain.
+core::FactorySpec MakeFeedFactory(const core::Scene& model, const Feed& feed,
+                                  const core::InsertionRegion& region);
+
+// Downward speed (m/s, >= 0) for which a batch (the region's fall-through time) of the feed
+// occupies at most `solid_fraction` of the region under gravity g.
+double FeedEntrySpeed(const core::Scene& model, const Feed& feed,
+                      const core::InsertionRegion& region, double solid_fraction, double g_m_s2);
 
 // Largest particle diameter among the feed's species (after fidelity scaling).
 double FeedMaxDiameter(const core::Scene& model, const Feed& feed);

@@ -34,6 +34,9 @@ TEST_CASE("a fixed sphere carries another without moving", "[unit]") {
   CHECK(p.position_m[lower].z == 0);
   // The upper sphere rolled off the (off-centre) fixed one and fell below it.
   CHECK(p.position_m[1 - lower].z < -0.05);
+  // A fixed sphere (infinite inertia) adds no kinetic energy, and no NaN.
+  const size_t upper = 1 - lower;
+  CHECK(sim.KineticEnergy() == Approx(p.FreeKineticEnergy(upper)).epsilon(1e-12));
 }
 
 TEST_CASE("fixed clumps are refused with the field name", "[unit]") {

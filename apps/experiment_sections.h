@@ -1,0 +1,27 @@
+#pragma once
+// Parsers of the parts that several experiment sections share: the feed (what is poured), the
+// settling criterion and a material or species reference by name.
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "apps/json_fields.h"
+#include "core/scene.h"
+#include "objectives/feed.h"
+#include "objectives/settled_run.h"
+
+namespace demcal::apps {
+
+// {"components": [{"species": name, "mass_fraction": w}, ...], "mass_kg", "mass_rate_kg_s",
+//  "start_s", "velocity_m_s"}
+void ParseFeed(const nlohmann::json& value, const std::string& path, const core::Scene& model,
+               objectives::Feed* feed, JsonStatus* status);
+
+// {"specific_kinetic_J_kg", "min_settle_s", "check_interval_s", "max_time_s"}
+void ParseSettle(const nlohmann::json& value, const std::string& path,
+                 objectives::SettleCriteria* settle, JsonStatus* status);
+
+// The required material name `key` of `fields`, as an index of model.materials.
+int ReadMaterial(JsonFields& fields, const std::string& key, const core::Scene& model,
+                 JsonStatus* status);
+
+}  // namespace demcal::apps

@@ -1,0 +1,12 @@
+// `demcal experiment segregation` (in progress).
+#include "apps/exit_codes.h"
+#include "apps/experiment_runner.h"
+
+namespace demcal::apps {
+
+int RunSegregationExperiment(const ExperimentFile& file, const ExperimentContext&, std::ostream& log) {
+  log << "error: " << file.source << ": the segregation experiment is not available yet\n";
+  return kExitInvalidInput;
+}
+
+}  // namespace demcal::apps
