@@ -20,6 +20,7 @@
 #include "core/scene.h"
 #include "objectives/feed.h"
 #include "objectives/repose_angle.h"
+#include "objectives/run_hooks.h"
 #include "objectives/settled_run.h"
 #include "objectives/snapshot.h"
 
@@ -52,12 +53,6 @@ struct AorRun {
   bool ok() const { return settle.ok() && angle.ok; }
   // "ok", the settle status, or "no_angle".
   std::string Status() const { return !settle.ok() ? settle.status : angle.ok ? "ok" : "no_angle"; }
-};
-
-struct RunHooks {
-  ProgressCallback progress;                                // (simulated s, expected end s)
-  std::function<void(const core::Simulation&)> on_check;   // every settle check
-  std::function<void(const core::Simulation&)> on_finish;  // once, at the end
 };
 
 // The scene of one run (model + geometry + feed + glued base); *fixed_count = glued spheres,
