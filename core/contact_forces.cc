@@ -5,12 +5,19 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <numeric>
 
 #include "core/contact/contact_kernel.h"
 
 namespace demcal::core {
+namespace {
+// Measured chunk balancing (SweepChunks::Rebalance): a window of passes long enough to average
+// out scheduler noise, and the imbalance worth re-planning for (a re-plan costs about one pass).
+constexpr int kRebalancePasses = 100;
+constexpr double kRebalanceTolerance = 0.03;
+}  // namespace
 
 // Geometry of the contact between listed partners i < j, or false if they are not in contact.
 template <class Model>
@@ -110,7 +117,10 @@ void ContactForces::PlanChunks(const NeighbourList& list) {
   // cost more in cross pairs than they gain.
   const size_t workers = tbb::this_task_arena::max_concurrency();
   const size_t chunks = std::min(workers, list.RowsCount() / 256 + 1);
-  if (!plan_stale_ && planned_list_ == &list && chunks_.Count() == chunks) return;
+  if (!plan_stale_ && planned_list_ == &list && chunks_.Count() == chunks) {
+    chunks_.Rebalance(list, kRebalancePasses, kRebalanceTolerance);
+    return;
+  }
   chunks_.Plan(list, chunks);
   plan_stale_ = false;
   planned_list_ = &list;
@@ -136,7 +146,9 @@ void ContactForces::Compute(Particles& p, const NeighbourList& list,
     }
     chunks_.ResetClaims();
     tbb::parallel_for(size_t{0}, chunks, [&](size_t c) {
+      const auto start = std::chrono::steady_clock::now();
       SumChunk(p, list, walls, table, model, gravity, dt, c);
+      chunks_.AddTime(c, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     });
   };
   std::visit(

@@ -1,31 +1,64 @@
 #include "core/sweep_chunks.h"
 
 #include <algorithm>
+#include <numeric>
 
 namespace demcal::core {
 
 void SweepChunks::Plan(const NeighbourList& list, size_t count) {
   const size_t rows = list.RowsCount();
-  SplitRows(list, std::clamp<size_t>(count, 1, std::max<size_t>(rows, 1)));
-  CollectCrossPairs(list);
-  claim_ = std::make_unique<std::atomic<uint8_t>[]>(Count());
+  count = std::clamp<size_t>(count, 1, std::max<size_t>(rows, 1));
+  const double per_chunk = WorkBefore(list, rows) / count;
+  std::vector<double> targets(count - 1);
+  for (size_t c = 1; c < count; ++c) targets[c - 1] = per_chunk * c;
+  SplitRows(list, targets);
 }
 
-void SweepChunks::SplitRows(const NeighbourList& list, size_t count) {
+bool SweepChunks::Rebalance(const NeighbourList& list, int min_passes, double tolerance) {
+  const size_t count = Count();
+  if (passes_ < min_passes || count < 2) return false;
+  const double total = std::accumulate(time_s_.begin(), time_s_.end(), 0.0);
+  const double slowest = *std::max_element(time_s_.begin(), time_s_.end());
+  const bool balanced = slowest <= (1 + tolerance) * total / count;
+  if (balanced || *std::min_element(time_s_.begin(), time_s_.end()) <= 0) {
+    std::fill(time_s_.begin(), time_s_.end(), 0.0), passes_ = 0;
+    return false;
+  }
+  // Measured time is piecewise linear in work (one slope per chunk): place each boundary where
+  // the cumulative time reaches its share.
+  std::vector<double> targets(count - 1);
+  size_t c = 0;
+  double time_before = 0;
+  for (size_t b = 1; b < count; ++b) {
+    const double share = total * b / count;
+    while (c + 1 < count && time_before + time_s_[c] < share) time_before += time_s_[c++];
+    const double work = WorkBefore(list, End(c)) - WorkBefore(list, Begin(c));
+    const double balanced_at = WorkBefore(list, Begin(c)) + (share - time_before) / time_s_[c] * work;
+    // Half-way only: part of a window's imbalance is noise (other processes, cache misses).
+    targets[b - 1] = 0.5 * (WorkBefore(list, Begin(b)) + balanced_at);
+  }
+  SplitRows(list, targets);
+  return true;
+}
+
+void SweepChunks::SplitRows(const NeighbourList& list, const std::vector<double>& targets) {
   const size_t n = list.RowsCount();
-  boundary_.assign(count + 1, static_cast<uint32_t>(n));
+  boundary_.assign(targets.size() + 2, static_cast<uint32_t>(n));
   boundary_[0] = 0;
-  // Work before row i, RowBegin(i) + i, grows with i: binary-search each boundary.
-  const double per_chunk = static_cast<double>(list.PairCount() + n) / count;
-  for (size_t c = 1; c < count; ++c) {
+  // WorkBefore grows with the row: binary-search each boundary.
+  for (size_t c = 1; c <= targets.size(); ++c) {
     size_t lo = boundary_[c - 1], hi = n;
     while (lo < hi) {
       const size_t mid = (lo + hi) / 2;
-      if (list.RowBegin(mid) + mid >= per_chunk * c) hi = mid;
+      if (WorkBefore(list, mid) >= targets[c - 1]) hi = mid;
       else lo = mid + 1;
     }
     boundary_[c] = static_cast<uint32_t>(lo);
   }
+  CollectCrossPairs(list);
+  claim_ = std::make_unique<std::atomic<uint8_t>[]>(Count());
+  time_s_.assign(Count(), 0.0);
+  passes_ = 0;
 }
 
 void SweepChunks::CollectCrossPairs(const NeighbourList& list) {
@@ -58,6 +91,7 @@ void SweepChunks::CollectCrossPairs(const NeighbourList& list) {
 
 void SweepChunks::ResetClaims() {
   for (size_t c = 0; c < Count(); ++c) claim_[c].store(kPending, std::memory_order_relaxed);
+  ++passes_;
 }
 
 }  // namespace demcal::core

@@ -10,7 +10,13 @@
 // evaluation of cross pairs from the sums, and no chunk waits unless another is evaluating
 // exactly the pairs it needs.
 //
-// Thread-safety: Plan() and ResetClaims() are serial; Ensure() may be called concurrently.
+// Balance: Plan() gives every chunk the same modelled work (rows + listed pairs). The sweep also
+// reports how long each chunk took (AddTime); Rebalance() then moves the boundaries so that the
+// measured times even out, which catches what the model misses (contacts vs mere neighbours,
+// walls, a slower core). Results never depend on where the boundaries lie.
+//
+// Thread-safety: Plan(), Rebalance() and ResetClaims() are serial; Ensure() and AddTime() (for
+// distinct chunks) may be called concurrently.
 // Usage:
 //   chunks.Plan(list, 4);  ...  chunks.ResetClaims();
 //   parallel over c: chunks.Ensure(c, evaluate); sweep chunk c, calling Ensure(d, evaluate)
@@ -44,8 +50,16 @@ class SweepChunks {
     return {incoming_.data() + incoming_start_[c], incoming_.data() + incoming_start_[c + 1]};
   }
 
+  // Adds the measured sweep time of chunk c in this pass.
+  void AddTime(size_t c, double seconds) { time_s_[c] += seconds; }
+  // After `min_passes` timed passes: if the slowest chunk took more than `tolerance` (relative)
+  // longer than the mean, moves each boundary half-way towards where the measured times would
+  // be equal (assuming each chunk's time per unit of work stays as measured) and re-plans.
+  // Restarts the timing; true if re-planned.
+  bool Rebalance(const NeighbourList& list, int min_passes, double tolerance);
+
   // Marks every incoming set as not yet evaluated (once per force pass, before the sweep).
-  void ResetClaims();
+  void ResetClaims();  // also counts the passes for Rebalance
 
   // Returns once `evaluate(row, entry)` has run for every incoming pair of chunk c in this pass:
   // runs it here if no other thread has started, else waits for the one that has.
@@ -64,13 +78,19 @@ class SweepChunks {
 
  private:
   static constexpr uint8_t kPending = 0, kRunning = 1, kDone = 2;
-  void SplitRows(const NeighbourList& list, size_t count);
+  // Boundaries where the work before a row (rows + pairs) reaches each of `targets`.
+  void SplitRows(const NeighbourList& list, const std::vector<double>& targets);
+  double WorkBefore(const NeighbourList& list, uint32_t row) const {
+    return static_cast<double>(list.RowBegin(row)) + row;
+  }
   void CollectCrossPairs(const NeighbourList& list);
 
   std::vector<uint32_t> boundary_{0, 0};   // chunk c is slots [boundary_[c], boundary_[c+1])
   std::vector<uint32_t> incoming_start_;   // chunk c's cross pairs: [start[c], start[c+1])
   std::vector<CrossPair> incoming_;
   std::unique_ptr<std::atomic<uint8_t>[]> claim_;  // per chunk: kPending, kRunning or kDone
+  std::vector<double> time_s_;                     // per chunk, since the last (re)plan
+  int passes_ = 0;
 };
 
 }  // namespace demcal::core

@@ -37,6 +37,29 @@ size_t ChunkOf(const SweepChunks& chunks, uint32_t slot) {
   return chunks.Count();
 }
 
+// Checks that each cross pair is listed once, in its partner's chunk, and nothing else is;
+// returns the number of cross pairs.
+size_t CheckCrossPairs(const NeighbourList& list, const SweepChunks& chunks) {
+  std::vector<int> listed(list.PairCount(), 0);
+  for (size_t c = 0; c < chunks.Count(); ++c) {
+    for (const SweepChunks::CrossPair& x : chunks.Incoming(c)) {
+      CHECK(x.entry >= list.RowBegin(x.row));
+      CHECK(x.entry < list.RowEnd(x.row));
+      CHECK(ChunkOf(chunks, list.Partner(x.entry)) == c);
+      ++listed[x.entry];
+    }
+  }
+  size_t cross = 0, wrong = 0;
+  for (uint32_t i = 0; i < list.RowsCount(); ++i)
+    for (uint32_t k = list.RowBegin(i); k < list.RowEnd(i); ++k) {
+      const bool is_cross = ChunkOf(chunks, list.Partner(k)) > ChunkOf(chunks, i);
+      cross += is_cross;
+      wrong += listed[k] != (is_cross ? 1 : 0);
+    }
+  CHECK(wrong == 0);
+  return cross;
+}
+
 }  // namespace
 
 TEST_CASE("chunks tile the slots and list every cross pair once, in the partner's chunk",
@@ -49,24 +72,9 @@ TEST_CASE("chunks tile the slots and list every cross pair once, in the partner'
     REQUIRE(chunks.Count() == count);
     CHECK(chunks.Begin(0) == 0);
     CHECK(chunks.End(count - 1) == list.RowsCount());
-    std::vector<int> listed(list.PairCount(), 0);
-    for (size_t c = 0; c < count; ++c) {
+    for (size_t c = 0; c < count; ++c)
       CHECK(chunks.Begin(c) < chunks.End(c));  // no empty chunk on a cloud this size
-      for (const SweepChunks::CrossPair& x : chunks.Incoming(c)) {
-        CHECK(x.entry >= list.RowBegin(x.row));
-        CHECK(x.entry < list.RowEnd(x.row));
-        CHECK(ChunkOf(chunks, list.Partner(x.entry)) == c);
-        ++listed[x.entry];
-      }
-    }
-    size_t cross = 0, wrong = 0;
-    for (uint32_t i = 0; i < list.RowsCount(); ++i)
-      for (uint32_t k = list.RowBegin(i); k < list.RowEnd(i); ++k) {
-        const bool is_cross = ChunkOf(chunks, list.Partner(k)) > ChunkOf(chunks, i);
-        cross += is_cross;
-        wrong += listed[k] != (is_cross ? 1 : 0);
-      }
-    CHECK(wrong == 0);
+    const size_t cross = CheckCrossPairs(list, chunks);
     if (count > 1) CHECK(cross > 0);
     // Balanced work (rows + pairs) per chunk, within a few rows' worth.
     const double per_chunk = static_cast<double>(list.PairCount() + list.RowsCount()) / count;
@@ -110,4 +118,25 @@ TEST_CASE("Ensure evaluates each chunk's cross pairs exactly once under contenti
   CHECK(cross > 0);
   CHECK(cross_evaluated_thrice == cross);
   CHECK(other_untouched == list.PairCount() - cross);
+}
+
+TEST_CASE("Rebalance moves work away from a chunk measured slow, and only then", "[unit]") {
+  const NeighbourList list = RandomCloudList(3000, 13);
+  SweepChunks chunks;
+  chunks.Plan(list, 2);
+  const uint32_t planned = chunks.End(0);
+  auto time_passes = [&](int passes, double t0, double t1) {
+    for (int k = 0; k < passes; ++k) chunks.ResetClaims(), chunks.AddTime(0, t0), chunks.AddTime(1, t1);
+  };
+  time_passes(9, 3.0, 1.0);
+  CHECK_FALSE(chunks.Rebalance(list, 10, 0.03));  // too few passes yet
+  time_passes(1, 3.0, 1.0);
+  REQUIRE(chunks.Rebalance(list, 10, 0.03));
+  // Chunk 0 took 3/4 of the time: times are equal at 2/3 of its work; moved half-way there.
+  CHECK(chunks.End(0) == Approx(planned * 5.0 / 6).epsilon(0.05));
+  CheckCrossPairs(list, chunks);
+  const uint32_t moved = chunks.End(0);
+  time_passes(10, 1.01, 1.0);
+  CHECK_FALSE(chunks.Rebalance(list, 10, 0.03));  // within tolerance: left alone
+  CHECK(chunks.End(0) == moved);
 }
