@@ -45,6 +45,15 @@ void Clumps::UpdateMembers(size_t c, Particles& p) const {
   }
 }
 
+void Clumps::UpdateMemberVelocities(size_t c, Particles& p) const {
+  const Vec3 omega = AngularVelocity(c);
+  for (uint32_t k = member_start[c]; k < member_start[c + 1]; ++k) {
+    const uint32_t s = member_slot[k];
+    p.velocity_m_s[s] = velocity_m_s[c] + Cross(omega, p.position_m[s] - position_m[c]);
+    p.angular_velocity_rad_s[s] = omega;
+  }
+}
+
 void Clumps::ReduceForces(size_t c, const Particles& p, const Vec3& gravity) {
   Vec3 f = gravity * mass_kg[c], t;
   for (uint32_t k = member_start[c]; k < member_start[c + 1]; ++k) {

@@ -50,6 +50,9 @@ struct Clumps {
 
   // Sets member positions (and velocities, spins) from the clump state.
   void UpdateMembers(size_t c, Particles& particles) const;
+  // Sets member velocities and spins only, for a clump that was kicked but not moved (the lever
+  // arms are read back from the member positions).
+  void UpdateMemberVelocities(size_t c, Particles& particles) const;
   // Sums member forces and torques into force_N[c], torque_N_m[c] (gravity added).
   void ReduceForces(size_t c, const Particles& particles, const Vec3& gravity);
   // Updates member slots after Particles::Permute(order) (order[new] = old).
