@@ -1,0 +1,41 @@
+#pragma once
+// FunnelClock: times the discharge of a funnel (or a feeder) from the particle states seen at
+// regular checks of a run: the first moment a grain is below the orifice, and the first moment
+// after the feed has ended with no grain left at or above the orifice height (the funnel is
+// empty). Fixed (glued) spheres are ignored. The resolution is the check interval.
+//
+// Usage (from a run's per-check hook):
+//   FunnelClock clock(orifice_z, feed_end_s);
+//   hooks.on_check = [&](const core::Simulation& sim) { clock.Observe(sim); };
+//   if (clock.emptied()) use(clock.DischargeTimeS());
+#include <cstdint>
+
+#include "core/simulation.h"
+
+namespace demcal::objectives {
+
+class FunnelClock {
+ public:
+  FunnelClock(double orifice_z_m, double feed_end_s)
+      : orifice_z_m_(orifice_z_m), feed_end_s_(feed_end_s) {}
+
+  void Observe(const core::Simulation& sim);
+
+  bool started() const { return first_out_s_ >= 0; }
+  bool emptied() const { return empty_s_ >= 0; }
+  double first_out_s() const { return first_out_s_; }
+  double empty_s() const { return empty_s_; }
+  // empty − first out; 0 unless emptied().
+  double DischargeTimeS() const { return emptied() ? empty_s_ - first_out_s_ : 0; }
+  // Spheres (clump members counted singly) at or above the orifice at the last check.
+  int64_t spheres_above() const { return spheres_above_; }
+
+ private:
+  double orifice_z_m_;
+  double feed_end_s_;
+  double first_out_s_ = -1;
+  double empty_s_ = -1;
+  int64_t spheres_above_ = 0;
+};
+
+}  // namespace demcal::objectives
