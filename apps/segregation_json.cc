@@ -46,8 +46,8 @@ void ParseBins(const json& value, objectives::HeapBinOptions* bins, JsonStatus* 
 }
 
 void ParseIndex(const json& value, objectives::SegregationOptions* options, JsonStatus* status) {
-  JsonFields f(value, "segregation.segregation_index",
-               {"repetitions", "draw", "packing_fraction"}, status);
+  JsonFields f(value, "segregation.segregation_index", {"repetitions", "draw", "packing_fraction"},
+               status);
   int64_t repetitions = options->random.repetitions;
   f.Integer("repetitions", &repetitions, kOptional, Range::Closed(2, 1000000));
   options->random.repetitions = static_cast<int>(repetitions);
@@ -66,8 +66,8 @@ void ParseTracking(const json& value, const core::Scene& model,
   f.Integer("granules", &granules, kOptional, Range::Closed(0, 10000));
   tracking->granules = static_cast<int>(granules);
   if (f.Has("species"))
-    tracking->species = internal::ReadNameReference(f, "species", "species",
-                                                    internal::SpeciesNames(model), status);
+    tracking->species =
+        internal::ReadNameReference(f, "species", "species", internal::SpeciesNames(model), status);
   f.Number("sample_interval_s", &tracking->sample_interval_s, kOptional,
            Range::LeftOpen(0, 1, "s"));
   f.Number("start_fraction", &tracking->start_fraction, kOptional, {0, 1, false, true});
@@ -101,11 +101,11 @@ bool ParseSegregationSection(const json& section, const std::string& source,
                              std::string* error) {
   JsonStatus status;
   SegregationSettings s;
-  JsonFields f(section, "segregation",
-               {"feed", "width_m", "depth_m", "pour_height_m", "feed_width_m", "funnel",
-                "wall_material", "glued_base", "settle", "bins", "segregation_index", "tracking",
-                "max_wall_time_s"},
-               &status);
+  JsonFields f(
+      section, "segregation",
+      {"feed", "width_m", "depth_m", "pour_height_m", "feed_width_m", "funnel", "wall_material",
+       "glued_base", "settle", "bins", "segregation_index", "tracking", "max_wall_time_s"},
+      &status);
   ParseFields(f, model, &s, &status);
   std::string problem;
   if (status.ok() && !s.IsValid(model, &problem)) status.Fail(problem);

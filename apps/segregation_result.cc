@@ -138,14 +138,16 @@ ordered_json SegregationResultJson(const objectives::SegregationSettings& settin
   result["replicates_ok"] = ok;
   ordered_json species = ordered_json::array();
   for (size_t k = 0; k < species_names.size(); ++k)
-    species.push_back(SpeciesJson(runs, static_cast<int>(k), species_names[k], settings.bins.layers));
+    species.push_back(
+        SpeciesJson(runs, static_cast<int>(k), species_names[k], settings.bins.layers));
   result["species"] = species;
   result["mixture_angle_deg"] = Stat(angles);
   result["discharge_time_s"] = Stat(discharge);
   result["tracked_species"] = species_names.at(settings.TrackedSpecies());
   result["penetration_depth_diameters"] = Stat(depths);
   ordered_json runs_json = ordered_json::array();
-  for (size_t r = 0; r < runs.size(); ++r) runs_json.push_back(RunJson(static_cast<int>(r), runs[r]));
+  for (size_t r = 0; r < runs.size(); ++r)
+    runs_json.push_back(RunJson(static_cast<int>(r), runs[r]));
   result["runs"] = runs_json;
   return result;
 }

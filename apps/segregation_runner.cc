@@ -49,8 +49,8 @@ bool WriteRunFiles(const std::string& dir, int r, const SegregationRun& run,
                                          names, error) &&
          objectives::WriteHeapFaceSvg(dir + "/heap_front" + k + ".svg", run.heap, a.grid, {},
                                       error) &&
-         objectives::WriteCovLayerPlotSvg(dir + "/cov_per_layer" + k + ".svg", a.indices, names,
-                                          {}, error);
+         objectives::WriteCovLayerPlotSvg(dir + "/cov_per_layer" + k + ".svg", a.indices, names, {},
+                                          error);
 }
 
 }  // namespace
@@ -75,19 +75,20 @@ int RunSegregationExperiment(const ExperimentFile& file, const ExperimentContext
   std::vector<SegregationRun> runs(context.replicates);
   std::vector<std::string> output_errors(context.replicates);
   ReplicateProgress progress(log, "segregation", context.replicates, !context.quiet);
-  objectives::RunReplicates(context.replicates, file.seed, context.threads, [&](int r, uint64_t seed) {
-    objectives::RunHooks hooks;
-    hooks.progress = [&, r](double t, double end) { progress.Update(r, t, end); };
-    hooks.on_finish = [&, r](const core::Simulation& sim) {
-      const std::string path = context.out_dir + "/heap_r" + std::to_string(r) + ".vtk";
-      core::io::WriteParticlesVtk(path, sim.particles(), sim.time_s(), {}, &output_errors[r],
-                                  &sim.system().clumps);
-    };
-    runs[r] = objectives::RunSegregation(model, settings, seed, hooks);
-    progress.Finish(r);
-    if (output_errors[r].empty())
-      WriteRunFiles(context.out_dir, r, runs[r], names, &output_errors[r]);
-  });
+  objectives::RunReplicates(
+      context.replicates, file.seed, context.threads, [&](int r, uint64_t seed) {
+        objectives::RunHooks hooks;
+        hooks.progress = [&, r](double t, double end) { progress.Update(r, t, end); };
+        hooks.on_finish = [&, r](const core::Simulation& sim) {
+          const std::string path = context.out_dir + "/heap_r" + std::to_string(r) + ".vtk";
+          core::io::WriteParticlesVtk(path, sim.particles(), sim.time_s(), {}, &output_errors[r],
+                                      &sim.system().clumps);
+        };
+        runs[r] = objectives::RunSegregation(model, settings, seed, hooks);
+        progress.Finish(r);
+        if (output_errors[r].empty())
+          WriteRunFiles(context.out_dir, r, runs[r], names, &output_errors[r]);
+      });
   nlohmann::ordered_json result = ResultHeader(file, context);
   result.update(SegregationResultJson(settings, names, runs));
   for (const std::string& e : output_errors)

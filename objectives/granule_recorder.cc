@@ -41,11 +41,9 @@ void GranuleRecorder::Observe(const core::Simulation& sim) {
 int TrackingStride(const core::Scene& model, double feed_mass_kg, double species_mass_fraction,
                    int species, double start_fraction, int count) {
   const core::Species& sp = model.species[species];
-  const double grain_mass =
-      model.materials[sp.material].density_kg_m3 * sp.size.MeanVolume();
+  const double grain_mass = model.materials[sp.material].density_kg_m3 * sp.size.MeanVolume();
   if (count <= 0 || !(grain_mass > 0)) return 1;
-  const double expected =
-      feed_mass_kg * species_mass_fraction * (1 - start_fraction) / grain_mass;
+  const double expected = feed_mass_kg * species_mass_fraction * (1 - start_fraction) / grain_mass;
   return std::max(1, static_cast<int>(std::floor(expected / count)));
 }
 

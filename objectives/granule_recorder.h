@@ -42,8 +42,8 @@ class GranuleRecorder {
   void Pick(const Snapshot& snapshot);
 
   GranuleRecorderOptions options_;
-  int offset_ = 0;         // in [0, stride)
-  int64_t candidates_ = 0; // granules of the species seen after start_time_s
+  int offset_ = 0;          // in [0, stride)
+  int64_t candidates_ = 0;  // granules of the species seen after start_time_s
   int64_t last_seen_id_ = -1;
   std::vector<int64_t> ids_;
   std::vector<GranuleTrack> tracks_;

@@ -43,8 +43,8 @@ double FeedRegionBottom(const SegregationSettings& s) {
 
 core::InsertionRegion FeedRegion(const core::Scene& model, const SegregationSettings& s) {
   const double z0 = FeedRegionBottom(s), x0 = 0.5 * (s.width_m - s.feed_width_m);
-  return core::InsertionRegion::Box({x0, 0, z0},
-                                    {x0 + s.feed_width_m, s.depth_m, z0 + FeedRegionHeight(model, s)});
+  return core::InsertionRegion::Box(
+      {x0, 0, z0}, {x0 + s.feed_width_m, s.depth_m, z0 + FeedRegionHeight(model, s)});
 }
 
 core::Wall Funnel(const SegregationSettings& s) {
@@ -79,7 +79,8 @@ std::string CheckGeometry(const core::Scene& model, const SegregationSettings& s
        << " is outside the allowed range (orifice_diameter_m = " << f.orifice_diameter_m
        << ", width_m = " << s.width_m << "] m";
   else if (f.enabled && !(f.height_m > 0 && f.height_m < 10))
-    os << "segregation.funnel.height_m = " << f.height_m << " is outside the allowed range (0, 10) m";
+    os << "segregation.funnel.height_m = " << f.height_m
+       << " is outside the allowed range (0, 10) m";
   else if (!(s.feed_width_m > 3 * d &&
              s.feed_width_m <= (f.enabled ? f.top_diameter_m : s.width_m)))
     os << "segregation.feed_width_m = " << s.feed_width_m << " is outside the allowed range ("
@@ -126,22 +127,23 @@ GranuleRecorderOptions RecorderOptions(const core::Scene& model, const Segregati
   double fraction = 0;
   for (const FeedComponent& c : s.feed.components)
     if (c.species == r.species) fraction += c.mass_fraction;
-  r.stride = TrackingStride(model, s.feed.mass_kg, fraction, r.species, t.start_fraction, t.granules);
+  r.stride =
+      TrackingStride(model, s.feed.mass_kg, fraction, r.species, t.start_fraction, t.granules);
   r.below_z_m = s.pour_height_m - kTrackBelowOrifice;
   r.surface = t.surface;
   return r;
 }
 
 TrackedGranule SummariseTrack(const GranuleTrack& track, const Snapshot& heap,
-                         const TrackingSettings& t) {
+                              const TrackingSettings& t) {
   TrackedGranule out;
   out.track = track;
   out.impact_sample = FirstSpeedDropIndex(track, t.impact);
   if (out.impact_sample) {
     out.impact_time_s = track.samples[*out.impact_sample].time_s;
     for (int k = 0; k <= *out.impact_sample; ++k)
-      out.peak_specific_kinetic_J_kg = std::max(
-          out.peak_specific_kinetic_J_kg, track.samples[k].SpecificKineticEnergyJPerKg());
+      out.peak_specific_kinetic_J_kg =
+          std::max(out.peak_specific_kinetic_J_kg, track.samples[k].SpecificKineticEnergyJPerKg());
   }
   std::string ignored;  // a granule outside the heap simply has no depth
   out.penetration = PenetrationDepth(heap, track.id, t.surface, &ignored);
@@ -254,8 +256,7 @@ SegregationRun RunSegregation(const core::Scene& model, const SegregationSetting
     out.analysis_message = "not analysed: the run ended with " + out.settle.status;
   for (const GranuleTrack& track : recorder.tracks())
     out.tracked.push_back(SummariseTrack(track, out.heap, settings.tracking));
-  out.wall_time_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
 

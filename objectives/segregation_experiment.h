@@ -45,34 +45,34 @@ struct FunnelSettings {
   bool enabled = true;
   double orifice_diameter_m = 0.02;  // cut to the box depth by the front and back planes
   double top_diameter_m = 0.06;
-  double height_m = 0.04;            // orifice to top
+  double height_m = 0.04;  // orifice to top
 };
 
 // Which granules are followed (Figs. 17–19) and how often their state is recorded.
 struct TrackingSettings {
-  int granules = 20;               // 0: none
-  int species = -1;                // −1: the feed component with the smallest mass fraction
+  int granules = 20;  // 0: none
+  int species = -1;   // −1: the feed component with the smallest mass fraction
   double sample_interval_s = 0.002;
-  double start_fraction = 0.3;     // of the pour: later granules land on a heap, not the floor
+  double start_fraction = 0.3;  // of the pour: later granules land on a heap, not the floor
   SurfaceOptions surface;
   ImpactOptions impact;
 };
 
 struct SegregationSettings {
-  Feed feed;                      // the paper: BP/TAED/EP 0.925/0.055/0.02 at 20 g/s, 30.85 g
-  double width_m = 0.2;           // box width (x): holds the ~150 mm base of the paper's heap
-  double depth_m = 0.016;         // box depth (y), the paper's 16 mm
-  double pour_height_m = 0.1;     // funnel orifice (or feeder bottom) above the floor
-  double feed_width_m = 0.04;     // feed region x extent
+  Feed feed;                   // the paper: BP/TAED/EP 0.925/0.055/0.02 at 20 g/s, 30.85 g
+  double width_m = 0.2;        // box width (x): holds the ~150 mm base of the paper's heap
+  double depth_m = 0.016;      // box depth (y), the paper's 16 mm
+  double pour_height_m = 0.1;  // funnel orifice (or feeder bottom) above the floor
+  double feed_width_m = 0.04;  // feed region x extent
   FunnelSettings funnel;
-  int wall_material = 0;          // box faces, floor and funnel (Perspex in the paper)
+  int wall_material = 0;  // box faces, floor and funnel (Perspex in the paper)
   bool glued_base = true;
-  SettleCriteria settle;          // feed_end_s is set from the feed
-  ReposeAngleOptions angle;       // base_z_m is set from the base
-  HeapBinOptions bins;            // y range is set from the box
-  SegregationOptions segregation; // random.seed is derived from the run's seed
+  SettleCriteria settle;           // feed_end_s is set from the feed
+  ReposeAngleOptions angle;        // base_z_m is set from the base
+  HeapBinOptions bins;             // y range is set from the box
+  SegregationOptions segregation;  // random.seed is derived from the run's seed
   TrackingSettings tracking;
-  double max_wall_time_s = 0;     // per run; 0 = unlimited
+  double max_wall_time_s = 0;  // per run; 0 = unlimited
   bool IsValid(const core::Scene& model, std::string* error) const;
   // The tracked species (tracking.species, or the minor feed component).
   int TrackedSpecies() const;
@@ -81,7 +81,7 @@ struct SegregationSettings {
 // A followed granule: its samples below the funnel, the first impact and the final depth.
 struct TrackedGranule {
   GranuleTrack track;
-  std::optional<int> impact_sample;        // FirstSpeedDropIndex
+  std::optional<int> impact_sample;  // FirstSpeedDropIndex
   double impact_time_s = 0;
   double peak_specific_kinetic_J_kg = 0;   // ½v² at the highest speed before the impact
   std::optional<Penetration> penetration;  // below the settled heap's surface
@@ -94,13 +94,13 @@ struct SegregationRun {
   double discharge_time_s = 0;  // see the file comment; 0 when the funnel did not empty
   double first_out_s = 0, empty_s = 0;
   int64_t spheres_left_above = 0;  // at or above the orifice at the end
-  Snapshot heap;                  // the settled heap below the funnel (glued base excluded)
+  Snapshot heap;                   // the settled heap below the funnel (glued base excluded)
   std::optional<HeapSegregationAnalysis> analysis;
-  std::string analysis_message;   // why analysis is empty
+  std::string analysis_message;  // why analysis is empty
   ReposeAngle angle;
   ReposeAngleOptions angle_options;  // as measured (base height set)
   std::vector<TrackedGranule> tracked;
-  int64_t particles = 0;          // grains in the heap
+  int64_t particles = 0;  // grains in the heap
   double wall_time_s = 0;
   // "ok", the settle status, "funnel_not_empty" or "no_analysis".
   std::string Status() const;

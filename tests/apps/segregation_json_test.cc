@@ -1,11 +1,12 @@
 // The "segregation" section of an experiment file: the shipped example parses at both of its
 // fidelities, and every rejected value is reported with its field's path.
+#include "apps/segregation_json.h"
+
 #include <catch2/catch.hpp>
 #include <functional>
 #include <string>
 
 #include "apps/experiment_file.h"
-#include "apps/segregation_json.h"
 #include "objectives/fidelity.h"
 #include "test_paths.h"
 
@@ -60,7 +61,9 @@ TEST_CASE("segregation section errors name the field", "[unit]") {
              Catch::Contains("segregation.funnel.orifice_diameter_m"));
   CHECK_THAT(ErrorAfter([](nlohmann::json& s) { s["funnel"]["spout"] = 1; }),
              Catch::Contains("segregation.funnel"));
-  CHECK_THAT(ErrorAfter([](nlohmann::json& s) { s["bins"]["row_bins"] = {6, 0}; }),
+  CHECK_THAT(ErrorAfter([](nlohmann::json& s) {
+               s["bins"]["row_bins"] = {6, 0};
+             }),
              Catch::Contains("segregation.bins.row_bins[1]"));
   CHECK_THAT(ErrorAfter([](nlohmann::json& s) { s["bins"]["layers"] = 0; }),
              Catch::Contains("segregation.bins.layers"));
@@ -70,8 +73,9 @@ TEST_CASE("segregation section errors name the field", "[unit]") {
              Catch::Contains("segregation.tracking.species"));
   CHECK_THAT(ErrorAfter([](nlohmann::json& s) { s["tracking"]["start_fraction"] = 1; }),
              Catch::Contains("segregation.tracking.start_fraction"));
-  CHECK_THAT(ErrorAfter([](nlohmann::json& s) { s["feed"]["components"][2]["mass_fraction"] = 0.5; }),
-             Catch::Contains("segregation.feed.components"));
+  CHECK_THAT(
+      ErrorAfter([](nlohmann::json& s) { s["feed"]["components"][2]["mass_fraction"] = 0.5; }),
+      Catch::Contains("segregation.feed.components"));
   CHECK_THAT(ErrorAfter([](nlohmann::json& s) { s.erase("wall_material"); }),
              Catch::Contains("segregation.wall_material"));
   CHECK_THAT(ErrorAfter([](nlohmann::json& s) { s["wal_material"] = "perspex"; }),

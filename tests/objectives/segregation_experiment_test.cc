@@ -1,12 +1,13 @@
 // Segregation-heap experiment: scene building (box, funnel, feed), and a tiny DEM run whose heap
 // analysis, angle, discharge clock and tracked granules are all defined.
+#include "objectives/segregation_experiment.h"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <set>
 #include <variant>
 
 #include "core/simulation.h"
-#include "objectives/segregation_experiment.h"
 
 namespace demcal::objectives {
 namespace {
@@ -44,8 +45,8 @@ SegregationSettings TinySettings() {
   s.depth_m = 0.012;
   s.pour_height_m = 0.04;
   s.feed_width_m = 0.016;
-  s.funnel = {.enabled = true, .orifice_diameter_m = 0.014, .top_diameter_m = 0.03,
-              .height_m = 0.015};
+  s.funnel = {
+      .enabled = true, .orifice_diameter_m = 0.014, .top_diameter_m = 0.03, .height_m = 0.015};
   s.wall_material = 3;
   s.settle.max_time_s = 1.5;
   s.settle.specific_kinetic_J_kg = 1e-4;
@@ -80,7 +81,7 @@ TEST_CASE("segregation scene: open box, funnel on the box axis, feed with the ma
   CHECK(feed.mass_fractions == std::vector<double>{0.8, 0.1, 0.1});
   CHECK(feed.total_mass_kg == Approx(0.0012));
   CHECK(feed.region.min_m.z > 0.055);  // above the funnel top
-  CHECK(s.TrackedSpecies() == 1);       // the first minor component
+  CHECK(s.TrackedSpecies() == 1);      // the first minor component
 
   SegregationSettings no_funnel = s;
   no_funnel.funnel.enabled = false;
