@@ -157,6 +157,10 @@ TEST_CASE("outflow recorder: a grain counts once, when its centre first drops be
 // k ≈ 1.4–1.5 (between 1 and 2) and C ≈ 0.58 for flat-bottomed bins; a conical hopper changes C
 // (a factor of the hopper angle, Rose & Tanaka 1956) but not the (D − k d)^{5/2} scaling.
 // Three orifices of 5, 6.5 and 8 grain diameters; ρ_b measured in the settled fill.
+// Known weakness (open): this soft, conical set-up gives k near the lower bound. Seed 11 (the
+// first tried) fits k = 1.03; seeds 12 and 13 give 0.99 and 0.89, and the 0.1–0.5 flow window
+// moves k by ±0.3. Stiffer grains, a flat-bottomed bin and replicates per orifice are the next
+// things to try; do not widen the range.
 TEST_CASE("discharge: soft cohesionless spheres follow Beverloo's law with k in [1, 2]",
           "[physics]") {
   const double d = 0.004;
