@@ -46,14 +46,7 @@ bool ParseAorSection(const json& section, const std::string& source, const core:
   if (const json* settle = f.Object("settle", kOptional)) ParseSettle(*settle, "aor.settle", &s.settle, &status);
   if (const json* angle = f.Object("angle", kOptional)) ParseAngleOptions(*angle, &s.angle, &status);
   f.Number("max_wall_time_s", &s.max_wall_time_s, kOptional, Range::Closed(0, 1e7, "s"));
-  std::string problem;
-  if (status.ok() && !s.IsValid(model, &problem)) status.Fail(problem);
-  if (!status.ok()) {
-    if (error) *error = source + ": " + status.message();
-    return false;
-  }
-  *settings = s;
-  return true;
+  return FinishSection(status, source, model, s, settings, error);
 }
 
 }  // namespace demcal::apps

@@ -80,14 +80,7 @@ bool ParseDischargeSection(const json& section, const std::string& source,
   if (const json* analysis = f.Object("analysis", kOptional))
     ParseAnalysis(*analysis, &s.analysis, &status);
   f.Number("max_wall_time_s", &s.max_wall_time_s, kOptional, Range::Closed(0, 1e7, "s"));
-  std::string problem;
-  if (status.ok() && !s.IsValid(model, &problem)) status.Fail(problem);
-  if (!status.ok()) {
-    if (error) *error = source + ": " + status.message();
-    return false;
-  }
-  *settings = s;
-  return true;
+  return FinishSection(status, source, model, s, settings, error);
 }
 
 }  // namespace demcal::apps

@@ -107,14 +107,7 @@ bool ParseSegregationSection(const json& section, const std::string& source,
        "glued_base", "settle", "bins", "segregation_index", "tracking", "max_wall_time_s"},
       &status);
   ParseFields(f, model, &s, &status);
-  std::string problem;
-  if (status.ok() && !s.IsValid(model, &problem)) status.Fail(problem);
-  if (!status.ok()) {
-    if (error) *error = source + ": " + status.message();
-    return false;
-  }
-  *settings = s;
-  return true;
+  return FinishSection(status, source, model, s, settings, error);
 }
 
 }  // namespace demcal::apps
