@@ -7,6 +7,7 @@
 
 #include "core/random.h"
 #include "core/simulation.h"
+#include "objectives/experiment_scene.h"
 #include "objectives/glued_base.h"
 
 namespace demcal::objectives {
@@ -24,11 +25,7 @@ bool Fail(std::string* error, const std::string& message) {
 constexpr double kMargin = 0.02;
 
 GluedBaseSpec BaseSpec(const core::Scene& model, const AorSettings& s, uint64_t seed) {
-  GluedBaseSpec base;
-  base.species = s.feed.components.front().species;
-  const core::SizeDistribution& size = model.species[base.species].size;
-  base.diameter_m = 0.5 * (size.MinDiameter() + size.MaxDiameter());
-  base.seed = core::DeriveSeed(seed, 77);
+  GluedBaseSpec base = GluedBaseOfFeed(model, s.feed, seed);
   if (s.heap == AorSettings::Heap::kSlot) {
     base.min_m = {0, 0, 0};
     base.max_m = {s.width_m, s.depth_m, 0};
@@ -100,13 +97,7 @@ bool AorSettings::IsValid(const core::Scene& model, std::string* error) const {
 
 core::Scene BuildAorScene(const core::Scene& model, const AorSettings& s, uint64_t seed,
                           int64_t* fixed_count) {
-  core::Scene scene = model;
-  scene.seed = seed;
-  scene.max_wall_time_s = s.max_wall_time_s;
-  scene.walls.clear();
-  scene.particles.clear();
-  scene.fills.clear();
-  scene.factories.clear();
+  core::Scene scene = EmptyExperimentScene(model, seed, s.max_wall_time_s);
   const double top = s.pour_height_m + FeedRegionHeight(model, s) + kMargin;
   if (s.heap == AorSettings::Heap::kSlot)
     AddSlotGeometry(s, top, &scene);

@@ -4,6 +4,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "objectives/experiment_scene.h"
 #include "objectives/hopper_fill.h"
 
 namespace demcal::objectives {
@@ -119,13 +120,7 @@ bool DischargeSettings::IsValid(const core::Scene& model, std::string* error) co
 
 core::Scene BuildDischargeScene(const core::Scene& model, const DischargeSettings& s,
                                 uint64_t seed) {
-  core::Scene scene = model;
-  scene.seed = seed;
-  scene.max_wall_time_s = s.max_wall_time_s;
-  scene.walls.clear();
-  scene.particles.clear();
-  scene.fills.clear();
-  scene.factories.clear();
+  core::Scene scene = EmptyExperimentScene(model, seed, s.max_wall_time_s);
   AddHopper(s, &scene);
   scene.walls.push_back(Gate(model, s, s.gate_open_s > 0 ? s.gate_open_s : kLateS));
   const double half = CatchHalfWidth(s);

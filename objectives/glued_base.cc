@@ -6,6 +6,15 @@
 
 namespace demcal::objectives {
 
+GluedBaseSpec GluedBaseOfFeed(const core::Scene& model, const Feed& feed, uint64_t seed) {
+  GluedBaseSpec base;
+  base.species = feed.components.front().species;
+  const core::SizeDistribution& size = model.species[base.species].size;
+  base.diameter_m = 0.5 * (size.MinDiameter() + size.MaxDiameter());
+  base.seed = core::DeriveSeed(seed, 77);
+  return base;
+}
+
 std::vector<core::ParticleSpec> GluedBase(const GluedBaseSpec& spec) {
   const double d = spec.diameter_m, r = 0.5 * d;
   const core::Vec3 centre = 0.5 * (spec.min_m + spec.max_m);

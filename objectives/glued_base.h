@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/scene.h"
+#include "objectives/feed.h"
 
 namespace demcal::objectives {
 
@@ -17,6 +18,10 @@ struct GluedBaseSpec {
   double disc_radius_m = 0; // > 0: keep only lattice points within this radius of the centre
   uint64_t seed = 1;
 };
+
+// A layer of the feed's first species at its mean sieve diameter, seeded from the run's seed;
+// the caller sets the extent (min_m, max_m, disc_radius_m).
+GluedBaseSpec GluedBaseOfFeed(const core::Scene& model, const Feed& feed, uint64_t seed);
 
 // The fixed particles of the layer (ParticleSpec::fixed = true).
 std::vector<core::ParticleSpec> GluedBase(const GluedBaseSpec& spec);

@@ -6,6 +6,7 @@
 
 #include "core/random.h"
 #include "core/simulation.h"
+#include "objectives/experiment_scene.h"
 #include "objectives/funnel_clock.h"
 #include "objectives/glued_base.h"
 #include "objectives/granule_recorder.h"
@@ -23,11 +24,7 @@ constexpr double kFeedGap = 0.005;
 constexpr double kTrackBelowOrifice = 0.02;
 
 GluedBaseSpec BaseSpec(const core::Scene& model, const SegregationSettings& s, uint64_t seed) {
-  GluedBaseSpec base;
-  base.species = s.feed.components.front().species;
-  const core::SizeDistribution& size = model.species[base.species].size;
-  base.diameter_m = 0.5 * (size.MinDiameter() + size.MaxDiameter());
-  base.seed = core::DeriveSeed(seed, 77);
+  GluedBaseSpec base = GluedBaseOfFeed(model, s.feed, seed);
   base.min_m = {0, 0, 0};
   base.max_m = {s.width_m, s.depth_m, 0};
   return base;
@@ -194,13 +191,7 @@ std::string SegregationRun::Status() const {
 
 core::Scene BuildSegregationScene(const core::Scene& model, const SegregationSettings& s,
                                   uint64_t seed, int64_t* fixed_count) {
-  core::Scene scene = model;
-  scene.seed = seed;
-  scene.max_wall_time_s = s.max_wall_time_s;
-  scene.walls.clear();
-  scene.particles.clear();
-  scene.fills.clear();
-  scene.factories.clear();
+  core::Scene scene = EmptyExperimentScene(model, seed, s.max_wall_time_s);
   const double top = FeedRegionBottom(s) + FeedRegionHeight(model, s) + kMargin;
   for (const core::PlaneWall& face :
        core::BoxInnerFaces("box", {0, 0, 0}, {s.width_m, s.depth_m, top}, s.wall_material, true))
