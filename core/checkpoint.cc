@@ -8,7 +8,7 @@
 
 namespace demcal::core {
 namespace {
-constexpr char kMagic[] = "demcal-checkpoint/2";  // 2: mesh wall histories, wall loads
+constexpr char kMagic[] = "demcal-checkpoint/3";  // 2: mesh wall histories, wall loads; 3: JKR radius
 }  // namespace
 
 template <class A>

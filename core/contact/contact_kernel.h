@@ -22,14 +22,14 @@ struct ContactModel {
     if (overlap > 0) return true;
     if constexpr (Normal::kAdhesive) {
       return was_in_contact && p.interfacial_energy_J_m2 > 0 &&
-             overlap > -Normal::BreakGap(r_eff, p.effective_youngs_Pa, p.interfacial_energy_J_m2);
+             Normal::Holds(-overlap, r_eff, p.effective_youngs_Pa, p.interfacial_energy_J_m2);
     }
     return false;
   }
 
   DEMCAL_HOT_INLINE ContactResult Evaluate(const ContactGeometry& g, const ResolvedPair& p, double dt,
                          ContactHistory& h) const {
-    const NormalForce n = Normal::Compute(g, p);
+    const NormalForce n = Normal::Compute(g, p, h);
     const Vec3 f_t = MindlinTangential::Compute(g, p, n, dt, h);
     ContactResult r;
     r.force_i = n.total_N * g.normal + f_t;

@@ -12,8 +12,10 @@ namespace demcal::core {
 struct HertzMindlinNormal {
   static constexpr bool kAdhesive = false;
   static double BreakGap(double, double, double) { return 0; }
+  static bool Holds(double, double, double, double) { return false; }
 
-  DEMCAL_HOT_INLINE static NormalForce Compute(const ContactGeometry& g, const ResolvedPair& p) {
+  DEMCAL_HOT_INLINE static NormalForce Compute(const ContactGeometry& g, const ResolvedPair& p,
+                                               ContactHistory&) {
     constexpr double kTwoSqrtFiveSixths = 1.8257418583505538;  // 2 sqrt(5/6)
     const double a = std::sqrt(g.effective_radius_m * g.overlap_m);
     const double e_star = p.effective_youngs_Pa;

@@ -6,7 +6,8 @@
 // when they are pulled apart to the displacement-controlled snap-off δ_min =
 // −(3/4)(π² w² R*/E*²)^{1/3} (hysteresis). Choices (documented in the README):
 //  * contact radius from δ: Parteli et al. (2014) closed form of the quartic, stable branch,
-//    polished by one Newton step;
+//    polished by one Newton step, for a new contact; afterwards Newton steps on the stable branch
+//    from the previous step's radius (kept in the contact history), which costs a fraction of it;
 //  * normal damping as Hertz–Mindlin with S_n = 2 E* a (equal to HM's when a² = R* δ);
 //  * Coulomb and rolling limits use the repulsive (Hertz) part 4E*a³/(3R*) of the force
 //    (EDEM: friction "depends on the positive repulsive part of the JKR normal force").
@@ -45,6 +46,14 @@ struct JkrNormal {
     return 0.75 * FastCbrt(std::numbers::pi * std::numbers::pi * w * w * r_eff / (e_star * e_star));
   }
 
+  // Whether a stretched contact (gap = −δ > 0) holds: gap < BreakGap, compared in cubes so the
+  // force loop takes no cube root.
+  DEMCAL_HOT_INLINE static bool Holds(double gap, double r_eff, double e_star, double gamma) {
+    const double w = 2.0 * gamma;
+    constexpr double kCube = 27.0 / 64.0 * std::numbers::pi * std::numbers::pi;  // 0.75³ π²
+    return gap * gap * gap * (e_star * e_star) < kCube * w * w * r_eff;
+  }
+
   // Adhesion length k = sqrt(4πΓ/E*) (m^½): δ(a) = a²/R* − k √a.
   static double AdhesionLength(double e_star, double gamma) {
     return std::sqrt(4.0 * std::numbers::pi * gamma / e_star);
@@ -59,7 +68,8 @@ struct JkrNormal {
   // of the quartic a⁴ − 2R*δ a² − k²R*² a + R*²δ² = 0 (c0 = m², c1 = −(kR*)², c2 = −2m with
   // m = R*δ), polished by one Newton step on δ(a) − δ = 0, which also removes the round-off of
   // the closed form (and of FastCbrt).
-  DEMCAL_HOT_INLINE static Radius SolveRadius(double delta, double r_eff, double inv_r_eff, double k) {
+  DEMCAL_HOT_INLINE static Radius SolveRadius(double delta, double r_eff, double k) {
+    const double inv_r_eff = 1.0 / r_eff;
     const double m = r_eff * delta;
     const double kr = k * r_eff, kr2 = kr * kr;
     const double p = -(4.0 / 3.0) * m * m;
@@ -86,19 +96,46 @@ struct JkrNormal {
     return r;
   }
 
-  // Contact radius on the stable branch for overlap δ >= δ_min (SolveRadius).
-  static double ContactRadius(double delta, double r_eff, double e_star, double gamma) {
-    return SolveRadius(delta, r_eff, 1.0 / r_eff, AdhesionLength(e_star, gamma)).a;
+  // The same radius by Newton's method from s = √a of a nearby overlap (the last step's). In s,
+  // R*δ(s) = s⁴ − kR* s is a polynomial (no roots or divisions by R*) and convex, so from any s on
+  // the stable branch (slope > 0) the first step lands at or above the stable root and the
+  // iterates descend to it quadratically. A step ds leaves an error of about 6s²ds²/slope
+  // (Newton's error term, the curvature being 12s²); iteration stops once that is below
+  // round-off, which after one step from the last step's s it usually is. Falls back to the
+  // closed form off the branch or if it has not settled after a few steps.
+  DEMCAL_HOT_INLINE static Radius RefineRadius(double delta, double r_eff, double k, double s) {
+    constexpr int kMaxSteps = 6;
+    constexpr double kTolerance = 1e-15;  // relative error left, round-off of s
+    const double kr = k * r_eff, target = r_eff * delta;
+    for (int step = 0; step < kMaxSteps; ++step) {
+      const double s3 = s * s * s;
+      const double slope = 4.0 * s3 - kr;
+      if (!(slope > 0)) break;
+      const double ds = (s3 * s - kr * s - target) / slope;
+      s -= ds;
+      if (6.0 * s * ds * ds <= kTolerance * slope) return {s * s, s};
+    }
+    return SolveRadius(delta, r_eff, k);
   }
 
-  DEMCAL_HOT_INLINE static NormalForce Compute(const ContactGeometry& g, const ResolvedPair& p) {
+  // Contact radius on the stable branch for overlap δ >= δ_min (SolveRadius).
+  static double ContactRadius(double delta, double r_eff, double e_star, double gamma) {
+    return SolveRadius(delta, r_eff, AdhesionLength(e_star, gamma)).a;
+  }
+
+  // h.jkr_sqrt_radius carries √a from step to step (0: a new contact, solved in closed form).
+  DEMCAL_HOT_INLINE static NormalForce Compute(const ContactGeometry& g, const ResolvedPair& p,
+                                               ContactHistory& h) {
     const double gamma = p.interfacial_energy_J_m2;
-    if (gamma <= 0) return HertzMindlinNormal::Compute(g, p);
+    if (gamma <= 0) return HertzMindlinNormal::Compute(g, p, h);
     constexpr double kTwoSqrtFiveSixths = 1.8257418583505538;
     const double e_star = p.effective_youngs_Pa, r_eff = g.effective_radius_m;
-    const double inv_r_eff = 1.0 / r_eff, k = AdhesionLength(e_star, gamma);
-    const auto [a, sqrt_a] = SolveRadius(g.overlap_m, r_eff, inv_r_eff, k);
-    const double hertz = (4.0 / 3.0) * e_star * a * a * a * inv_r_eff;
+    const double k = AdhesionLength(e_star, gamma);
+    const auto [a, sqrt_a] = h.jkr_sqrt_radius > 0
+                                 ? RefineRadius(g.overlap_m, r_eff, k, h.jkr_sqrt_radius)
+                                 : SolveRadius(g.overlap_m, r_eff, k);
+    h.jkr_sqrt_radius = sqrt_a;
+    const double hertz = (4.0 / 3.0) * e_star * a * (g.overlap_m + k * sqrt_a);  // a²/R* = δ + k√a
     const double adhesion = 2.0 * k * e_star * a * sqrt_a;  // 4 sqrt(πΓE*) a^{3/2}
     const double s_n = 2.0 * e_star * a;
     const double c_n = -kTwoSqrtFiveSixths * p.beta * std::sqrt(s_n * g.effective_mass_kg);
