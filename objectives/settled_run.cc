@@ -9,8 +9,10 @@ namespace demcal::objectives {
 double SpecificKineticEnergy(const core::Simulation& sim) {
   const core::Particles& p = sim.particles();
   double mass = 0;
+  // Free spheres, then each clump once (its members carry the whole clump's mass, for m*).
   for (size_t i = 0; i < p.Size(); ++i)
-    if (p.inv_mass[i] > 0 || p.body[i] >= 0) mass += p.mass_kg[i];
+    if (p.inv_mass[i] > 0 && p.body[i] < 0) mass += p.mass_kg[i];
+  for (double clump_kg : sim.system().clumps.mass_kg) mass += clump_kg;
   return mass > 0 ? sim.KineticEnergy() / mass : 0;
 }
 

@@ -33,7 +33,11 @@ using ProgressCallback = std::function<void(double, double)>;
 SettleResult RunUntilSettled(core::Simulation& sim, const SettleCriteria& criteria,
                              const ProgressCallback& progress);
 
-// Kinetic energy per unit mass of the non-fixed particles (J/kg); 0 without particles.
+// Mean specific kinetic energy of the moving bodies: total translational + rotational kinetic
+// energy over their total mass (J/kg; fixed spheres excluded, a clump counted once); 0 without
+// moving mass. A scale for the threshold: a grain of diameter d at rest on a heap moves far less
+// than d per free-fall time √(d/g), i.e. ½v² ≪ ½ g d (≈ 0.01 J/kg for 2 mm grains), so 1e-5 J/kg
+// (v ≈ 4.5 mm/s rms) is strict. NaN for a blown-up state, which never counts as settled.
 double SpecificKineticEnergy(const core::Simulation& sim);
 
 }  // namespace demcal::objectives
