@@ -1,17 +1,16 @@
 // `demcal experiment aor`: replicated angle-of-repose runs → result.json, runs.csv, one heap
 // profile picture and one VTK file of the settled heap per replicate.
-#include <fstream>
-#include <mutex>
+#include <string>
 #include <vector>
 
 #include "apps/aor_json.h"
 #include "apps/exit_codes.h"
-#include "apps/experiment_runner.h"
-#include "apps/replicate_progress.h"
-#include "core/io/vtk_writer.h"
+#include "apps/experiment_setup.h"
+#include "apps/json_document.h"
 #include "objectives/aor_experiment.h"
 #include "objectives/heap_profile_svg.h"
 #include "objectives/replicates.h"
+#include "objectives/text_file.h"
 
 namespace demcal::apps {
 
@@ -45,20 +44,26 @@ nlohmann::ordered_json RunJson(int replicate, const AorRun& run) {
 }
 
 bool WriteRunsCsv(const std::string& path, const std::vector<AorRun>& runs, std::string* error) {
-  std::ofstream out(path, std::ios::trunc);
-  out << "replicate,seed,status,angle_deg,flank_spread_deg,flanks,heap_height_m,particles,"
-         "settle_time_s,wall_time_s\n";
-  for (size_t r = 0; r < runs.size(); ++r) {
-    const AorRun& run = runs[r];
-    out << r << "," << run.seed << "," << run.Status() << ","
-        << (run.angle.ok ? std::to_string(run.angle.angle_deg) : "") << ","
-        << run.angle.spread_deg << "," << run.angle.flanks.size() << ","
-        << run.angle.heap_height_m << "," << run.particles << "," << run.settle.settle_time_s
-        << "," << run.wall_time_s << "\n";
-  }
-  out.flush();
-  if (!out && error) *error = "cannot write '" + path + "'";
-  return static_cast<bool>(out);
+  return objectives::WriteTextFile(
+      path,
+      [&](std::ostream& out) {
+        out << "replicate,seed,status,angle_deg,flank_spread_deg,flanks,heap_height_m,particles,"
+               "settle_time_s,wall_time_s\n";
+        for (size_t r = 0; r < runs.size(); ++r) {
+          const AorRun& run = runs[r];
+          out << r << "," << run.seed << "," << run.Status() << ","
+              << (run.angle.ok ? std::to_string(run.angle.angle_deg) : "") << ","
+              << run.angle.spread_deg << "," << run.angle.flanks.size() << ","
+              << run.angle.heap_height_m << "," << run.particles << ","
+              << run.settle.settle_time_s << "," << run.wall_time_s << "\n";
+        }
+      },
+      error);
+}
+
+core::Scene BuildScene(const core::Scene& model, const AorSettings& settings, uint64_t seed) {
+  int64_t fixed = 0;
+  return objectives::BuildAorScene(model, settings, seed, &fixed);
 }
 
 objectives::SvgPlot ProfilePlot(const AorSettings& settings, const AorRun& run) {
@@ -71,32 +76,17 @@ objectives::SvgPlot ProfilePlot(const AorSettings& settings, const AorRun& run) 
 
 int RunAorExperiment(const ExperimentFile& file, const ExperimentContext& context,
                      std::ostream& log) {
-  core::Scene model = file.model;
-  objectives::ApplyFidelity(context.fidelity, &model);
-  AorSettings settings;
-  std::string error;
-  if (!ParseAorSection(file.section, file.source, model, &settings, &error)) {
-    log << "error: " << error << "\n";
+  PreparedExperiment<AorSettings> prepared;
+  if (!PrepareExperiment(file, context, ParseAorSection, BuildScene, &prepared, log))
     return kExitInvalidInput;
-  }
-  int64_t fixed = 0;
-  const core::Scene probe = objectives::BuildAorScene(model, settings, file.seed, &fixed);
-  if (!probe.IsValid(&error)) {
-    log << "error: " << file.source << ": the aor scene is invalid: " << error << "\n";
-    return kExitInvalidInput;
-  }
+  const AorSettings& settings = prepared.settings;
   std::vector<AorRun> runs(context.replicates);
   std::vector<std::string> output_errors(context.replicates);
   ReplicateProgress progress(log, "aor", context.replicates, !context.quiet);
   objectives::RunReplicates(context.replicates, file.seed, context.threads, [&](int r, uint64_t seed) {
-    objectives::RunHooks hooks;
-    hooks.progress = [&, r](double t, double end) { progress.Update(r, t, end); };
-    hooks.on_finish = [&, r](const core::Simulation& sim) {
-      const std::string path = context.out_dir + "/heap_r" + std::to_string(r) + ".vtk";
-      core::io::WriteParticlesVtk(path, sim.particles(), sim.time_s(), {}, &output_errors[r],
-                                  &sim.system().clumps);
-    };
-    runs[r] = objectives::RunAor(model, settings, seed, hooks);
+    const objectives::RunHooks hooks =
+        ReplicateHooks(progress, r, context.out_dir, "heap", &output_errors[r]);
+    runs[r] = objectives::RunAor(prepared.model, settings, seed, hooks);
     progress.Finish(r);
     if (runs[r].angle.ok)
       objectives::WriteSvg(context.out_dir + "/heap_profile_r" + std::to_string(r) + ".svg",
@@ -116,8 +106,7 @@ int RunAorExperiment(const ExperimentFile& file, const ExperimentContext& contex
   result["angle_sem_deg"] = s.n > 1 ? nlohmann::ordered_json(s.sem) : nullptr;
   result["angle_std_deg"] = s.n > 1 ? nlohmann::ordered_json(s.stddev) : nullptr;
   result["runs"] = runs_json;
-  for (const std::string& e : output_errors)
-    if (!e.empty()) error = e;
+  std::string error = FirstError(output_errors);
   if (!error.empty() || !WriteJsonFile(context.out_dir + "/result.json", result, &error) ||
       !WriteRunsCsv(context.out_dir + "/runs.csv", runs, &error)) {
     log << "error: " << error << "\n";

@@ -6,9 +6,8 @@
 
 #include "apps/discharge_json.h"
 #include "apps/exit_codes.h"
-#include "apps/experiment_runner.h"
-#include "apps/replicate_progress.h"
-#include "core/io/vtk_writer.h"
+#include "apps/experiment_setup.h"
+#include "apps/json_document.h"
 #include "objectives/discharge_csv.h"
 #include "objectives/discharge_experiment.h"
 #include "objectives/discharge_svg.h"
@@ -65,12 +64,6 @@ void AddSummary(const std::vector<DischargeRun>& runs, double (*value)(const Dis
   (*result)[sem_key] = OrNull(s.n > 1, s.sem);
 }
 
-std::vector<std::string> SpeciesNames(const core::Scene& model) {
-  std::vector<std::string> names;
-  for (const core::Species& s : model.species) names.push_back(s.name);
-  return names;
-}
-
 // Per replicate: outflow and composition tables.
 void WriteRunTables(const std::string& dir, int r, const DischargeRun& run,
                     const std::vector<std::string>& names, std::string* error) {
@@ -100,32 +93,19 @@ bool WritePictures(const std::string& dir, const std::vector<DischargeRun>& runs
 
 int RunDischargeExperiment(const ExperimentFile& file, const ExperimentContext& context,
                            std::ostream& log) {
-  core::Scene model = file.model;
-  objectives::ApplyFidelity(context.fidelity, &model);
-  DischargeSettings settings;
-  std::string error;
-  if (!ParseDischargeSection(file.section, file.source, model, &settings, &error)) {
-    log << "error: " << error << "\n";
+  PreparedExperiment<DischargeSettings> prepared;
+  if (!PrepareExperiment(file, context, ParseDischargeSection, objectives::BuildDischargeScene,
+                         &prepared, log))
     return kExitInvalidInput;
-  }
-  const core::Scene probe = objectives::BuildDischargeScene(model, settings, file.seed);
-  if (!probe.IsValid(&error)) {
-    log << "error: " << file.source << ": the discharge scene is invalid: " << error << "\n";
-    return kExitInvalidInput;
-  }
-  const std::vector<std::string> names = SpeciesNames(model);
+  const DischargeSettings& settings = prepared.settings;
+  const std::vector<std::string> names = SpeciesNames(prepared.model);
   std::vector<DischargeRun> runs(context.replicates);
   std::vector<std::string> output_errors(context.replicates);
   ReplicateProgress progress(log, "discharge", context.replicates, !context.quiet);
   objectives::RunReplicates(context.replicates, file.seed, context.threads, [&](int r, uint64_t seed) {
-    objectives::RunHooks hooks;
-    hooks.progress = [&, r](double t, double end) { progress.Update(r, t, end); };
-    hooks.on_finish = [&, r](const core::Simulation& sim) {
-      const std::string path = context.out_dir + "/hopper_r" + std::to_string(r) + ".vtk";
-      core::io::WriteParticlesVtk(path, sim.particles(), sim.time_s(), {}, &output_errors[r],
-                                  &sim.system().clumps);
-    };
-    runs[r] = objectives::RunDischarge(model, settings, seed, hooks);
+    const objectives::RunHooks hooks =
+        ReplicateHooks(progress, r, context.out_dir, "hopper", &output_errors[r]);
+    runs[r] = objectives::RunDischarge(prepared.model, settings, seed, hooks);
     progress.Finish(r);
     WriteRunTables(context.out_dir, r, runs[r], names, &output_errors[r]);
   });
@@ -145,8 +125,7 @@ int RunDischargeExperiment(const ExperimentFile& file, const ExperimentContext& 
   AddSummary(runs, [](const DischargeRun& x) { return x.bulk_density_kg_m3; },
              "bulk_density_kg_m3", "bulk_density_sem_kg_m3", &result);
   result["runs"] = runs_json;
-  for (const std::string& e : output_errors)
-    if (!e.empty()) error = e;
+  std::string error = FirstError(output_errors);
   if (!error.empty() || !WritePictures(context.out_dir, runs, names, &error) ||
       !WriteJsonFile(context.out_dir + "/result.json", result, &error)) {
     log << "error: " << error << "\n";

@@ -1,6 +1,4 @@
 // Shared pieces of the experiment runners' result files.
-#include <fstream>
-
 #include "apps/experiment_runner.h"
 #include "core/version.h"
 
@@ -24,18 +22,6 @@ nlohmann::ordered_json ResultHeader(const ExperimentFile& file, const Experiment
   j["seed"] = file.seed;
   j["replicates"] = context.replicates;
   return j;
-}
-
-bool WriteJsonFile(const std::string& path, const nlohmann::ordered_json& value,
-                   std::string* error) {
-  std::ofstream out(path, std::ios::trunc);
-  out << value.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";
-  out.flush();
-  if (!out) {
-    if (error) *error = "cannot write '" + path + "'";
-    return false;
-  }
-  return true;
 }
 
 }  // namespace demcal::apps

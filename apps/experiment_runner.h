@@ -34,8 +34,4 @@ int RunSegregationExperiment(const ExperimentFile& file, const ExperimentContext
 nlohmann::ordered_json ResultHeader(const ExperimentFile& file, const ExperimentContext& context);
 nlohmann::ordered_json FidelityJson(const objectives::Fidelity& fidelity);
 
-// Writes `value` as indented JSON; false with a message naming the file.
-bool WriteJsonFile(const std::string& path, const nlohmann::ordered_json& value,
-                   std::string* error);
-
 }  // namespace demcal::apps

@@ -5,6 +5,8 @@
 #include <sstream>
 #include <vector>
 
+#include "objectives/text_file.h"
+
 namespace demcal::apps {
 
 namespace {
@@ -74,6 +76,16 @@ bool ReadJsonFile(const std::string& path, const std::string& what, json* out,
   std::ostringstream text;
   text << in.rdbuf();
   return ParseJsonText(text.str(), path, out, error);
+}
+
+bool WriteJsonFile(const std::string& path, const nlohmann::ordered_json& value,
+                   std::string* error) {
+  return objectives::WriteTextFile(
+      path,
+      [&](std::ostream& out) {
+        out << value.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";
+      },
+      error);
 }
 
 }  // namespace demcal::apps

@@ -1,5 +1,5 @@
 #pragma once
-// Reading a JSON input file: syntax errors are reported with line and column, and a key that
+// Reading a JSON input file and writing a result file. Reading: syntax errors are reported with line and column, and a key that
 // appears twice in one object is an error (nlohmann would silently keep the last one, which
 // makes a file with two "seed"s ambiguous). Messages start with the file name.
 #include <nlohmann/json.hpp>
@@ -14,5 +14,9 @@ bool ParseJsonText(const std::string& text, const std::string& source, nlohmann:
 // Reads and parses a file; `what` names it in the message ("scene file", "experiment file").
 bool ReadJsonFile(const std::string& path, const std::string& what, nlohmann::json* out,
                   std::string* error);
+
+// Writes `value` as indented JSON (invalid UTF-8 replaced); false with a message naming the file.
+bool WriteJsonFile(const std::string& path, const nlohmann::ordered_json& value,
+                   std::string* error);
 
 }  // namespace demcal::apps

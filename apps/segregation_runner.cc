@@ -5,11 +5,10 @@
 #include <vector>
 
 #include "apps/exit_codes.h"
-#include "apps/experiment_runner.h"
-#include "apps/replicate_progress.h"
+#include "apps/experiment_setup.h"
+#include "apps/json_document.h"
 #include "apps/segregation_json.h"
 #include "apps/segregation_result.h"
-#include "core/io/vtk_writer.h"
 #include "objectives/cov_layer_plot_svg.h"
 #include "objectives/heap_face_svg.h"
 #include "objectives/replicates.h"
@@ -22,12 +21,6 @@ namespace {
 
 using objectives::SegregationRun;
 using objectives::SegregationSettings;
-
-std::vector<std::string> SpeciesNames(const core::Scene& model) {
-  std::vector<std::string> names;
-  for (const core::Species& s : model.species) names.push_back(s.name);
-  return names;
-}
 
 std::vector<objectives::GranuleTrack> Tracks(const SegregationRun& run) {
   std::vector<objectives::GranuleTrack> tracks;
@@ -53,46 +46,36 @@ bool WriteRunFiles(const std::string& dir, int r, const SegregationRun& run,
                                           error);
 }
 
+core::Scene BuildScene(const core::Scene& model, const SegregationSettings& settings,
+                       uint64_t seed) {
+  int64_t fixed = 0;
+  return objectives::BuildSegregationScene(model, settings, seed, &fixed);
+}
+
 }  // namespace
 
 int RunSegregationExperiment(const ExperimentFile& file, const ExperimentContext& context,
                              std::ostream& log) {
-  core::Scene model = file.model;
-  objectives::ApplyFidelity(context.fidelity, &model);
-  SegregationSettings settings;
-  std::string error;
-  if (!ParseSegregationSection(file.section, file.source, model, &settings, &error)) {
-    log << "error: " << error << "\n";
+  PreparedExperiment<SegregationSettings> prepared;
+  if (!PrepareExperiment(file, context, ParseSegregationSection, BuildScene, &prepared, log))
     return kExitInvalidInput;
-  }
-  int64_t fixed = 0;
-  const core::Scene probe = objectives::BuildSegregationScene(model, settings, file.seed, &fixed);
-  if (!probe.IsValid(&error)) {
-    log << "error: " << file.source << ": the segregation scene is invalid: " << error << "\n";
-    return kExitInvalidInput;
-  }
-  const std::vector<std::string> names = SpeciesNames(model);
+  const SegregationSettings& settings = prepared.settings;
+  const std::vector<std::string> names = SpeciesNames(prepared.model);
   std::vector<SegregationRun> runs(context.replicates);
   std::vector<std::string> output_errors(context.replicates);
   ReplicateProgress progress(log, "segregation", context.replicates, !context.quiet);
   objectives::RunReplicates(
       context.replicates, file.seed, context.threads, [&](int r, uint64_t seed) {
-        objectives::RunHooks hooks;
-        hooks.progress = [&, r](double t, double end) { progress.Update(r, t, end); };
-        hooks.on_finish = [&, r](const core::Simulation& sim) {
-          const std::string path = context.out_dir + "/heap_r" + std::to_string(r) + ".vtk";
-          core::io::WriteParticlesVtk(path, sim.particles(), sim.time_s(), {}, &output_errors[r],
-                                      &sim.system().clumps);
-        };
-        runs[r] = objectives::RunSegregation(model, settings, seed, hooks);
+        const objectives::RunHooks hooks =
+            ReplicateHooks(progress, r, context.out_dir, "heap", &output_errors[r]);
+        runs[r] = objectives::RunSegregation(prepared.model, settings, seed, hooks);
         progress.Finish(r);
         if (output_errors[r].empty())
           WriteRunFiles(context.out_dir, r, runs[r], names, &output_errors[r]);
       });
   nlohmann::ordered_json result = ResultHeader(file, context);
   result.update(SegregationResultJson(settings, names, runs));
-  for (const std::string& e : output_errors)
-    if (!e.empty()) error = e;
+  std::string error = FirstError(output_errors);
   if (!error.empty() || !WriteJsonFile(context.out_dir + "/result.json", result, &error)) {
     log << "error: " << error << "\n";
     return kExitOutputError;

@@ -1,8 +1,8 @@
 #include "apps/summary_json.h"
 
 #include <cmath>
-#include <fstream>
 
+#include "apps/json_document.h"
 #include "core/version.h"
 
 namespace demcal::apps {
@@ -74,16 +74,7 @@ nlohmann::ordered_json RunRecordToJson(const RunRecord& r) {
 }
 
 bool WriteRunSummaryJson(const std::string& path, const RunRecord& record, std::string* error) {
-  std::ofstream out(path, std::ios::trunc);
-  out << RunRecordToJson(record).dump(2, ' ', false,
-                                      nlohmann::ordered_json::error_handler_t::replace)
-      << "\n";
-  out.flush();
-  if (!out) {
-    if (error) *error = "cannot write '" + path + "'";
-    return false;
-  }
-  return true;
+  return WriteJsonFile(path, RunRecordToJson(record), error);
 }
 
 }  // namespace demcal::apps

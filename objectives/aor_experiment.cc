@@ -88,9 +88,9 @@ bool AorSettings::IsValid(const core::Scene& model, std::string* error) const {
        << ", 10) m";
   else if (wall_material < 0 || wall_material >= static_cast<int>(model.materials.size()))
     os << "aor.wall_material names no defined material";
-  else if (!(settle.max_time_s > feed.start_s + feed.DurationS()))
+  else if (!(settle.max_time_s > feed.EndS()))
     os << "aor.max_time_s = " << settle.max_time_s << " s must exceed the pour time "
-       << feed.start_s + feed.DurationS() << " s";
+       << feed.EndS() << " s";
   if (!os.str().empty()) return Fail(error, os.str());
   return angle.IsValid(error);
 }
@@ -118,14 +118,9 @@ AorRun RunAor(const core::Scene& model, const AorSettings& settings, uint64_t se
   int64_t fixed = 0;
   core::Scene scene = BuildAorScene(model, settings, seed, &fixed);
   core::Simulation sim(scene, {.threads = 1});
-  std::string error;
-  if (!sim.Initialize(&error)) {
-    out.settle.status = "invalid_scene";
-    out.settle.message = error;
-    return out;
-  }
+  if (!InitializeSettledRun(sim, &out.settle)) return out;
   SettleCriteria criteria = settings.settle;
-  criteria.feed_end_s = settings.feed.start_s + settings.feed.DurationS();
+  criteria.feed_end_s = settings.feed.EndS();
   out.settle = RunUntilSettled(sim, criteria, [&](double t, double end) {
     if (hooks.progress) hooks.progress(t, end);
     if (hooks.on_check) hooks.on_check(sim);

@@ -1,8 +1,8 @@
 #include "objectives/discharge_csv.h"
 
-#include <fstream>
-#include <functional>
 #include <limits>
+
+#include "objectives/text_file.h"
 
 namespace demcal::objectives {
 
@@ -12,15 +12,6 @@ void Header(std::ostream& out, const std::string& prefix,
             const std::vector<std::string>& species_names, const std::string& suffix) {
   for (const std::string& name : species_names) out << "," << prefix << name << suffix;
   out << "\n";
-}
-
-bool ToFile(const std::string& path, std::string* error,
-            const std::function<void(std::ostream&)>& write) {
-  std::ofstream out(path, std::ios::trunc);
-  write(out);
-  out.flush();
-  if (!out && error) *error = "cannot write '" + path + "'";
-  return static_cast<bool>(out);
 }
 
 }  // namespace
@@ -39,7 +30,8 @@ void WriteOutflowCsv(std::ostream& out, const std::vector<OutflowSample>& sample
 
 bool WriteOutflowCsv(const std::string& path, const std::vector<OutflowSample>& samples,
                      const std::vector<std::string>& species_names, std::string* error) {
-  return ToFile(path, error, [&](std::ostream& out) { WriteOutflowCsv(out, samples, species_names); });
+  return WriteTextFile(
+      path, [&](std::ostream& out) { WriteOutflowCsv(out, samples, species_names); }, error);
 }
 
 void WriteCompositionCsv(std::ostream& out, const std::vector<CompositionBin>& bins,
@@ -56,8 +48,8 @@ void WriteCompositionCsv(std::ostream& out, const std::vector<CompositionBin>& b
 
 bool WriteCompositionCsv(const std::string& path, const std::vector<CompositionBin>& bins,
                          const std::vector<std::string>& species_names, std::string* error) {
-  return ToFile(path, error,
-                [&](std::ostream& out) { WriteCompositionCsv(out, bins, species_names); });
+  return WriteTextFile(
+      path, [&](std::ostream& out) { WriteCompositionCsv(out, bins, species_names); }, error);
 }
 
 }  // namespace demcal::objectives

@@ -22,6 +22,7 @@ struct Feed {
   core::Vec3 velocity_m_s;     // initial velocity of the poured particles; zero: automatic
                                // (see MakeFeedFactory)
   double DurationS() const { return mass_kg / mass_rate_kg_s; }
+  double EndS() const { return start_s + DurationS(); }  // the pour has finished by then
   // Checks fractions (sum 1 within 1e-6), species indices, mass and rate; `path` prefixes the
   // field names in the message (e.g. "aor.feed").
   bool IsValid(const core::Scene& model, const std::string& path, std::string* error) const;

@@ -1,22 +1,12 @@
 #include "objectives/segregation_csv.h"
 
-#include <fstream>
-#include <functional>
+#include "objectives/text_file.h"
 
 namespace demcal::objectives {
 namespace {
 
 std::string Name(const std::vector<std::string>& names, int species) {
   return species < static_cast<int>(names.size()) ? names[species] : std::to_string(species);
-}
-
-bool WriteFile(const std::string& path, std::string* error,
-               const std::function<void(std::ostream&)>& write) {
-  std::ofstream out(path);
-  write(out);
-  if (out) return true;
-  if (error) *error = "cannot write CSV file " + path;
-  return false;
 }
 
 void WriteIndexRows(std::ostream& out, const RegionSegregation& region,
@@ -56,8 +46,8 @@ void WriteBinCsv(std::ostream& out, const HeapBinGrid& grid, const BinCounts& co
 
 bool WriteBinCsv(const std::string& path, const HeapBinGrid& grid, const BinCounts& counts,
                  const std::vector<std::string>& species_names, std::string* error) {
-  return WriteFile(path, error,
-                   [&](std::ostream& out) { WriteBinCsv(out, grid, counts, species_names); });
+  return WriteTextFile(
+      path, [&](std::ostream& out) { WriteBinCsv(out, grid, counts, species_names); }, error);
 }
 
 void WriteSegregationCsv(std::ostream& out, const HeapSegregation& heap,
@@ -72,8 +62,8 @@ void WriteSegregationCsv(std::ostream& out, const HeapSegregation& heap,
 
 bool WriteSegregationCsv(const std::string& path, const HeapSegregation& heap,
                          const std::vector<std::string>& species_names, std::string* error) {
-  return WriteFile(path, error,
-                   [&](std::ostream& out) { WriteSegregationCsv(out, heap, species_names); });
+  return WriteTextFile(
+      path, [&](std::ostream& out) { WriteSegregationCsv(out, heap, species_names); }, error);
 }
 
 void WriteGranuleTracksCsv(std::ostream& out, const std::vector<GranuleTrack>& tracks) {
@@ -96,7 +86,8 @@ void WriteGranuleTracksCsv(std::ostream& out, const std::vector<GranuleTrack>& t
 
 bool WriteGranuleTracksCsv(const std::string& path, const std::vector<GranuleTrack>& tracks,
                            std::string* error) {
-  return WriteFile(path, error, [&](std::ostream& out) { WriteGranuleTracksCsv(out, tracks); });
+  return WriteTextFile(
+      path, [&](std::ostream& out) { WriteGranuleTracksCsv(out, tracks); }, error);
 }
 
 }  // namespace demcal::objectives

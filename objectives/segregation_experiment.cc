@@ -91,9 +91,9 @@ std::string CheckRun(const core::Scene& model, const SegregationSettings& s) {
   std::ostringstream os;
   if (s.wall_material < 0 || s.wall_material >= static_cast<int>(model.materials.size()))
     os << "segregation.wall_material names no defined material";
-  else if (!(s.settle.max_time_s > s.feed.start_s + s.feed.DurationS()))
+  else if (!(s.settle.max_time_s > s.feed.EndS()))
     os << "segregation.settle.max_time_s = " << s.settle.max_time_s
-       << " s must exceed the pour time " << s.feed.start_s + s.feed.DurationS() << " s";
+       << " s must exceed the pour time " << s.feed.EndS() << " s";
   else if (t.granules < 0 || t.granules > 10000)
     os << "segregation.tracking.granules = " << t.granules
        << " is outside the allowed range [0, 10000]";
@@ -213,14 +213,9 @@ SegregationRun RunSegregation(const core::Scene& model, const SegregationSetting
   out.seed = seed;
   int64_t fixed = 0;
   core::Simulation sim(BuildSegregationScene(model, settings, seed, &fixed), {.threads = 1});
-  std::string error;
-  if (!sim.Initialize(&error)) {
-    out.settle.status = "invalid_scene";
-    out.settle.message = error;
-    return out;
-  }
+  if (!InitializeSettledRun(sim, &out.settle)) return out;
   SettleCriteria criteria = settings.settle;
-  criteria.feed_end_s = settings.feed.start_s + settings.feed.DurationS();
+  criteria.feed_end_s = settings.feed.EndS();
   criteria.check_interval_s =
       std::min(criteria.check_interval_s, settings.tracking.sample_interval_s);
   FunnelClock clock(settings.pour_height_m, criteria.feed_end_s);

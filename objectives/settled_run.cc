@@ -16,6 +16,14 @@ double SpecificKineticEnergy(const core::Simulation& sim) {
   return mass > 0 ? sim.KineticEnergy() / mass : 0;
 }
 
+bool InitializeSettledRun(core::Simulation& sim, SettleResult* result) {
+  std::string error;
+  if (sim.Initialize(&error)) return true;
+  result->status = "invalid_scene";
+  result->message = error;
+  return false;
+}
+
 SettleResult RunUntilSettled(core::Simulation& sim, const SettleCriteria& criteria,
                              const ProgressCallback& progress) {
   SettleResult result;

@@ -27,6 +27,10 @@ struct SettleResult {
   bool ok() const { return status == "ok"; }
 };
 
+// Initialises `sim` for a run; false, with status "invalid_scene" and the reason in *result,
+// when the scene cannot start.
+bool InitializeSettledRun(core::Simulation& sim, SettleResult* result);
+
 // progress(simulated_time_s, expected_end_s) is called every check (may be empty).
 using ProgressCallback = std::function<void(double, double)>;
 

@@ -1,7 +1,8 @@
 #include "objectives/svg_canvas.h"
 
 #include <cstdio>
-#include <fstream>
+
+#include "objectives/text_file.h"
 
 namespace demcal::objectives {
 namespace {
@@ -89,11 +90,7 @@ std::string SvgCanvas::Document() const {
 }
 
 bool SvgCanvas::WriteFile(const std::string& path, std::string* error) const {
-  std::ofstream out(path);
-  out << Document();
-  if (out) return true;
-  if (error) *error = "cannot write SVG file " + path;
-  return false;
+  return WriteTextFile(path, [this](std::ostream& out) { out << Document(); }, error);
 }
 
 }  // namespace demcal::objectives

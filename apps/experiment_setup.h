@@ -1,0 +1,61 @@
+#pragma once
+// What every experiment runner does before and around its replicates (aor_runner.cc,
+// discharge_runner.cc, segregation_runner.cc): the model at the run's fidelity with the parsed
+// section, checked by building one run's scene before anything runs; the hooks that report a
+// replicate's progress and save its final state as VTK; the species names for table headers.
+//
+//   PreparedExperiment<AorSettings> p;
+//   if (!PrepareExperiment(file, context, ParseAorSection, BuildScene, &p, log))
+//     return kExitInvalidInput;
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "apps/experiment_file.h"
+#include "apps/experiment_runner.h"
+#include "apps/replicate_progress.h"
+#include "core/scene.h"
+#include "objectives/fidelity.h"
+#include "objectives/run_hooks.h"
+
+namespace demcal::apps {
+
+template <class Settings>
+struct PreparedExperiment {
+  core::Scene model;  // the file's model at the context's fidelity
+  Settings settings;  // the experiment's section, checked against that model
+};
+
+// Applies the fidelity, parses the section with `parse` (bool(section, source, model,
+// Settings*, error*)) and validates the scene `build` (Scene(model, settings, seed)) makes for
+// the file's seed. False with "error: ..." logged when either step fails.
+template <class Settings, class Parse, class Build>
+bool PrepareExperiment(const ExperimentFile& file, const ExperimentContext& context, Parse parse,
+                       Build build, PreparedExperiment<Settings>* out, std::ostream& log) {
+  out->model = file.model;
+  objectives::ApplyFidelity(context.fidelity, &out->model);
+  std::string error;
+  if (!parse(file.section, file.source, out->model, &out->settings, &error)) {
+    log << "error: " << error << "\n";
+    return false;
+  }
+  if (!build(out->model, out->settings, file.seed).IsValid(&error)) {
+    log << "error: " << file.source << ": the " << file.experiment
+        << " scene is invalid: " << error << "\n";
+    return false;
+  }
+  return true;
+}
+
+// Hooks of replicate r: progress into `progress`, and the final state written to
+// DIR/<vtk_stem>_r<r>.vtk (a failure goes to *output_error; the run itself goes on).
+objectives::RunHooks ReplicateHooks(ReplicateProgress& progress, int r,
+                                    const std::string& out_dir, const std::string& vtk_stem,
+                                    std::string* output_error);
+
+// The first non-empty message of `errors` ("" when all are empty).
+std::string FirstError(const std::vector<std::string>& errors);
+
+std::vector<std::string> SpeciesNames(const core::Scene& model);
+
+}  // namespace demcal::apps
