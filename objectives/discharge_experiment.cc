@@ -57,17 +57,12 @@ void AddHopper(const DischargeSettings& s, core::Scene* scene) {
                                                     .axial_max_m = h.TopM()});
 }
 
-void AddFeed(const core::Scene& model, const DischargeSettings& s, core::Scene* scene) {
-  const core::InsertionRegion region = FeedRegion(model, s);
-  if (s.fill == DischargeSettings::Fill::kPour) {
-    scene->factories.push_back(MakeFeedFactory(model, s.feed, region));
-    return;
-  }
-  for (const FeedComponent& c : s.feed.components)
-    scene->fills.push_back(core::FillSpec{.species = c.species,
-                                          .region_min_m = region.min_m,
-                                          .region_max_m = region.max_m,
-                                          .count = PlacedCount(model, s.feed, c)});
+void AddFeed(const core::Scene& model, const DischargeSettings& s, uint64_t seed,
+             core::Scene* scene) {
+  if (s.fill == DischargeSettings::Fill::kPour)
+    scene->factories.push_back(MakeFeedFactory(model, s.feed, FeedRegion(model, s)));
+  else
+    scene->particles = PlacedFill(model, s, seed);
 }
 
 bool Fail(std::string* error, const std::string& message) {
@@ -104,14 +99,18 @@ bool DischargeSettings::IsValid(const core::Scene& model, std::string* error) co
        << " must exceed 4 largest particle diameters (" << 4 * d << " m at this fidelity)";
   else if (wall_material < 0 || wall_material >= static_cast<int>(model.materials.size()))
     os << "discharge.wall_material names no defined material";
-  else if (gate_open_s > 0 && fill == Fill::kPour && !(gate_open_s > feed.start_s + feed.DurationS()))
+  else if (gate_open_s > 0 && fill == Fill::kPour && !(gate_open_s > feed.EndS()))
     os << "discharge.gate_open_s = " << gate_open_s << " s must come after the pour ends at "
-       << feed.start_s + feed.DurationS() << " s";
+       << feed.EndS() << " s";
   else if (!(sample_interval_s > 0 && stall_s >= 2 * sample_interval_s))
     os << "discharge.stall_s = " << stall_s << " s must span at least 2 samples of "
        << "sample_interval_s = " << sample_interval_s << " s";
   else if (!(max_discharge_s > stall_s))
     os << "discharge.max_discharge_s = " << max_discharge_s << " s must exceed stall_s";
+  else if (!(analysis.flow_window_high <= analysis.discharge_fraction))
+    os << "discharge.analysis.flow_window_high = " << analysis.flow_window_high
+       << " must not exceed discharge_fraction = " << analysis.discharge_fraction
+       << " (the run stops there)";
   else if (FitsInHopper(model, *this, &os))
     FitsInCatchBin(model, *this, &os);
   if (!os.str().empty()) return Fail(error, os.str());
@@ -127,8 +126,8 @@ core::Scene BuildDischargeScene(const core::Scene& model, const DischargeSetting
   const core::BoxFaces bin = core::BoxInnerFaces(
       "catch", {-half, -half, -s.catch_depth_m}, {half, half, 1}, s.wall_material, true);
   for (const core::PlaneWall& face : bin) scene.walls.push_back(face);
-  AddFeed(model, s, &scene);
-  const double top = FeedRegion(model, s).max_m.z;
+  AddFeed(model, s, seed, &scene);
+  const double top = FillTopM(model, s);
   scene.domain_min_m = {-half - kMargin, -half - kMargin, -s.catch_depth_m - kMargin};
   scene.domain_max_m = {half + kMargin, half + kMargin, top + kMargin};
   const double gate_s = s.gate_open_s > 0 ? s.gate_open_s : s.settle.max_time_s;

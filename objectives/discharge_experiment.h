@@ -13,7 +13,9 @@
 // grain leaves its domain, so the outflow stays inside it).
 //
 // Outflow: every sample_interval_s after t0, the cumulative mass per species of the grains whose
-// centre has crossed below the orifice plane (a grain counts once, when first seen below).
+// centre has crossed below the orifice plane (a grain counts once, when first seen below). The
+// run stops once analysis.discharge_fraction of the fill is out: nothing later enters the
+// metrics, and a slow tail (grains trickling off the cone) costs no time.
 //
 // Usage:
 //   core::Scene model = ...;             // materials, species, interactions, contact model
@@ -44,8 +46,8 @@ struct HopperGeometry {
 struct DischargeSettings {
   enum class Fill { kPour, kPlace };
   // kPour: the feed factory pours `feed` at its rate from above the hopper. kPlace: the feed's
-  // mass is placed at t = 0 at random above the hopper (counts from the mean grain masses) and
-  // falls in; the feed's rate is ignored.
+  // mass (counts from the mean grain masses) is placed at t = 0 on a loose jittered lattice
+  // inside the hopper (hopper_fill.h) and settles; the feed's rate is ignored.
   Fill fill = Fill::kPour;
   Feed feed;
   HopperGeometry hopper;

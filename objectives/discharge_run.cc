@@ -24,11 +24,12 @@ double SecondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// When the fill is complete: the end of the pour, or the fall of a placed fill to the orifice.
+// When the fill is complete: the end of the pour, or the collapse of a placed lattice (its top
+// falls by about a third of the fill height).
 double FillEndS(const core::Scene& model, const DischargeSettings& s) {
-  if (s.fill == DischargeSettings::Fill::kPour) return s.feed.start_s + s.feed.DurationS();
+  if (s.fill == DischargeSettings::Fill::kPour) return s.feed.EndS();
   const double g = std::sqrt(Dot(model.gravity_m_s2, model.gravity_m_s2));
-  return std::sqrt(2 * FeedRegion(model, s).max_m.z / g);
+  return std::sqrt(2 * FillTopM(model, s) / 3 / g);
 }
 
 core::Simulation::Observer Every(const core::Simulation& sim, double interval_s,
@@ -87,15 +88,18 @@ std::unique_ptr<core::Simulation> OpenGateNow(core::Scene scene, const core::Sim
 
 struct DischargeEnd {
   bool empty = false;
+  bool done = false;  // empty, or discharge_fraction of the fill is out
   bool stalled = false;
   core::RunSummary run;
 };
 
-// Samples the outflow from t0 on until the hopper is empty, the outflow stalls or time is up.
-DischargeEnd Discharge(core::Simulation& sim, const DischargeSettings& s, const RunHooks& hooks,
-                       OutflowRecorder* recorder) {
+// Samples the outflow from t0 on until discharge_fraction of the fill is out (nothing after it
+// enters the metrics), the outflow stalls or time is up.
+DischargeEnd Discharge(core::Simulation& sim, const DischargeSettings& s, double fill_kg,
+                       const RunHooks& hooks, OutflowRecorder* recorder) {
   DischargeEnd end;
   const double t0 = sim.time_s();
+  const double done_kg = s.analysis.discharge_fraction * fill_kg;
   double last_out_kg = recorder->total_out_kg(), last_change_s = t0;
   auto sample = [&](const core::Simulation& x) {
     recorder->Sample(x);
@@ -107,11 +111,12 @@ DischargeEnd Discharge(core::Simulation& sim, const DischargeSettings& s, const 
       hooks.progress(t, rate > 0 ? t + recorder->remaining_kg() / rate : t0 + s.max_discharge_s);
     }
     end.empty = recorder->remaining_count() == 0;
+    end.done = end.empty || out_kg >= done_kg;
     end.stalled = t - last_change_s > s.stall_s;
-    return !end.empty && !end.stalled;
+    return !end.done && !end.stalled;
   };
   end.run = sim.Run(s.max_discharge_s, Every(sim, s.sample_interval_s, sample));
-  if (!end.empty && !end.stalled && end.run.ok()) recorder->Sample(sim);
+  if (!end.done && !end.stalled && end.run.ok()) recorder->Sample(sim);
   return end;
 }
 
@@ -126,10 +131,11 @@ void Classify(const DischargeEnd& end, const OutflowRecorder& recorder,
     out->message = end.run.message;
     return;
   }
-  if (end.empty || nearly_empty) {
+  if (end.done || nearly_empty) {
     out->status = "ok";
     if (!end.empty)
-      os << recorder.remaining_count() << " grains (" << left << " kg) stayed in the hopper";
+      os << recorder.remaining_count() << " grains (" << left << " kg) still in the hopper when "
+         << (end.done ? "discharge_fraction of the fill was out" : "the outflow stalled");
   } else {
     out->status = end.stalled ? "jammed" : "not_empty";
     os << (end.stalled ? "no outflow for " : "time up after ")
@@ -167,7 +173,7 @@ DischargeRun RunDischarge(const core::Scene& model, const DischargeSettings& set
     out.fill_mass_kg = recorder.remaining_kg();
     out.bulk_density_kg_m3 = HopperBulkDensity(sim->particles(), settings.hopper,
                                                FeedMaxDiameter(model, settings.feed));
-    const DischargeEnd end = Discharge(*sim, settings, hooks, &recorder);
+    const DischargeEnd end = Discharge(*sim, settings, out.fill_mass_kg, hooks, &recorder);
     Classify(end, recorder, settings, &out);
     out.samples = recorder.samples();
     DischargeOptions options = settings.analysis;

@@ -5,13 +5,16 @@
 #include <numbers>
 #include <vector>
 
+#include "core/random.h"
+
 namespace demcal::objectives {
 
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kPlacedSolidFraction = 0.2;
 constexpr double kBulkSolidFraction = 0.6;
+// Placed lattice: spacing and jitter in largest diameters d; wall clearance of a centre.
+constexpr double kLatticeSpacing = 1.1, kJitter = 0.04 * kLatticeSpacing, kClearance = 0.55;
 
 double SolidVolume(const core::Scene& model, const Feed& feed) {
   double volume = 0;
@@ -28,20 +31,72 @@ double HopperRadius(const HopperGeometry& h, double z_m) {
   return z_m >= cone ? r1 : r0 + (r1 - r0) * z_m / cone;
 }
 
+// True when a grain centred at (ρ, z) clears the closed gate (z = 0), the cone and the cylinder
+// (or, above the rim, stays inside its footprint) by `clear_m`.
+bool InsideHopper(const HopperGeometry& h, double rho_m, double z_m, double clear_m) {
+  const double half_angle = h.cone_half_angle_deg * kPi / 180;
+  // Distance to the cone's generatrix through the orifice edge, positive inside.
+  const double to_cone = z_m * std::sin(half_angle) -
+                         (rho_m - 0.5 * h.orifice_diameter_m) * std::cos(half_angle);
+  return z_m >= clear_m && to_cone >= clear_m && rho_m <= 0.5 * h.top_diameter_m - clear_m;
+}
+
+// Lattice sites of a placed fill, bottom layer first, until `count` are found.
+std::vector<core::Vec3> LatticeSites(const HopperGeometry& h, double d_m, int64_t count) {
+  const double a = kLatticeSpacing * d_m, clear = kClearance * d_m;
+  const int half_n = static_cast<int>(std::ceil(0.5 * h.top_diameter_m / a));
+  std::vector<core::Vec3> sites;
+  for (double z = clear; static_cast<int64_t>(sites.size()) < count; z += a)
+    for (int i = -half_n; i <= half_n; ++i)
+      for (int j = -half_n; j <= half_n; ++j)
+        if (static_cast<int64_t>(sites.size()) < count &&
+            InsideHopper(h, std::hypot(i * a, j * a), z, clear))
+          sites.push_back({i * a, j * a, z});
+  return sites;
+}
+
+int64_t PlacedTotal(const core::Scene& model, const Feed& feed) {
+  int64_t n = 0;
+  for (const FeedComponent& c : feed.components) n += PlacedCount(model, feed, c);
+  return n;
+}
+
 }  // namespace
 
 core::InsertionRegion FeedRegion(const core::Scene& model, const DischargeSettings& s) {
   const double d = FeedMaxDiameter(model, s.feed);
   const double z0 = s.hopper.TopM() + d;
-  if (s.fill == DischargeSettings::Fill::kPour) {
-    const double diameter =
-        s.feed_diameter_m > 0 ? s.feed_diameter_m : 0.6 * s.hopper.top_diameter_m;
-    return core::InsertionRegion::Cylinder({0, 0, 0}, 0.5 * diameter, z0,
-                                           z0 + std::max(6 * d, 0.01));
+  const double diameter =
+      s.feed_diameter_m > 0 ? s.feed_diameter_m : 0.6 * s.hopper.top_diameter_m;
+  return core::InsertionRegion::Cylinder({0, 0, 0}, 0.5 * diameter, z0,
+                                         z0 + std::max(6 * d, 0.01));
+}
+
+std::vector<core::ParticleSpec> PlacedFill(const core::Scene& model, const DischargeSettings& s,
+                                           uint64_t seed) {
+  const double d = FeedMaxDiameter(model, s.feed);
+  std::vector<int> species;
+  for (const FeedComponent& c : s.feed.components)
+    species.insert(species.end(), PlacedCount(model, s.feed, c), c.species);
+  core::Rng rng(core::DeriveSeed(seed, 0x706c616365ull));  // "place"
+  for (size_t i = species.size(); i > 1; --i)  // Fisher–Yates
+    std::swap(species[i - 1], species[static_cast<size_t>(rng.Uniform() * i)]);
+  const std::vector<core::Vec3> sites =
+      LatticeSites(s.hopper, d, static_cast<int64_t>(species.size()));
+  std::vector<core::ParticleSpec> grains;
+  for (size_t k = 0; k < sites.size(); ++k) {
+    const core::Vec3 jitter{rng.Uniform(-kJitter, kJitter), rng.Uniform(-kJitter, kJitter),
+                            rng.Uniform(-kJitter, kJitter)};
+    grains.push_back({.species = species[k], .position_m = sites[k] + jitter * d});
   }
-  const double a = 0.5 * s.hopper.top_diameter_m / std::numbers::sqrt2 - d;
-  const double height = SolidVolume(model, s.feed) / kPlacedSolidFraction / (4 * a * a);
-  return core::InsertionRegion::Box({-a, -a, z0}, {a, a, z0 + std::max(height, 2 * d)});
+  return grains;
+}
+
+double FillTopM(const core::Scene& model, const DischargeSettings& s) {
+  if (s.fill == DischargeSettings::Fill::kPour) return FeedRegion(model, s).max_m.z;
+  const double d = FeedMaxDiameter(model, s.feed);
+  const std::vector<core::Vec3> sites = LatticeSites(s.hopper, d, PlacedTotal(model, s.feed));
+  return (sites.empty() ? 0.0 : sites.back().z) + d;
 }
 
 int64_t PlacedCount(const core::Scene& model, const Feed& feed, const FeedComponent& c) {
@@ -68,12 +123,15 @@ bool FitsInHopper(const core::Scene& model, const DischargeSettings& s, std::ost
 }
 
 bool FitsInCatchBin(const core::Scene& model, const DischargeSettings& s, std::ostream* os) {
-  const double bulk = SolidVolume(model, s.feed) / kBulkSolidFraction;
+  // Only discharge_fraction of the fill leaves before the run stops.
+  const double bulk =
+      s.analysis.discharge_fraction * SolidVolume(model, s.feed) / kBulkSolidFraction;
   const double width = 1.5 * s.hopper.top_diameter_m;  // the catch bin's side
   const double room = width * width * s.catch_depth_m;
   if (bulk <= 0.4 * room) return true;
   *os << "discharge.catch_depth_m = " << s.catch_depth_m << " leaves a catch bin of " << room
-      << " m3 under the orifice, too small for the heap of the discharged feed (about " << bulk
+      << " m3 under the orifice, too small for the heap of the discharged feed (discharge_fraction "
+      << "of it, about " << bulk
       << " m3, at most 40% of the bin): increase catch_depth_m to at least "
       << bulk / (0.4 * width * width) << " m";
   return false;
