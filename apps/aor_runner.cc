@@ -80,18 +80,15 @@ int RunAorExperiment(const ExperimentFile& file, const ExperimentContext& contex
   if (!PrepareExperiment(file, context, ParseAorSection, BuildScene, &prepared, log))
     return kExitInvalidInput;
   const AorSettings& settings = prepared.settings;
-  std::vector<AorRun> runs(context.replicates);
-  std::vector<std::string> output_errors(context.replicates);
-  ReplicateProgress progress(log, "aor", context.replicates, !context.quiet);
-  objectives::RunReplicates(context.replicates, file.seed, context.threads, [&](int r, uint64_t seed) {
-    const objectives::RunHooks hooks =
-        ReplicateHooks(progress, r, context.out_dir, "heap", &output_errors[r]);
-    runs[r] = objectives::RunAor(prepared.model, settings, seed, hooks);
-    progress.Finish(r);
-    if (runs[r].angle.ok)
-      objectives::WriteSvg(context.out_dir + "/heap_profile_r" + std::to_string(r) + ".svg",
-                           ProfilePlot(settings, runs[r]), &output_errors[r]);
-  });
+  std::vector<std::string> output_errors;
+  const std::vector<AorRun> runs = RunPreparedReplicates(
+      file, context, prepared, "heap", objectives::RunAor,
+      [&](int r, const AorRun& run, std::string* error) {
+        if (run.angle.ok)
+          objectives::WriteSvg(context.out_dir + "/heap_profile_r" + std::to_string(r) + ".svg",
+                               ProfilePlot(settings, run), error);
+      },
+      &output_errors, log);
   std::vector<double> angles;
   nlohmann::ordered_json result = ResultHeader(file, context);
   result["heap"] = settings.heap == AorSettings::Heap::kSlot ? "slot" : "conical";

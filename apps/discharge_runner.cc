@@ -99,16 +99,13 @@ int RunDischargeExperiment(const ExperimentFile& file, const ExperimentContext& 
     return kExitInvalidInput;
   const DischargeSettings& settings = prepared.settings;
   const std::vector<std::string> names = SpeciesNames(prepared.model);
-  std::vector<DischargeRun> runs(context.replicates);
-  std::vector<std::string> output_errors(context.replicates);
-  ReplicateProgress progress(log, "discharge", context.replicates, !context.quiet);
-  objectives::RunReplicates(context.replicates, file.seed, context.threads, [&](int r, uint64_t seed) {
-    const objectives::RunHooks hooks =
-        ReplicateHooks(progress, r, context.out_dir, "hopper", &output_errors[r]);
-    runs[r] = objectives::RunDischarge(prepared.model, settings, seed, hooks);
-    progress.Finish(r);
-    WriteRunTables(context.out_dir, r, runs[r], names, &output_errors[r]);
-  });
+  std::vector<std::string> output_errors;
+  const std::vector<DischargeRun> runs = RunPreparedReplicates(
+      file, context, prepared, "hopper", objectives::RunDischarge,
+      [&](int r, const DischargeRun& run, std::string* error) {
+        WriteRunTables(context.out_dir, r, run, names, error);
+      },
+      &output_errors, log);
   ordered_json result = ResultHeader(file, context);
   result["hopper"] = HopperJson(settings);
   int ok = 0;

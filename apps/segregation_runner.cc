@@ -61,18 +61,13 @@ int RunSegregationExperiment(const ExperimentFile& file, const ExperimentContext
     return kExitInvalidInput;
   const SegregationSettings& settings = prepared.settings;
   const std::vector<std::string> names = SpeciesNames(prepared.model);
-  std::vector<SegregationRun> runs(context.replicates);
-  std::vector<std::string> output_errors(context.replicates);
-  ReplicateProgress progress(log, "segregation", context.replicates, !context.quiet);
-  objectives::RunReplicates(
-      context.replicates, file.seed, context.threads, [&](int r, uint64_t seed) {
-        const objectives::RunHooks hooks =
-            ReplicateHooks(progress, r, context.out_dir, "heap", &output_errors[r]);
-        runs[r] = objectives::RunSegregation(prepared.model, settings, seed, hooks);
-        progress.Finish(r);
-        if (output_errors[r].empty())
-          WriteRunFiles(context.out_dir, r, runs[r], names, &output_errors[r]);
-      });
+  std::vector<std::string> output_errors;
+  const std::vector<SegregationRun> runs = RunPreparedReplicates(
+      file, context, prepared, "heap", objectives::RunSegregation,
+      [&](int r, const SegregationRun& run, std::string* error) {
+        if (error->empty()) WriteRunFiles(context.out_dir, r, run, names, error);
+      },
+      &output_errors, log);
   nlohmann::ordered_json result = ResultHeader(file, context);
   result.update(SegregationResultJson(settings, names, runs));
   std::string error = FirstError(output_errors);
