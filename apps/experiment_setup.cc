@@ -5,9 +5,8 @@
 
 namespace demcal::apps {
 
-objectives::RunHooks ReplicateHooks(ReplicateProgress& progress, int r,
-                                    const std::string& out_dir, const std::string& vtk_stem,
-                                    std::string* output_error) {
+objectives::RunHooks ReplicateHooks(ReplicateProgress& progress, int r, const std::string& out_dir,
+                                    const std::string& vtk_stem, std::string* output_error) {
   objectives::RunHooks hooks;
   hooks.progress = [&progress, r](double t, double end) { progress.Update(r, t, end); };
   const std::string path = out_dir + "/" + vtk_stem + "_r" + std::to_string(r) + ".vtk";

@@ -45,8 +45,8 @@ bool PrepareExperiment(const ExperimentFile& file, const ExperimentContext& cont
     return false;
   }
   if (!build(out->model, out->settings, file.seed).IsValid(&error)) {
-    log << "error: " << file.source << ": the " << file.experiment
-        << " scene is invalid: " << error << "\n";
+    log << "error: " << file.source << ": the " << file.experiment << " scene is invalid: " << error
+        << "\n";
     return false;
   }
   return true;
@@ -54,9 +54,8 @@ bool PrepareExperiment(const ExperimentFile& file, const ExperimentContext& cont
 
 // Hooks of replicate r: progress into `progress`, and the final state written to
 // DIR/<vtk_stem>_r<r>.vtk (a failure goes to *output_error; the run itself goes on).
-objectives::RunHooks ReplicateHooks(ReplicateProgress& progress, int r,
-                                    const std::string& out_dir, const std::string& vtk_stem,
-                                    std::string* output_error);
+objectives::RunHooks ReplicateHooks(ReplicateProgress& progress, int r, const std::string& out_dir,
+                                    const std::string& vtk_stem, std::string* output_error);
 
 // Runs context.replicates replicates side by side (one per worker): run(model, settings, seed,
 // hooks) reporting to one progress line and leaving its final state as
@@ -68,7 +67,8 @@ auto RunPreparedReplicates(const ExperimentFile& file, const ExperimentContext& 
                            const PreparedExperiment<Settings>& prepared,
                            const std::string& vtk_stem, RunFn run, Finish finish,
                            std::vector<std::string>* output_errors, std::ostream& log) {
-  using Result = decltype(run(prepared.model, prepared.settings, uint64_t{}, objectives::RunHooks{}));
+  using Result =
+      decltype(run(prepared.model, prepared.settings, uint64_t{}, objectives::RunHooks{}));
   std::vector<Result> results(context.replicates);
   output_errors->assign(context.replicates, "");
   ReplicateProgress progress(log, file.experiment, context.replicates, !context.quiet);

@@ -1,7 +1,8 @@
 #pragma once
-// Reading a JSON input file and writing a result file. Reading: syntax errors are reported with line and column, and a key that
-// appears twice in one object is an error (nlohmann would silently keep the last one, which
-// makes a file with two "seed"s ambiguous). Messages start with the file name.
+// Reading a JSON input file and writing a result file. Reading: syntax errors are reported with
+// line and column, and a key that appears twice in one object is an error (nlohmann would
+// silently keep the last one, which makes a file with two "seed"s ambiguous). Messages start
+// with the file name.
 #include <nlohmann/json.hpp>
 #include <string>
 

@@ -40,9 +40,9 @@ using namespace demcal::objectives;
 namespace {
 
 constexpr double kD = 0.004, kDensity = 2500, kG = 9.81;
-constexpr double kWallGap = 6;             // bin wall to orifice edge, in d
-constexpr double kHead = 1.2;              // fill left above the orifice at the stop, in D
-constexpr double kSkip = 350, kOut = 1000; // grains out: start of the fit, end of the run
+constexpr double kWallGap = 6;              // bin wall to orifice edge, in d
+constexpr double kHead = 1.2;               // fill left above the orifice at the stop, in D
+constexpr double kSkip = 350, kOut = 1000;  // grains out: start of the fit, end of the run
 constexpr int kSeeds = 2;
 const std::vector<double> kRatios = {5, 7, 9.5, 12};  // D/d
 
@@ -76,8 +76,10 @@ DischargeSettings FlatBin(double ratio) {
   s.feed.components = {{0, 1.0}};
   s.feed.mass_kg = grains * grain_kg;
   s.feed.mass_rate_kg_s = 1;
-  s.hopper = {.top_diameter_m = bin, .orifice_diameter_m = ratio * kD,
-              .cone_half_angle_deg = 89, .cylinder_height_m = (fill_height_d + 1) * kD};
+  s.hopper = {.top_diameter_m = bin,
+              .orifice_diameter_m = ratio * kD,
+              .cone_half_angle_deg = 89,
+              .cylinder_height_m = (fill_height_d + 1) * kD};
   s.catch_depth_m = (catch_depth_d + 1) * kD;
   s.wall_material = 1;
   s.settle.specific_kinetic_J_kg = 1e-4;
@@ -115,10 +117,11 @@ TEST_CASE("discharge: Beverloo's law with k in [1, 2] from a flat-bottomed bin",
       INFO("D/d = " << kRatios[i] << ", seed " << run.seed << ": " << run.status << " "
                     << run.message << " " << run.metrics.message);
       REQUIRE(run.ok());
-      std::printf("Beverloo check: D/d = %4.1f  W = %.4f kg/s  rho_b = %.0f kg/m3  "
-                  "(%d grains, %.1f s wall)\n",
-                  kRatios[i], run.metrics.mass_flow_kg_s, run.bulk_density_kg_m3,
-                  static_cast<int>(run.particles), run.wall_time_s);
+      std::printf(
+          "Beverloo check: D/d = %4.1f  W = %.4f kg/s  rho_b = %.0f kg/m3  "
+          "(%d grains, %.1f s wall)\n",
+          kRatios[i], run.metrics.mass_flow_kg_s, run.bulk_density_kg_m3,
+          static_cast<int>(run.particles), run.wall_time_s);
       flow += run.metrics.mass_flow_kg_s / kSeeds;
       bulk_density += run.bulk_density_kg_m3 / runs;
     }
@@ -128,8 +131,7 @@ TEST_CASE("discharge: Beverloo's law with k in [1, 2] from a flat-bottomed bin",
   CHECK(bulk_density < 0.66 * kDensity);
   const BeverlooFit fit = FitBeverloo(points, bulk_density, kD, kG);
   std::printf("Beverloo fit (seeds from %llu): C = %.3f  k = %.2f  rms relative residual = %.3f\n",
-              static_cast<unsigned long long>(base_seed), fit.C, fit.k,
-              fit.rms_relative_residual);
+              static_cast<unsigned long long>(base_seed), fit.C, fit.k, fit.rms_relative_residual);
   INFO(fit.message);
   REQUIRE(fit.ok);
   CHECK(fit.k >= 1.0);

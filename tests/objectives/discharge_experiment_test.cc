@@ -111,7 +111,8 @@ TEST_CASE("placed fill: a loose lattice inside the hopper, clear of gate, cone a
     const double rho = std::hypot(x.x, x.y);
     gate = std::min(gate, x.z / d - 0.5);
     cylinder = std::min(cylinder, (r1 - rho) / d - 0.5);
-    cone = std::min(cone, (x.z * std::sin(half_angle) - (rho - r0) * std::cos(half_angle)) / d - 0.5);
+    const double to_cone = x.z * std::sin(half_angle) - (rho - r0) * std::cos(half_angle);
+    cone = std::min(cone, to_cone / d - 0.5);
     for (size_t j = 0; j < i; ++j) gap = std::min(gap, Norm(fill[j].position_m - x) / d - 1);
     top = std::max(top, x.z);
   }
