@@ -35,8 +35,27 @@ struct RigidState {
 
 enum class DriftScheme { kMidpoint, kRichardson, kFrozen };
 
+namespace rigid_detail {
+// Defined here (not in rigid_body.cc) because they run once or more per clump per step and
+// must inline into the integration loops.
+inline Vec3 Scale(const Vec3& v, const Vec3& by) { return {v.x * by.x, v.y * by.y, v.z * by.z}; }
+inline Vec3 Reciprocal(const Vec3& v) { return {1 / v.x, 1 / v.y, 1 / v.z}; }
+
+// ω = A I⁻¹ Aᵀ L with the reciprocal moments precomputed.
+inline Vec3 Omega(const Quaternion& q, const Vec3& l, const Vec3& inverse_inertia) {
+  return Rotate(q, Scale(InverseRotate(q, l), inverse_inertia));
+}
+
+inline Quaternion Turn(const Vec3& omega, double dt, const Quaternion& q) {
+  return Quaternion::FromRotationVector(omega * dt) * q;
+}
+}  // namespace rigid_detail
+
 // ω in the space frame: A I⁻¹ Aᵀ L.
-Vec3 AngularVelocity(const RigidState& state, const Vec3& principal_inertia_kg_m2);
+inline Vec3 AngularVelocity(const RigidState& state, const Vec3& principal_inertia_kg_m2) {
+  return rigid_detail::Omega(state.orientation, state.angular_momentum_kg_m2_s,
+                             rigid_detail::Reciprocal(principal_inertia_kg_m2));
+}
 
 // Rotational kinetic energy ½ Σ L_b,i² / I_i (J), L_b = Aᵀ L.
 double RotationalKineticEnergy(const RigidState& state, const Vec3& principal_inertia_kg_m2);
@@ -46,10 +65,36 @@ RigidState StateFromAngularVelocity(const Quaternion& orientation, const Vec3& o
                                     const Vec3& principal_inertia_kg_m2);
 
 // L += ½ τ Δt.
-void HalfKick(RigidState& state, const Vec3& torque_N_m, double dt_s);
+inline void HalfKick(RigidState& state, const Vec3& torque_N_m, double dt_s) {
+  state.angular_momentum_kg_m2_s += (0.5 * dt_s) * torque_N_m;
+}
 
 // Rotates the orientation over Δt at fixed L and renormalises it.
-void Drift(RigidState& state, const Vec3& principal_inertia_kg_m2, double dt_s,
-           DriftScheme scheme = DriftScheme::kMidpoint);
+inline void Drift(RigidState& state, const Vec3& principal_inertia_kg_m2, double dt_s,
+                  DriftScheme scheme = DriftScheme::kMidpoint) {
+  using rigid_detail::Omega, rigid_detail::Turn;
+  const Quaternion q = state.orientation;
+  const Vec3& l = state.angular_momentum_kg_m2_s;
+  const Vec3 inverse_inertia = rigid_detail::Reciprocal(principal_inertia_kg_m2);
+  const Vec3 w0 = Omega(q, l, inverse_inertia);
+  Quaternion next;
+  switch (scheme) {
+    case DriftScheme::kFrozen:
+      next = Turn(w0, dt_s, q);
+      break;
+    case DriftScheme::kMidpoint:
+      next = Turn(Omega(Turn(w0, 0.5 * dt_s, q), l, inverse_inertia), dt_s, q);
+      break;
+    case DriftScheme::kRichardson: {
+      const Quaternion full = Turn(w0, dt_s, q);
+      const Quaternion half = Turn(w0, 0.5 * dt_s, q);
+      const Quaternion two_halves = Turn(Omega(half, l, inverse_inertia), 0.5 * dt_s, half);
+      next = {2 * two_halves.w - full.w, 2 * two_halves.x - full.x, 2 * two_halves.y - full.y,
+              2 * two_halves.z - full.z};
+      break;
+    }
+  }
+  state.orientation = Normalized(next);
+}
 
 }  // namespace demcal::core
