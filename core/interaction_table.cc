@@ -11,6 +11,12 @@ double BetaFromRestitution(double e) {
   return l / std::sqrt(l * l + std::numbers::pi * std::numbers::pi);
 }
 
+ResolvedPair MakeResolvedPair(double e_star, double g_star, double beta, double mu_s, double mu_r,
+                              double gamma) {
+  const double k = gamma > 0 ? std::sqrt(4.0 * std::numbers::pi * gamma / e_star) : 0.0;
+  return {e_star, g_star, beta, mu_s, mu_r, gamma, k};
+}
+
 InteractionTable::InteractionTable(const std::vector<Material>& materials,
                                    const std::vector<PairParameters>& pairs)
     : n_(static_cast<int>(materials.size())), resolved_(pairs.size()) {
@@ -23,8 +29,9 @@ InteractionTable::InteractionTable(const std::vector<Material>& materials,
                            (1 - b.poisson_ratio * b.poisson_ratio) / b.youngs_modulus_Pa;
       const double inv_g = 2 * (2 - a.poisson_ratio) * (1 + a.poisson_ratio) / a.youngs_modulus_Pa +
                            2 * (2 - b.poisson_ratio) * (1 + b.poisson_ratio) / b.youngs_modulus_Pa;
-      resolved_[i * n_ + j] = {1.0 / inv_e,          1.0 / inv_g,         BetaFromRestitution(p.restitution),
-                               p.sliding_friction,   p.rolling_friction,  p.interfacial_energy_J_m2};
+      resolved_[i * n_ + j] =
+          MakeResolvedPair(1.0 / inv_e, 1.0 / inv_g, BetaFromRestitution(p.restitution),
+                           p.sliding_friction, p.rolling_friction, p.interfacial_energy_J_m2);
     }
   }
 }

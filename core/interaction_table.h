@@ -28,7 +28,13 @@ struct ResolvedPair {
   double sliding_friction;
   double rolling_friction;
   double interfacial_energy_J_m2;
+  double jkr_adhesion_length;  // k = sqrt(4πΓ/E*) (m^½), JKR's δ(a) = a²/R* − k√a; 0 without Γ
 };
+
+// A resolved pair with its derived JKR constant (the one way to build one).
+ResolvedPair MakeResolvedPair(double effective_youngs_Pa, double effective_shear_Pa, double beta,
+                              double sliding_friction, double rolling_friction,
+                              double interfacial_energy_J_m2);
 
 class InteractionTable {
  public:

@@ -25,7 +25,7 @@ double ForceAt(double delta) {
   g.overlap_m = delta;
   g.effective_radius_m = kR;
   g.effective_mass_kg = 1e-5;
-  ResolvedPair p{kE, kE, 0.0, 0.5, 0.0, kGamma};
+  const ResolvedPair p = MakeResolvedPair(kE, kE, 0.0, 0.5, 0.0, kGamma);
   ContactHistory h{};
   return JkrNormal::Compute(g, p, h).elastic_N;
 }
@@ -90,7 +90,7 @@ TEST_CASE("Gamma = 0 gives exactly Hertz-Mindlin", "[unit][jkr]") {
   g.effective_radius_m = kR;
   g.effective_mass_kg = 1e-5;
   g.relative_velocity_m_s = {0.01, 0, -0.1};
-  ResolvedPair p{kE, kE, -0.2, 0.5, 0.1, 0.0};
+  const ResolvedPair p = MakeResolvedPair(kE, kE, -0.2, 0.5, 0.1, 0.0);
   ContactHistory hist_j{}, hist_h{};
   const NormalForce j = JkrNormal::Compute(g, p, hist_j), h = HertzMindlinNormal::Compute(g, p, hist_h);
   CHECK(j.total_N == h.total_N);
