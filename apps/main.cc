@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/calibrate_command.h"
 #include "apps/command.h"
 #include "apps/experiment_command.h"
 #include "apps/exit_codes.h"
@@ -17,6 +18,7 @@ namespace {
 constexpr demcal::apps::CommandFactory kCommands[] = {
     &demcal::apps::AddSimulateCommand,
     &demcal::apps::AddExperimentCommand,
+    &demcal::apps::AddCalibrateCommand,
 };
 
 }  // namespace

@@ -29,9 +29,10 @@ struct ResolvedPair {
   double rolling_friction;
   double interfacial_energy_J_m2;
   double jkr_adhesion_length;  // k = sqrt(4πΓ/E*) (m^½), JKR's δ(a) = a²/R* − k√a; 0 without Γ
+  double tangential_damping_ratio;  // sqrt(S_t/S_n) = sqrt(4G*/E*): c_t = c_n × this
 };
 
-// A resolved pair with its derived JKR constant (the one way to build one).
+// A resolved pair with its derived constants (the one way to build one).
 ResolvedPair MakeResolvedPair(double effective_youngs_Pa, double effective_shear_Pa, double beta,
                               double sliding_friction, double rolling_friction,
                               double interfacial_energy_J_m2);

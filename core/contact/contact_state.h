@@ -42,6 +42,7 @@ struct NormalForce {
   double contact_radius_m;  // a = sqrt(R* δ) for Hertz
   double friction_load_N;   // what the Coulomb limit μ_s multiplies
   double rolling_load_N;    // what the rolling limit μ_r multiplies
+  double damping_N_s_m;     // normal dashpot coefficient c_n = −2 sqrt(5/6) β sqrt(S_n m*) >= 0
 };
 
 // What a contact contributes: force on i (j gets the opposite) and a torque on each body.

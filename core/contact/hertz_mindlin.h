@@ -26,7 +26,7 @@ struct HertzMindlinNormal {
     const double elastic = secant * g.overlap_m;
     const double total = elastic - c_n * v_n;
     // LIGGGHTS caps friction with |F_n| (damping included) and rolling with the elastic part.
-    return {elastic, total, s_n, secant, a, std::abs(total), elastic};
+    return {elastic, total, s_n, secant, a, std::abs(total), elastic, c_n};
   }
 };
 

@@ -148,6 +148,7 @@ struct JkrNormal {
     n.contact_radius_m = a;
     n.friction_load_N = hertz;
     n.rolling_load_N = hertz;
+    n.damping_N_s_m = c_n;
     return n;
   }
 };

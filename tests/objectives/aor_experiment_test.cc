@@ -64,7 +64,9 @@ void CheckSteeper(const Summary& high, const Summary& low) {
 // Zhou et al. 2001 (Phys. Rev. E 64:021301) and physics.md §4.3: the angle of repose increases
 // with sliding and rolling friction; adhesion (JKR Γ) steepens heaps too (paper Fig. 6). For
 // spheres, rolling resistance dominates (Zhou et al. 2002's fit has θ → 0 as μ_r → 0), so the
-// sliding-friction effect is checked at a moderate μ_r.
+// sliding-friction effect is checked at a moderate μ_r, and from a slippery μ_s = 0.15: between
+// 0.3 and 0.9 it is only ≈ 2° for spheres (Zhou et al. 2001: the angle saturates above μ_s ≈ 0.4),
+// too close to three replicates' noise to be told apart reliably.
 TEST_CASE("the repose angle grows with sliding friction, rolling friction and Γ", "[dem]") {
   const AorSettings heap = SmallSlotHeap();
   const int replicates = 3;
@@ -76,7 +78,7 @@ TEST_CASE("the repose angle grows with sliding friction, rolling friction and Γ
   CHECK(mass == Approx(heap.feed.mass_kg).epsilon(0.02));
 
   const Summary base = Angles(Model(0.3, 0.1, 0), heap, replicates);
-  CheckSteeper(Angles(Model(0.9, 0.1, 0), heap, replicates), base);
+  CheckSteeper(Angles(Model(0.9, 0.1, 0), heap, replicates), Angles(Model(0.15, 0.1, 0), heap, replicates));
   CheckSteeper(Angles(Model(0.3, 0.3, 0), heap, replicates), base);
   // Γ for a Cohesion number of 0.02 between two 3 mm grains (E* = E/(2(1 − ν²))).
   const double e_star = 5e6 / (2 * (1 - 0.25 * 0.25));

@@ -1,0 +1,66 @@
+#pragma once
+// EvaluationJournal: every finished replicate run of a calibration, appended to a JSON-lines file
+// as it completes (one line, flushed and fsync'ed), so a calibration killed at any moment resumes
+// without losing or repeating finished work: the optimisers are deterministic, so a resumed study
+// asks for the same candidates again and finds them here (exact match on the parameter values
+// and the replicate's seed).
+//
+// File: the first line is a header {"format": "demcal-journal/1", "study": <fingerprint>}; then
+// one record per replicate run: {"parameters": [...], "replicate": r, "seed": s, "status": "ok",
+// "value": x, "wall_time_s": t}. A line cut short by a kill is dropped on reopening. A journal of
+// another study (a different fingerprint) is refused, never mixed in.
+//
+//   EvaluationJournal journal;
+//   if (!journal.Open(dir + "/journal.jsonl", fingerprint, &error)) ...;
+//   if (const ReplicateRecord* done = journal.Find(values, r, seed)) use(*done);
+//   else journal.Append(record, &error);
+//
+// Thread-safety: Find and Append may be called from several threads (replicates side by side).
+#include <cstdint>
+#include <map>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace demcal::calibrate {
+
+struct ReplicateRecord {
+  std::vector<double> parameters;  // SI values, in the parameter space's order
+  int replicate = 0;
+  uint64_t seed = 0;
+  std::string status = "ok";       // "ok", or why the run gave no value
+  double value = 0;                // the observable (meaningful when status == "ok")
+  double wall_time_s = 0;
+  bool ok() const { return status == "ok"; }
+};
+
+class EvaluationJournal {
+ public:
+  EvaluationJournal() = default;
+  ~EvaluationJournal();
+  EvaluationJournal(const EvaluationJournal&) = delete;
+  EvaluationJournal& operator=(const EvaluationJournal&) = delete;
+
+  // Opens (creating it if absent) and loads the journal; false with a message naming the file
+  // if it cannot be read or written, or belongs to another study.
+  bool Open(const std::string& path, const std::string& fingerprint, std::string* error);
+
+  // The record of this candidate's replicate, or nullptr. The pointer stays valid.
+  const ReplicateRecord* Find(const std::vector<double>& parameters, int replicate,
+                              uint64_t seed) const;
+  bool Append(const ReplicateRecord& record, std::string* error);
+
+  size_t LoadedRecords() const { return loaded_; }  // records found on opening
+  size_t Records() const;
+  const std::string& path() const { return path_; }
+
+ private:
+  using Key = std::pair<std::vector<double>, int>;
+  std::string path_;
+  int fd_ = -1;
+  size_t loaded_ = 0;
+  mutable std::mutex mutex_;
+  std::map<Key, ReplicateRecord> records_;
+};
+
+}  // namespace demcal::calibrate

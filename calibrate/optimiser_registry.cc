@@ -1,0 +1,61 @@
+#include <cmath>
+
+#include "calibrate/optimiser.h"
+
+namespace demcal::calibrate {
+namespace {
+
+struct Entry {
+  const char* name;
+  Optimiser optimise;
+};
+
+constexpr Entry kOptimisers[] = {
+    {"bracket", BracketOptimise},
+    {"nlopt_bobyqa", NloptBobyqa},
+    {"nlopt_cobyla", NloptCobyla},
+    {"nlopt_neldermead", NloptNelderMead},
+};
+
+}  // namespace
+
+bool TrialResult::WithinNoise() const {
+  if (!ok) return false;
+  for (size_t k = 0; k < residuals.size(); ++k) {
+    const double n = k < noise.size() ? noise[k] : 0.0;
+    if (std::abs(residuals[k]) > std::sqrt(1 + n * n)) return false;
+  }
+  return true;
+}
+
+double TrialResult::Cost() const {
+  double cost = 0;
+  for (double r : residuals) cost += r * r;
+  return cost;
+}
+
+bool OptimiserOptions::IsValid(std::string* error) const {
+  if (max_evaluations < 1 || max_evaluations > 100000) {
+    if (error) *error = "max_evaluations: must be in [1, 100000]";
+    return false;
+  }
+  if (!(unit_tolerance > 0 && unit_tolerance < 0.5)) {
+    if (error) *error = "unit_tolerance: must be in (0, 0.5)";
+    return false;
+  }
+  return true;
+}
+
+bool FindOptimiser(const std::string& name, Optimiser* out) {
+  for (const Entry& e : kOptimisers)
+    if (name == e.name) return *out = e.optimise, true;
+  return false;
+}
+
+std::vector<std::string> OptimiserNames() {
+  std::vector<std::string> names;
+  for (const Entry& e : kOptimisers) names.push_back(e.name);
+  return names;
+}
+
+}  // namespace demcal::calibrate

@@ -1,0 +1,55 @@
+#pragma once
+// ParameterSpace: the DEM inputs a calibration varies — each a named, bounded value written into
+// one slot of the particle model (a pair property of the interaction table, both orders of the
+// pair). Optimisers work in the unit cube [0, 1]^n; a parameter on a log scale is uniform in
+// log(value) there, which suits interfacial energies spanning decades.
+//
+//   ParameterSpace space;
+//   space.parameters.push_back({"mu_r_BP", PairProperty::kRollingFriction, 0, 0, 0.02, 0.8, 0.1});
+//   std::string error;
+//   if (!space.IsValid(model, &error)) ...;
+//   space.Apply({0.35}, &model);   // BP–BP rolling friction := 0.35
+//
+// Thread-safety: immutable after set-up; Apply writes only into the model it is given.
+#include <string>
+#include <vector>
+
+#include "core/scene.h"
+
+namespace demcal::calibrate {
+
+// The pair properties a calibration can vary (the paper's Table 1 columns and Γ).
+enum class PairProperty { kSlidingFriction, kRollingFriction, kRestitution, kInterfacialEnergy };
+
+// The key used in study files ("sliding_friction", ...) and its unit ("" or "J/m2").
+const char* PairPropertyKey(PairProperty property);
+const char* PairPropertyUnit(PairProperty property);
+bool PairPropertyFromKey(const std::string& key, PairProperty* out);
+
+struct Parameter {
+  std::string name;       // unique, used in tables and journals
+  PairProperty property = PairProperty::kSlidingFriction;
+  int material_i = 0;     // the pair (indices into the model's materials); symmetric
+  int material_j = 0;
+  double lower = 0;       // bounds in SI units, lower < upper
+  double upper = 1;
+  double start = 0.5;     // first candidate, inside the bounds
+  bool log_scale = false; // uniform in log(value) in the unit cube (needs lower > 0)
+};
+
+struct ParameterSpace {
+  std::vector<Parameter> parameters;
+
+  size_t Size() const { return parameters.size(); }
+  // Names the first bad field ("parameters[1].lower") and the allowed range.
+  bool IsValid(const core::Scene& model, std::string* error) const;
+  // Writes values (SI, one per parameter) into the model's pair table.
+  void Apply(const std::vector<double>& values, core::Scene* model) const;
+  std::vector<double> ToUnit(const std::vector<double>& values) const;
+  std::vector<double> FromUnit(const std::vector<double>& unit) const;
+  std::vector<double> Start() const;
+  // "mu_r_BP=0.35, gamma_EP=0.046 J/m2"
+  std::string Describe(const std::vector<double>& values) const;
+};
+
+}  // namespace demcal::calibrate

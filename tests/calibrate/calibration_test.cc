@@ -1,0 +1,120 @@
+// Calibration twin tests (style.md habit 12): data generated from known parameters by a cheap
+// synthetic observable, recovered by the calibration; resumption from the journal.
+#include "calibrate/calibration.h"
+
+#include <catch2/catch.hpp>
+#include <filesystem>
+
+#include "synthetic_observable.h"
+
+using namespace demcal;
+using namespace demcal::calibrate;
+using testing::OneMaterialModel;
+using testing::SyntheticAngle;
+
+namespace {
+
+ParameterSpace RollingSpace() {
+  ParameterSpace space;
+  space.parameters.push_back({"mu_r", PairProperty::kRollingFriction, 0, 0, 0.02, 0.9, 0.1});
+  return space;
+}
+
+std::string FreshJournal(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / "demcal_calibration_test";
+  std::filesystem::create_directories(dir);
+  std::filesystem::remove(dir / name);
+  return (dir / name).string();
+}
+
+CalibrationSummary Run(const SyntheticAngle& angle, const ParameterSpace& space, double target,
+                       const CalibrationOptions& options, EvaluationJournal* journal = nullptr) {
+  const core::Scene model = OneMaterialModel();
+  ReplicatedEvaluator evaluator(model, space, angle, {.replicates = 3, .seed = 5}, journal);
+  return Calibrate(evaluator, space, {"angle_deg", target, 0.5, "twin"}, options);
+}
+
+}  // namespace
+
+TEST_CASE("calibration twin: bracket recovers the rolling friction that made the data", "[unit][calibrate]") {
+  SyntheticAngle angle;
+  const double truth = 0.3, measured = angle.base + angle.per_rolling * truth;  // 33 deg
+  const CalibrationSummary s = Run(angle, RollingSpace(), measured, {});
+  INFO(s.BriefReport(RollingSpace(), {"angle_deg", measured, 0.5, "twin"}));
+  REQUIRE(s.termination == "within_noise");
+  REQUIRE(s.uncertainty.size() == 1);
+  CHECK(s.uncertainty[0] > 0);
+  CHECK(std::abs(s.history[s.best].parameters[0] - truth) <= 2 * s.uncertainty[0]);
+  CHECK(s.sensitivity[0] == Approx(angle.per_rolling).epsilon(0.05));  // common random numbers
+  CHECK(s.history.size() <= 6);
+  CHECK(angle.runs == 3 * static_cast<int>(s.history.size()));
+}
+
+TEST_CASE("calibration says when the measurement is out of the bounds' reach", "[unit][calibrate]") {
+  SyntheticAngle angle;
+  const CalibrationSummary s = Run(angle, RollingSpace(), 80.0, {});  // needs mu_r ≈ 1.08 > 0.9
+  CHECK(s.termination == "out_of_range");
+  CHECK(s.message.find("outside the range") != std::string::npos);
+  CHECK(s.history[s.best].parameters[0] == Approx(0.9));  // the nearest candidate: the bound
+}
+
+TEST_CASE("calibration resumes from its journal without repeating finished runs", "[unit][calibrate]") {
+  const double measured = 38.0;
+  SyntheticAngle uninterrupted;
+  const CalibrationSummary whole = Run(uninterrupted, RollingSpace(), measured, {});
+  REQUIRE(whole.history.size() >= 3);
+
+  const std::string path = FreshJournal("resume.jsonl");
+  std::string error;
+  SyntheticAngle first, second;
+  CalibrationOptions cut;
+  cut.optimiser_options.max_evaluations = 2;  // "killed" after two candidates
+  {
+    EvaluationJournal journal;
+    REQUIRE(journal.Open(path, "twin", &error));
+    CHECK(Run(first, RollingSpace(), measured, cut, &journal).termination == "budget");
+  }
+  EvaluationJournal journal;
+  REQUIRE(journal.Open(path, "twin", &error));
+  const CalibrationSummary resumed = Run(second, RollingSpace(), measured, {}, &journal);
+  CHECK(resumed.replicates_reused == first.runs);
+  CHECK(first.runs + second.runs == uninterrupted.runs);
+  REQUIRE(resumed.best >= 0);
+  CHECK(resumed.history[resumed.best].parameters == whole.history[whole.best].parameters);
+  CHECK(resumed.history[resumed.best].summary.mean == whole.history[whole.best].summary.mean);
+}
+
+TEST_CASE("failed runs are a status, not a crash", "[unit][calibrate]") {
+  SyntheticAngle angle;
+  angle.fail_above_rolling = 0.5;  // the upper bound (0.9) never settles
+  const CalibrationSummary s = Run(angle, RollingSpace(), 45.0, {});
+  CHECK(s.termination == "failed");
+  bool saw_failure = false;
+  for (const Evaluation& e : s.history) saw_failure = saw_failure || (!e.ok() && e.status == "not_settled");
+  CHECK(saw_failure);
+}
+
+TEST_CASE("two parameters against one measurement: matched, but reported as a valley", "[unit][calibrate]") {
+  SyntheticAngle angle;
+  angle.per_sliding = 20;
+  ParameterSpace space = RollingSpace();
+  space.parameters.push_back({"mu_s", PairProperty::kSlidingFriction, 0, 0, 0.1, 1.0, 0.5});
+  CalibrationOptions options;
+  options.optimiser = "nlopt_bobyqa";
+  options.optimiser_options.max_evaluations = 40;
+  const CalibrationSummary s = Run(angle, space, 40.0, options);
+  CHECK(s.termination == "within_noise");
+  CHECK(s.uncertainty.empty());
+  CHECK(s.uncertainty_note.find("valley") != std::string::npos);
+}
+
+TEST_CASE("calibration options are checked before anything runs", "[unit][calibrate]") {
+  SyntheticAngle angle;
+  CalibrationOptions options;
+  options.optimiser = "simulated_annealing";
+  CHECK(Run(angle, RollingSpace(), 30.0, options).termination == "invalid");
+  options.optimiser = "bracket";
+  options.optimiser_options.max_evaluations = 0;
+  CHECK(Run(angle, RollingSpace(), 30.0, options).message.find("max_evaluations") != std::string::npos);
+  CHECK(angle.runs == 0);
+}

@@ -1,0 +1,83 @@
+#include "calibrate/evaluation_journal.h"
+
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+
+using demcal::calibrate::EvaluationJournal;
+using demcal::calibrate::ReplicateRecord;
+
+namespace {
+
+std::string FreshPath(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / "demcal_journal_test";
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / name).string();
+  std::filesystem::remove(path);
+  return path;
+}
+
+}  // namespace
+
+TEST_CASE("journal records read back bit-identical after reopening", "[unit][calibrate]") {
+  const std::string path = FreshPath("roundtrip.jsonl");
+  const std::vector<double> params{0.1 + 0.2, 1.0 / 3.0};  // not representable in short decimals
+  std::string error;
+  {
+    EvaluationJournal j;
+    REQUIRE(j.Open(path, "study-A", &error));
+    REQUIRE(j.Append({params, 0, 11, "ok", 33.123456789012345, 4.5}, &error));
+    REQUIRE(j.Append({params, 1, 12, "not_settled", 0, 9.0}, &error));
+  }
+  EvaluationJournal j;
+  REQUIRE(j.Open(path, "study-A", &error));
+  CHECK(j.LoadedRecords() == 2);
+  const ReplicateRecord* r = j.Find(params, 0, 11);
+  REQUIRE(r != nullptr);
+  CHECK(r->value == 33.123456789012345);
+  CHECK(r->ok());
+  const ReplicateRecord* failed = j.Find(params, 1, 12);
+  REQUIRE(failed != nullptr);
+  CHECK(failed->status == "not_settled");
+  CHECK(j.Find(params, 1, 99) == nullptr);          // another seed is another run
+  CHECK(j.Find({0.3, 1.0 / 3.0}, 0, 11) == nullptr);  // 0.3 != 0.1 + 0.2 in binary
+}
+
+TEST_CASE("journal drops a line cut off by a kill and appends cleanly after it", "[unit][calibrate]") {
+  const std::string path = FreshPath("cut.jsonl");
+  std::string error;
+  {
+    EvaluationJournal j;
+    REQUIRE(j.Open(path, "s", &error));
+    REQUIRE(j.Append({{0.5}, 0, 1, "ok", 30.0, 1.0}, &error));
+  }
+  { std::ofstream(path, std::ios::app) << R"({"parameters":[0.7],"replicate":0,"se)"; }
+  {
+    EvaluationJournal j;
+    REQUIRE(j.Open(path, "s", &error));
+    CHECK(j.LoadedRecords() == 1);
+    REQUIRE(j.Append({{0.7}, 0, 1, "ok", 35.0, 1.0}, &error));
+  }
+  EvaluationJournal j;
+  REQUIRE(j.Open(path, "s", &error));
+  CHECK(j.LoadedRecords() == 2);
+  REQUIRE(j.Find({0.7}, 0, 1) != nullptr);
+  CHECK(j.Find({0.7}, 0, 1)->value == 35.0);
+}
+
+TEST_CASE("journal of another study or a foreign file is refused", "[unit][calibrate]") {
+  const std::string path = FreshPath("other.jsonl");
+  std::string error;
+  {
+    EvaluationJournal j;
+    REQUIRE(j.Open(path, "study-A", &error));
+  }
+  EvaluationJournal other;
+  CHECK_FALSE(other.Open(path, "study-B", &error));
+  CHECK(error.find("different study") != std::string::npos);
+  const std::string junk = FreshPath("junk.jsonl");
+  { std::ofstream(junk) << "time,value\n1,2\n"; }
+  EvaluationJournal j;
+  CHECK_FALSE(j.Open(junk, "study-A", &error));
+  CHECK(error.find(junk + ":1") != std::string::npos);
+}
