@@ -89,14 +89,34 @@ void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
     p.torque_N_m[i] = t;
   }
   size_t ready = c;  // chunks up to `ready` have their incoming cross pairs evaluated
+  uint32_t* const touching = touching_scratch_[c].data();
+  const PeriodicBox* box = periodic_.Any() ? &periodic_ : nullptr;
   for (uint32_t i = begin; i < end; ++i) {
     Vec3& fi = p.force_N[i];
     Vec3& ti = p.torque_N_m[i];
+    // Pass 1, without branches on the data: the row's entries that may contribute (touching,
+    // or in contact last step: a contact to end, or a JKR neck) — about half of the entries, in
+    // no predictable pattern, so testing them one by one in pass 2 would mispredict often.
+    const Vec3 xi = p.position_m[i];
+    const double ri = p.radius_m[i];
+    uint32_t n = 0;
     for (uint32_t k = list.RowBegin(i); k < list.RowEnd(i); ++k) {
       const uint32_t j = list.Partner(k);
-      if (j >= end) {
+      touching[n] = k;
+      if (j >= end) {  // a cross pair, evaluated by SweepChunks::Ensure
         while (j >= chunks_.End(ready)) chunks_.Ensure(++ready, evaluate_cross);
-        if (!pair_active_[k]) continue;
+        n += pair_active_[k];
+        continue;
+      }
+      const Vec3 d = box ? box->MinimumImage(xi - p.position_m[j]) : xi - p.position_m[j];
+      const double rsum = ri + p.radius_m[j];
+      n += static_cast<uint32_t>(Norm2(d) < rsum * rsum) | pair_active_[k];
+    }
+    // Pass 2: the contributions in entry order (the serial sweep's summation order).
+    for (uint32_t m = 0; m < n; ++m) {
+      const uint32_t k = touching[m];
+      const uint32_t j = list.Partner(k);
+      if (j >= end) {
         fi += pair_result_[k].force_i;
         ti += pair_result_[k].torque_i;
         continue;
@@ -122,6 +142,11 @@ void ContactForces::PlanChunks(const NeighbourList& list) {
     return;
   }
   chunks_.Plan(list, chunks);
+  uint32_t longest_row = 0;
+  for (size_t i = 0; i < list.RowsCount(); ++i)
+    longest_row = std::max(longest_row, list.RowEnd(i) - list.RowBegin(i));
+  touching_scratch_.resize(chunks);
+  for (std::vector<uint32_t>& s : touching_scratch_) s.resize(longest_row + 1);
   plan_stale_ = false;
   planned_list_ = &list;
 }

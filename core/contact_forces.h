@@ -86,6 +86,7 @@ class ContactForces {
   const NeighbourList* planned_list_ = nullptr;
   WallContacts walls_;
   std::vector<std::vector<MeshContact>> mesh_scratch_;  // one per chunk, reused
+  std::vector<std::vector<uint32_t>> touching_scratch_;  // per chunk: a row's contributing entries
 };
 
 }  // namespace demcal::core
