@@ -149,7 +149,7 @@ bool NeighbourList::NeedsRebuild(const std::vector<Vec3>& x) const {
           found = Norm2(x[i] - reference_position_[i]) > half_skin2_;
         return found;
       },
-      [](bool a, bool b) { return a || b; });
+      [](bool a, bool b) { return a || b; }, tbb::static_partitioner());
 }
 
 bool NeighbourList::NeedsRebuild(const std::vector<Vec3>& x, const PeriodicBox& box) const {

@@ -84,7 +84,7 @@ void ParticleSystem::KickDrift(double dt) {
       p.angular_velocity_rad_s[i] += p.torque_N_m[i] * (half * p.inv_inertia[i]);
       p.position_m[i] += p.velocity_m_s[i] * dt;
     }
-  });
+  }, tbb::static_partitioner());
   Clumps& c = clumps;
   tbb::parallel_for(tbb::blocked_range<size_t>(0, c.Size(), 256), [&](const auto& range) {
     for (size_t k = range.begin(); k != range.end(); ++k) {
@@ -106,7 +106,7 @@ void ParticleSystem::ReduceAndKick(const Vec3& gravity, double dt) {
       p.velocity_m_s[i] += p.force_N[i] * (half * p.inv_mass[i]);
       p.angular_velocity_rad_s[i] += p.torque_N_m[i] * (half * p.inv_inertia[i]);
     }
-  });
+  }, tbb::static_partitioner());
   Clumps& c = clumps;
   tbb::parallel_for(tbb::blocked_range<size_t>(0, c.Size(), 256), [&](const auto& range) {
     for (size_t k = range.begin(); k != range.end(); ++k) {
