@@ -1,9 +1,11 @@
 #include "apps/calibration_outputs.h"
 
 #include <algorithm>
+#include <sstream>
 
 #include "apps/experiment_runner.h"
 #include "apps/json_document.h"
+#include "calibrate/liggghts_export.h"
 #include "core/version.h"
 #include "objectives/svg_plot.h"
 #include "objectives/text_file.h"
@@ -125,6 +127,25 @@ objectives::SvgPlot CalibrationPlot(const StudyFile& st, const CalibrationSummar
   return plot;
 }
 
+// The experiment's model with the best candidate's values, as a LIGGGHTS include file.
+bool WriteLiggghtsInclude(const std::string& path, const CalibrationRunInfo& info,
+                          const CalibrationSummary& s, std::string* error) {
+  const StudyFile& st = *info.study;
+  core::Scene model = st.experiment.model;
+  if (s.best >= 0) st.space.Apply(s.history[s.best].parameters, &model);
+  std::ostringstream fidelity;
+  fidelity << "calibrated at fidelity '" << info.fidelity.name << "' (size x" << info.fidelity.size_scale
+           << ", stiffness x" << info.fidelity.stiffness_scale
+           << "); the values below are full scale (Young's moduli of the experiment file)";
+  const std::vector<std::string> comments{
+      "study: " + st.source + " (termination: " + s.termination + ")",
+      "measurement: " + st.measurement.source, fidelity.str(),
+      s.best >= 0 ? "calibrated: " + st.space.Describe(s.history[s.best].parameters)
+                  : "no calibrated value: the experiment file's values"};
+  const std::string deck = calibrate::LiggghtsMaterialInclude(model, comments);
+  return objectives::WriteTextFile(path, [&](std::ostream& out) { out << deck; }, error);
+}
+
 }  // namespace
 
 bool WriteCalibrationOutputs(const std::string& dir, const CalibrationRunInfo& info,
@@ -132,6 +153,7 @@ bool WriteCalibrationOutputs(const std::string& dir, const CalibrationRunInfo& i
   if (!WriteJsonFile(dir + "/result.json", ResultJson(info, s), error)) return false;
   if (!WriteJsonFile(dir + "/calibrated_params.json", ParamsJson(info, s), error)) return false;
   if (!WriteEvaluationsCsv(dir + "/evaluations.csv", *info.study, s, error)) return false;
+  if (!WriteLiggghtsInclude(dir + "/calibrated_params.liggghts", info, s, error)) return false;
   if (info.study->space.Size() == 1 &&
       !objectives::WriteSvg(dir + "/calibration.svg", CalibrationPlot(*info.study, s), error))
     return false;

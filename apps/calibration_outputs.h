@@ -5,6 +5,8 @@
 //   evaluations.csv        one row per candidate (parameters, mean, sem, replicates, status)
 //   calibrated_params.json "demcal-params/1": the calibrated pair properties as "interactions.pairs"
 //                          entries, with provenance (dataset, fidelity, seeds, optimiser, σ)
+//   calibrated_params.liggghts  the calibrated model's materials and pair table as LIGGGHTS
+//                          `fix property/global` lines (calibrate/liggghts_export.h)
 //   calibration.svg        the observable against the parameter (one parameter), target band
 // (journal.jsonl is written by the evaluation journal itself.)
 #include <string>
@@ -23,7 +25,7 @@ struct CalibrationRunInfo {
   double wall_time_s = 0;
 };
 
-// Writes the four files into dir; false with the first error.
+// Writes the five files into dir; false with the first error.
 bool WriteCalibrationOutputs(const std::string& dir, const CalibrationRunInfo& info,
                              const calibrate::CalibrationSummary& summary, std::string* error);
 

@@ -9,5 +9,5 @@ bash scripts/install_deps.sh
 bash scripts/build.sh
 status=0
 "${BUILD_DIR:-build}/apps/demcal" calibrate examples/calibrate_bp_rolling.json --out out/calibrate_bp || status=$?
-echo "outputs in out/calibrate_bp/: result.json, calibrated_params.json, evaluations.csv, calibration.svg, journal.jsonl" >&2
+echo "outputs in out/calibrate_bp/: result.json, calibrated_params.json, calibrated_params.liggghts, evaluations.csv, calibration.svg, journal.jsonl" >&2
 exit "$status"

@@ -53,6 +53,9 @@ TEST_CASE("calibrate writes its outputs and resumes from the journal", "[dem][ca
   CHECK(params["format"] == "demcal-params/1");
   CHECK(params["interactions_pairs"][0]["materials"] == nlohmann::json({"BP", "BP"}));
   CHECK(ReadFile(dir.str("out/calibration.svg")).find("<svg") != std::string::npos);
+  const std::string deck = ReadFile(dir.str("out/calibrated_params.liggghts"));
+  CHECK(deck.find("coefficientRollingFriction peratomtypepair 2") != std::string::npos);
+  CHECK(deck.find("rolling_friction cdt") != std::string::npos);
 
   o.max_evaluations = 3;
   RunCalibrate(o, log);
