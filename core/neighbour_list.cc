@@ -100,6 +100,44 @@ void NeighbourList::ForEachCandidate(const Grid& grid, size_t i, const std::vect
   }
 }
 
+bool NeighbourList::SearchOnce(const Grid& grid, const Settings& s, const std::vector<Vec3>& x,
+                               const std::vector<double>& r, const std::vector<int>* body) {
+  const size_t n = x.size();
+  const uint32_t cap = row_capacity_;
+  if (static_cast<double>(n) * cap > 4e8) return false;  // scratch would exceed 1.6 GB
+  row_scratch_.resize(n * cap);
+  row_start_.assign(n + 1, 0);
+  const bool fits = tbb::parallel_reduce(
+      tbb::blocked_range<size_t>(0, n), true,
+      [&](const auto& range, bool ok) {
+        for (size_t i = range.begin(); ok && i != range.end(); ++i) {
+          uint32_t* row = row_scratch_.data() + i * cap;
+          uint32_t count = 0;
+          ForEachCandidate(grid, i, x, r, body, s.skin_m, [&](uint32_t j) {
+            if (count < cap) row[count] = j;
+            ++count;
+          });
+          ok = count <= cap;
+          row_start_[i + 1] = count;
+          std::sort(row, row + std::min(count, cap));
+        }
+        return ok;
+      },
+      [](bool a, bool b) { return a && b; });
+  if (!fits) return false;
+  uint32_t longest = 0;
+  for (size_t i = 0; i < n; ++i) longest = std::max(longest, row_start_[i + 1]);
+  if (longest + 8 < cap / 4) row_capacity_ = longest + longest / 2 + 8;  // shrink after a dense phase
+  for (size_t i = 0; i < n; ++i) row_start_[i + 1] += row_start_[i];
+  partner_.resize(row_start_[n]);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& range) {
+    for (size_t i = range.begin(); i != range.end(); ++i)
+      std::copy_n(row_scratch_.data() + i * cap, row_start_[i + 1] - row_start_[i],
+                  partner_.begin() + row_start_[i]);
+  });
+  return true;
+}
+
 void NeighbourList::Build(const Settings& s, const std::vector<Vec3>& x,
                           const std::vector<double>& r, const std::vector<int>* body) {
   const size_t n = x.size();
@@ -107,24 +145,29 @@ void NeighbourList::Build(const Settings& s, const std::vector<Vec3>& x,
   const Grid grid = MakeGrid(s, x);
   BinParticles(grid, x);
 
-  // Pass 1: count partners per row; pass 2: fill and sort each row.
-  row_start_.assign(n + 1, 0);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& range) {
-    for (size_t i = range.begin(); i != range.end(); ++i) {
-      uint32_t count = 0;
-      ForEachCandidate(grid, i, x, r, body, s.skin_m, [&](uint32_t) { ++count; });
-      row_start_[i + 1] = count;
-    }
-  });
-  for (size_t i = 0; i < n; ++i) row_start_[i + 1] += row_start_[i];
-  partner_.resize(row_start_[n]);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& range) {
-    for (size_t i = range.begin(); i != range.end(); ++i) {
-      uint32_t k = row_start_[i];
-      ForEachCandidate(grid, i, x, r, body, s.skin_m, [&](uint32_t j) { partner_[k++] = j; });
-      std::sort(partner_.begin() + row_start_[i], partner_.begin() + row_start_[i + 1]);
-    }
-  });
+  if (!SearchOnce(grid, s, x, r, body)) {
+    // Pass 1: count partners per row; pass 2: fill and sort each row.
+    row_start_.assign(n + 1, 0);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& range) {
+      for (size_t i = range.begin(); i != range.end(); ++i) {
+        uint32_t count = 0;
+        ForEachCandidate(grid, i, x, r, body, s.skin_m, [&](uint32_t) { ++count; });
+        row_start_[i + 1] = count;
+      }
+    });
+    uint32_t longest = 0;
+    for (size_t i = 0; i < n; ++i) longest = std::max(longest, row_start_[i + 1]);
+    row_capacity_ = longest + longest / 2 + 8;  // the next build searches once
+    for (size_t i = 0; i < n; ++i) row_start_[i + 1] += row_start_[i];
+    partner_.resize(row_start_[n]);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& range) {
+      for (size_t i = range.begin(); i != range.end(); ++i) {
+        uint32_t k = row_start_[i];
+        ForEachCandidate(grid, i, x, r, body, s.skin_m, [&](uint32_t j) { partner_[k++] = j; });
+        std::sort(partner_.begin() + row_start_[i], partner_.begin() + row_start_[i + 1]);
+      }
+    });
+  }
 
   // Reverse index: for each j, the entries (in ascending order) whose partner is j.
   reverse_start_.assign(n + 1, 0);

@@ -82,6 +82,12 @@ class NeighbourList {
   std::vector<int> cell_of_particle_;
   std::vector<uint32_t> cell_start_;
   std::vector<uint32_t> cell_particles_;
+  // Rows found in one search: up to row_capacity_ partners per particle, sized from the last
+  // build's longest row; a row that overflows sends the build to a count-then-fill search.
+  bool SearchOnce(const Grid& grid, const Settings& s, const std::vector<Vec3>& x,
+                  const std::vector<double>& r, const std::vector<int>* body);
+  std::vector<uint32_t> row_scratch_;
+  uint32_t row_capacity_ = 32;
 };
 
 }  // namespace demcal::core
