@@ -5,7 +5,9 @@
 // retained end's residual is halved when it is kept twice, so the bracket shrinks from both
 // sides), stopping at the first candidate within noise, when the bracket is narrower than
 // unit_tolerance, or at the budget. Without a sign change the measurement is out of the bounds'
-// reach: the result says so (with the nearest candidate) instead of pretending a fit.
+// reach: the result says so (with the nearest candidate) instead of pretending a fit. A bound
+// that gives no value (heaps that never settle at an extreme friction, say) is replaced by the
+// point half-way towards the start, up to kRetreats times; the message names what happened.
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -14,6 +16,8 @@
 
 namespace demcal::calibrate {
 namespace {
+
+constexpr int kRetreats = 3;
 
 struct Point {
   double u = 0;
@@ -40,12 +44,24 @@ class Search {
   }
   OptimiserResult Finish(const std::string& termination, const std::string& message) {
     result_.termination = termination;
-    result_.message = message;
+    result_.message = retreated_ && termination != "out_of_range"
+                          ? message + " (a bound gave no value: probed nearer the start)"
+                          : message;
     return result_;
   }
   OptimiserResult Run(double start);
 
  private:
+  // Evaluates the bound, or failing that points half-way back towards `from`; false if none
+  // gave a value.
+  bool Probe(double from, double bound, Point* p) {
+    for (int k = 0; k <= kRetreats && !Budget(); ++k, bound = 0.5 * (from + bound)) {
+      if (Eval(bound, p)) return true;
+      retreated_ = true;
+    }
+    return false;
+  }
+  bool retreated_ = false;
   OptimiserResult Refine(Point a, Point b);
   const TrialFunction& f_;
   const OptimiserOptions& options_;
@@ -62,14 +78,17 @@ OptimiserResult Search::Run(double start) {
   const bool up_first = s.r() < 0;
   Point& first = up_first ? hi : lo;
   Point& second = up_first ? lo : hi;
-  if (!Eval(up_first ? 1.0 : 0.0, &first)) return Finish("failed", "a bound gave no value");
+  if (!Probe(start, up_first ? 1.0 : 0.0, &first))
+    return Finish("failed", "a bound and the points towards the start gave no value");
   if (first.trial.WithinNoise()) return Finish("within_noise", "a bound matches within noise");
   if (first.r() * s.r() < 0) return up_first ? Refine(s, first) : Refine(first, s);
   if (Budget()) return Finish("budget", "budget used up probing the bounds");
-  if (!Eval(up_first ? 0.0 : 1.0, &second)) return Finish("failed", "a bound gave no value");
+  if (!Probe(start, up_first ? 0.0 : 1.0, &second))
+    return Finish("failed", "a bound and the points towards the start gave no value");
   if (second.trial.WithinNoise()) return Finish("within_noise", "a bound matches within noise");
   if (second.r() * s.r() < 0) return up_first ? Refine(second, s) : Refine(s, second);
   std::ostringstream m;
+  if (retreated_) m << "(a bound gave no value; the nearest point that did is used) ";
   m << "the measurement is outside the range the bounds reach (standardised residuals "
     << lo.r() << " at the lower bound, " << s.r() << " at the start, " << hi.r()
     << " at the upper bound): widen the bounds or add the missing effect";

@@ -84,14 +84,21 @@ TEST_CASE("calibration resumes from its journal without repeating finished runs"
   CHECK(resumed.history[resumed.best].summary.mean == whole.history[whole.best].summary.mean);
 }
 
-TEST_CASE("failed runs are a status, not a crash", "[unit][calibrate]") {
+TEST_CASE("failed runs are a status: the bracket retreats from a bound that gives no value", "[unit][calibrate]") {
   SyntheticAngle angle;
-  angle.fail_above_rolling = 0.5;  // the upper bound (0.9) never settles
-  const CalibrationSummary s = Run(angle, RollingSpace(), 45.0, {});
-  CHECK(s.termination == "failed");
+  angle.fail_above_rolling = 0.6;  // the upper bound (0.9) never settles; 0.5 does
+  const CalibrationSummary s = Run(angle, RollingSpace(), 42.0, {});  // truth mu_r = 0.45
+  CHECK(s.termination == "within_noise");
+  CHECK(s.message.find("probed nearer the start") != std::string::npos);
   bool saw_failure = false;
   for (const Evaluation& e : s.history) saw_failure = saw_failure || (!e.ok() && e.status == "not_settled");
   CHECK(saw_failure);
+  CHECK(std::abs(s.history[s.best].parameters[0] - 0.45) <= 2 * s.uncertainty[0]);
+
+  angle.fail_above_rolling = 0.0;  // nothing ever settles
+  const CalibrationSummary none = Run(angle, RollingSpace(), 42.0, {});
+  CHECK(none.termination == "failed");
+  CHECK(none.best == -1);
 }
 
 TEST_CASE("two parameters against one measurement: matched, but reported as a valley", "[unit][calibrate]") {
