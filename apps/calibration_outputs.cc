@@ -104,11 +104,13 @@ bool WriteEvaluationsCsv(const std::string& path, const StudyFile& st, const Cal
 
 objectives::SvgPlot CalibrationPlot(const StudyFile& st, const CalibrationSummary& s) {
   const calibrate::Parameter& p = st.space.parameters[0];
+  const auto& materials = st.experiment.model.materials;
   objectives::SvgPlot plot{.title = "calibration: " + st.measurement.observable + " vs " + p.name,
-                           .x_label = p.name,
+                           .x_label = p.name + " (" + calibrate::PairPropertyKey(p.property) + ", " +
+                                      materials[p.material_i].name + "-" + materials[p.material_j].name + ")",
                            .y_label = st.measurement.observable};
   objectives::PlotSeries sim{.label = "simulated (mean)", .dots = true, .width_px = 4};
-  objectives::PlotSeries up{.label = "mean + sem", .color = "#7f7f7f", .dots = true, .width_px = 2};
+  objectives::PlotSeries up{.label = "mean +- sem", .color = "#7f7f7f", .dots = true, .width_px = 2};
   objectives::PlotSeries down{.label = "", .color = "#7f7f7f", .dots = true, .width_px = 2};
   for (const Evaluation& e : s.history) {
     if (!e.ok()) continue;
