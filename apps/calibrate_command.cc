@@ -12,6 +12,7 @@
 #include "apps/calibration_outputs.h"
 #include "apps/exit_codes.h"
 #include "apps/experiment_runner.h"
+#include "apps/experiment_setup.h"
 #include "apps/json_document.h"
 #include "apps/study_file.h"
 #include "calibrate/aor_observable.h"
@@ -77,13 +78,16 @@ int RunCalibrate(const CalibrateOptions& options, std::ostream& log) {
     log << "error: " << file.source << ": " << error << "\n";
     return kExitInvalidInput;
   }
-  core::Scene scaled = file.model;
-  objectives::ApplyFidelity(fidelity, &scaled);
-  objectives::AorSettings settings;
-  if (!ParseAorSection(file.section, file.source, scaled, &settings, &error)) {
-    log << "error: " << error << "\n";
-    return kExitInvalidInput;
-  }
+  // The aor section checked against the model at this fidelity, and one run's scene built and
+  // validated before anything runs (as `demcal experiment aor` does).
+  ExperimentContext context;
+  context.fidelity = fidelity;
+  PreparedExperiment<objectives::AorSettings> prepared;
+  auto build = [](const core::Scene& model, const objectives::AorSettings& settings, uint64_t seed) {
+    int64_t fixed = 0;
+    return objectives::BuildAorScene(model, settings, seed, &fixed);
+  };
+  if (!PrepareExperiment(file, context, ParseAorSection, build, &prepared, log)) return kExitInvalidInput;
   if (options.max_evaluations > 0) study.options.optimiser_options.max_evaluations = options.max_evaluations;
   const uint64_t seed = study.has_seed ? study.seed : file.seed;
   const int replicates = study.replicates > 0 ? study.replicates : file.replicates;
@@ -100,7 +104,7 @@ int RunCalibrate(const CalibrateOptions& options, std::ostream& log) {
   }
   if (!options.quiet && journal.LoadedRecords() > 0)
     log << "calibrate: resuming: " << journal.LoadedRecords() << " replicate runs in " << journal.path() << "\n";
-  const calibrate::AorObservable observable(settings);
+  const calibrate::AorObservable observable(prepared.settings);
   calibrate::EvaluatorOptions eo{.replicates = replicates, .seed = seed, .workers = options.threads};
   eo.prepare = [fidelity](core::Scene* model) { objectives::ApplyFidelity(fidelity, model); };
   calibrate::ReplicatedEvaluator evaluator(file.model, study.space, observable, eo, &journal);

@@ -82,10 +82,6 @@ CalibrationSummary Calibrate(ReplicatedEvaluator& evaluator, const ParameterSpac
     s.replicates_reused += e.reused;
     s.replicates_run += static_cast<int>(e.runs.size()) - e.reused;
     const TrialResult t = Standardise(e, measurement);
-    if (t.ok && (s.best < 0 || t.Cost() < s.best_residual * s.best_residual)) {
-      s.best = e.index;
-      s.best_residual = t.residuals[0];
-    }
     if (progress)
       progress(e, t, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     return t;
@@ -93,6 +89,11 @@ CalibrationSummary Calibrate(ReplicatedEvaluator& evaluator, const ParameterSpac
   const OptimiserResult r = optimise(trial, space.ToUnit(space.Start()), options.optimiser_options);
   s.termination = r.termination;
   s.message = r.message;
+  for (const Evaluation& e : s.history) {  // the best candidate: the smallest |residual|
+    const TrialResult t = Standardise(e, measurement);
+    if (t.ok && (s.best < 0 || std::abs(t.residuals[0]) < std::abs(s.best_residual)))
+      s.best = e.index, s.best_residual = t.residuals[0];
+  }
   LocalSensitivity(measurement, &s);
   return s;
 }

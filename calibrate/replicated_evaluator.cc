@@ -26,17 +26,16 @@ Evaluation ReplicatedEvaluator::Evaluate(const std::vector<double>& parameters,
       e.runs[r] = *done;
       ++e.reused;
     } else {
+      e.runs[r] = {parameters, r, seed, "pending", 0, 0};
       pending.push_back(r);
     }
   }
   std::mutex error_mutex;
   objectives::RunReplicates(
       static_cast<int>(pending.size()), 0, options_.workers, [&](int k, uint64_t) {
-        const int r = pending[k];
-        const uint64_t seed = objectives::ReplicateSeed(options_.seed, r);
-        const ReplicateOutcome o = observable_.Run(model, seed);
-        ReplicateRecord& record = e.runs[r];
-        record = {parameters, r, seed, o.status, o.value, o.wall_time_s};
+        ReplicateRecord& record = e.runs[pending[k]];
+        const ReplicateOutcome o = observable_.Run(model, record.seed);
+        record.status = o.status, record.value = o.value, record.wall_time_s = o.wall_time_s;
         std::string error;
         if (journal_ && !journal_->Append(record, &error) && journal_error) {
           std::lock_guard lock(error_mutex);

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/contact/jkr.h"
+
 namespace demcal::core {
 
 double BetaFromRestitution(double e) {
@@ -13,7 +15,7 @@ double BetaFromRestitution(double e) {
 
 ResolvedPair MakeResolvedPair(double e_star, double g_star, double beta, double mu_s, double mu_r,
                               double gamma) {
-  const double k = gamma > 0 ? std::sqrt(4.0 * std::numbers::pi * gamma / e_star) : 0.0;
+  const double k = gamma > 0 ? JkrNormal::AdhesionLength(e_star, gamma) : 0.0;
   return {e_star, g_star, beta, mu_s, mu_r, gamma, k, std::sqrt(4.0 * g_star / e_star)};
 }
 

@@ -130,7 +130,7 @@ struct JkrNormal {
     if (gamma <= 0) return HertzMindlinNormal::Compute(g, p, h);
     constexpr double kTwoSqrtFiveSixths = 1.8257418583505538;
     const double e_star = p.effective_youngs_Pa, r_eff = g.effective_radius_m;
-    const double k = p.jkr_adhesion_length;  // AdhesionLength(e_star, gamma), precomputed
+    const double k = p.jkr_adhesion_length;  // AdhesionLength, resolved once per pair
     const auto [a, sqrt_a] = h.jkr_sqrt_radius > 0
                                  ? RefineRadius(g.overlap_m, r_eff, k, h.jkr_sqrt_radius)
                                  : SolveRadius(g.overlap_m, r_eff, k);
