@@ -1,25 +1,9 @@
 #pragma once
-// `demcal experiment aor|discharge|segregation PARAMS.json --out DIR [--replicates R] [--quick]`
-// runs a virtual experiment (objectives/) on a parameter file and writes DIR/result.json with
-// its tables and pictures (docs/experiments.md lists every file).
-#include <ostream>
-#include <string>
-
+// `demcal experiment`: the command-line front of workflow/experiments/run_experiment.h (argv, help, progress on stderr); the work
+// is done by the workflow layer.
 #include "apps/command.h"
 
 namespace demcal::apps {
-
-struct ExperimentOptions {
-  std::string kind;         // "aor", "discharge", "segregation"
-  std::string params_path;
-  std::string out_dir;
-  int replicates = 0;       // 0: the file's "replicates"
-  bool quick = false;       // run at the file's quick fidelity
-  int threads = 0;          // 0: all cores
-  bool quiet = false;
-};
-
-int RunExperiment(const ExperimentOptions& options, std::ostream& log);
 
 Command AddExperimentCommand(CLI::App& parent);
 

@@ -6,12 +6,12 @@
 #include <string>
 #include <vector>
 
-#include "apps/calibrate_command.h"
+#include "workflow/calibration/run_study.h"
 #include "apps/command.h"
-#include "apps/experiment_command.h"
-#include "apps/exit_codes.h"
-#include "apps/simulate_command.h"
+#include "workflow/experiments/run_experiment.h"
+#include "workflow/simulation/simulate.h"
 #include "core/version.h"
+#include "workflow/exit_codes.h"
 
 namespace {
 
@@ -25,6 +25,7 @@ constexpr demcal::apps::CommandFactory kCommands[] = {
 
 int main(int argc, char** argv) {
   using namespace demcal::apps;
+  using namespace demcal::workflow;
   CLI::App app{"demcal: discrete element simulation and calibration of powders"};
   app.set_version_flag("--version,-V", std::string("demcal ") + demcal::kVersion);
   app.require_subcommand(1);

@@ -1,11 +1,11 @@
 #pragma once
-// The angle of repose (objectives/aor_experiment.h) as a calibration observable: one poured,
+// The angle of repose (objectives/aor/aor_experiment.h) as a calibration observable: one poured,
 // settled and measured heap per replicate; value = mean of the flank angles (deg).
 //
 //   AorObservable angle(settings);   // settings parsed from the experiment's "aor" section
 //   ReplicateOutcome o = angle.Run(model_at_fidelity, seed);
 #include "calibrate/observable.h"
-#include "objectives/aor_experiment.h"
+#include "objectives/aor/aor_experiment.h"
 
 namespace demcal::calibrate {
 

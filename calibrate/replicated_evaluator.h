@@ -24,7 +24,7 @@
 #include "calibrate/observable.h"
 #include "calibrate/parameter_space.h"
 #include "core/scene.h"
-#include "objectives/replicates.h"
+#include "objectives/common/replicates.h"
 
 namespace demcal::calibrate {
 

@@ -2,7 +2,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "objectives/fidelity.h"
+#include "objectives/common/fidelity.h"
 
 using namespace demcal;
 

@@ -1,0 +1,83 @@
+#include "objectives/metrics/flank_fit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "objectives/metrics/line_fit.h"
+
+namespace demcal::objectives {
+
+namespace {
+
+double Degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
+
+double RelativeHeight(const SurfacePoint& p, const HeightWindow& w) {
+  return (p.top_m - w.base_z_m) / w.heap_height_m;
+}
+
+// s where the profile, walked outward, first drops to `level` (fraction of H), by linear
+// interpolation between the last point above and the first at or below. False when the first
+// point is already below (the crossing is not seen) or the profile never gets there.
+bool OutwardCrossing(const std::vector<SurfacePoint>& profile, const HeightWindow& w, double level,
+                     double* s_m) {
+  for (size_t i = 0; i < profile.size(); ++i) {
+    const double here = RelativeHeight(profile[i], w);
+    if (here > level) continue;
+    if (i == 0) return false;
+    const double before = RelativeHeight(profile[i - 1], w);
+    const double t = (before - level) / (before - here);
+    *s_m = profile[i - 1].s_m + t * (profile[i].s_m - profile[i - 1].s_m);
+    return true;
+  }
+  return false;
+}
+
+// Paper Fig. 5: the height difference between the window's two levels over the horizontal
+// distance between the surface points at those heights.
+void TwoPointAngle(const std::vector<SurfacePoint>& profile, const HeightWindow& w,
+                   FlankFit* flank) {
+  double s_high = 0, s_low = 0;
+  flank->two_point_ok = OutwardCrossing(profile, w, w.high, &s_high) &&
+                        OutwardCrossing(profile, w, w.low, &s_low) && s_low > s_high;
+  flank->two_point_angle_deg =
+      flank->two_point_ok
+          ? Degrees(std::atan((w.high - w.low) * w.heap_height_m / (s_low - s_high)))
+          : 0.0;
+}
+
+}  // namespace
+
+bool FitFlank(const std::vector<SurfacePoint>& outward_profile, const HeightWindow& window,
+              int min_points, FlankFit* flank, std::string* why_not) {
+  std::vector<double> s, top;
+  for (const SurfacePoint& p : outward_profile) {
+    const double h = RelativeHeight(p, window);
+    if (h < window.low || h > window.high) continue;
+    s.push_back(p.s_m);
+    top.push_back(p.top_m);
+  }
+  if (static_cast<int>(s.size()) < min_points) {
+    *why_not = std::to_string(s.size()) + " points in the height window (need " +
+               std::to_string(min_points) + ")";
+    return false;
+  }
+  const LineFit fit = FitLine(s, top);
+  if (!fit.ok || !(fit.slope < 0)) {
+    *why_not = "the surface does not descend away from the apex";
+    return false;
+  }
+  flank->angle_deg = Degrees(std::atan(-fit.slope));
+  // d atan(m)/dm = 1/(1 + m²): the slope's standard error carried to the angle.
+  flank->angle_sem_deg = Degrees(fit.slope_sem / (1 + fit.slope * fit.slope));
+  flank->r_squared = fit.r_squared;
+  flank->points = fit.points;
+  flank->slope = fit.slope;
+  flank->intercept_m = fit.intercept;
+  flank->s_min_m = *std::min_element(s.begin(), s.end());
+  flank->s_max_m = *std::max_element(s.begin(), s.end());
+  TwoPointAngle(outward_profile, window, flank);
+  return true;
+}
+
+}  // namespace demcal::objectives

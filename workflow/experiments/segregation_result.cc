@@ -1,0 +1,155 @@
+#include "workflow/experiments/segregation_result.h"
+
+#include <functional>
+
+#include "objectives/common/replicates.h"
+
+namespace demcal::workflow {
+
+namespace {
+
+using nlohmann::ordered_json;
+using objectives::HeapSegregation;
+using objectives::SegregationIndex;
+using objectives::SegregationRun;
+
+// One index of one species, from a run's analysis; nullptr when the run has none.
+using IndexOf = std::function<const SegregationIndex*(const HeapSegregation&, int species)>;
+
+ordered_json Stat(const std::vector<double>& values) {
+  const objectives::Summary s = objectives::Summarise(values);
+  return {{"mean", s.n > 0 ? ordered_json(s.mean) : ordered_json(nullptr)},
+          {"sem", s.n > 1 ? ordered_json(s.sem) : ordered_json(nullptr)},
+          {"n", s.n}};
+}
+
+// Mean ± sem over the ok runs of value(index) for the defined indices.
+ordered_json IndexStat(const std::vector<SegregationRun>& runs, int species, const IndexOf& of,
+                       double SegregationIndex::*value) {
+  std::vector<double> values;
+  for (const SegregationRun& run : runs) {
+    if (!run.ok()) continue;
+    const SegregationIndex* index = of(run.analysis->indices, species);
+    if (index && index->defined) values.push_back(index->*value);
+  }
+  return Stat(values);
+}
+
+const SegregationIndex* Number(const objectives::RegionSegregation& region, int species) {
+  return species < static_cast<int>(region.species.size()) ? &region.species[species].number
+                                                           : nullptr;
+}
+const SegregationIndex* Mass(const objectives::RegionSegregation& region, int species) {
+  return species < static_cast<int>(region.species.size()) ? &region.species[species].mass
+                                                           : nullptr;
+}
+
+ordered_json SpeciesJson(const std::vector<SegregationRun>& runs, int k, const std::string& name,
+                         int layers) {
+  const IndexOf front = [](const HeapSegregation& h, int s) { return Number(h.front, s); };
+  const IndexOf back = [](const HeapSegregation& h, int s) { return Number(h.back, s); };
+  const IndexOf whole = [](const HeapSegregation& h, int s) { return Mass(h.whole, s); };
+  ordered_json j;
+  j["species"] = name;
+  j["cov_2d_front"] = IndexStat(runs, k, front, &SegregationIndex::cov_m);
+  j["cov_r_2d_front"] = IndexStat(runs, k, front, &SegregationIndex::cov_r);
+  j["s_n_2d_front"] = IndexStat(runs, k, front, &SegregationIndex::s_n);
+  j["cov_2d_back"] = IndexStat(runs, k, back, &SegregationIndex::cov_m);
+  j["cov_r_2d_back"] = IndexStat(runs, k, back, &SegregationIndex::cov_r);
+  j["s_n_2d_back"] = IndexStat(runs, k, back, &SegregationIndex::s_n);
+  j["cov_3d"] = IndexStat(runs, k, whole, &SegregationIndex::cov_m);
+  j["cov_r_3d"] = IndexStat(runs, k, whole, &SegregationIndex::cov_r);
+  j["s_n_3d"] = IndexStat(runs, k, whole, &SegregationIndex::s_n);
+  j["mean_mass_fraction_3d"] = IndexStat(runs, k, whole, &SegregationIndex::mean_fraction);
+  ordered_json per_layer = ordered_json::array();
+  for (int layer = 0; layer < layers; ++layer) {
+    const IndexOf of = [layer](const HeapSegregation& h, int s) -> const SegregationIndex* {
+      return layer < static_cast<int>(h.layers.size()) ? Mass(h.layers[layer], s) : nullptr;
+    };
+    ordered_json l = IndexStat(runs, k, of, &SegregationIndex::cov_m);
+    l["layer"] = layer + 1;
+    per_layer.push_back(l);
+  }
+  j["cov_per_layer_3d"] = per_layer;
+  return j;
+}
+
+ordered_json TrackedJson(const objectives::TrackedGranule& g) {
+  ordered_json j;
+  j["id"] = g.track.id;
+  j["samples"] = g.track.samples.size();
+  j["impact_time_s"] = g.impact_sample ? ordered_json(g.impact_time_s) : nullptr;
+  j["peak_specific_kinetic_J_kg"] =
+      g.impact_sample ? ordered_json(g.peak_specific_kinetic_J_kg) : nullptr;
+  j["penetration_depth_m"] = g.penetration ? ordered_json(g.penetration->depth_m) : nullptr;
+  j["penetration_depth_diameters"] =
+      g.penetration ? ordered_json(g.penetration->depth_diameters) : nullptr;
+  return j;
+}
+
+ordered_json RunJson(int replicate, const SegregationRun& run) {
+  ordered_json j;
+  j["replicate"] = replicate;
+  j["seed"] = run.seed;
+  j["status"] = run.Status();
+  j["message"] = !run.settle.ok() ? run.settle.message : run.analysis_message;
+  j["particles"] = run.particles;
+  double mass = 0;
+  for (const objectives::Grain& g : run.heap.grains) mass += g.mass_kg;
+  j["heap_mass_kg"] = mass;
+  if (run.analysis) {
+    const objectives::HeapExtent& e = run.analysis->grid.extent();
+    j["heap_base_width_m"] = e.x_right_m - e.x_left_m;
+    j["heap_height_m"] = e.height_m;
+    j["grains_outside_bins"] = run.analysis->counts.outside_count;
+  }
+  j["mixture_angle_deg"] = run.angle.ok ? ordered_json(run.angle.angle_deg) : nullptr;
+  j["angle_message"] = run.angle.message;
+  j["funnel_first_out_s"] = run.first_out_s;
+  j["funnel_empty_s"] = run.funnel_emptied ? ordered_json(run.empty_s) : nullptr;
+  j["discharge_time_s"] = run.funnel_emptied ? ordered_json(run.discharge_time_s) : nullptr;
+  j["settle_time_s"] = run.settle.settle_time_s;
+  j["wall_time_s"] = run.wall_time_s;
+  ordered_json tracked = ordered_json::array();
+  for (const objectives::TrackedGranule& g : run.tracked) tracked.push_back(TrackedJson(g));
+  j["tracked_granules"] = tracked;
+  return j;
+}
+
+}  // namespace
+
+ordered_json SegregationResultJson(const objectives::SegregationSettings& settings,
+                                   const std::vector<std::string>& species_names,
+                                   const std::vector<SegregationRun>& runs) {
+  ordered_json result;
+  result["basis"] = {{"2d", "number fraction"}, {"3d", "mass fraction"}};
+  result["funnel"] = settings.funnel.enabled;
+  result["heap_feed_mass_kg"] = settings.feed.mass_kg;
+  std::vector<double> angles, discharge, depths;
+  int ok = 0;
+  for (const SegregationRun& run : runs) {
+    if (!run.ok()) continue;
+    ++ok;
+    if (run.angle.ok) angles.push_back(run.angle.angle_deg);
+    discharge.push_back(run.discharge_time_s);
+    for (const objectives::TrackedGranule& g : run.tracked)
+      if (g.penetration) depths.push_back(g.penetration->depth_diameters);
+  }
+  result["replicates_ok"] = ok;
+  ordered_json species = ordered_json::array();
+  for (size_t k = 0; k < species_names.size(); ++k)
+    species.push_back(
+        SpeciesJson(runs, static_cast<int>(k), species_names[k], settings.bins.layers));
+  result["species"] = species;
+  result["mixture_angle_deg"] = Stat(angles);
+  result["discharge_time_s"] = Stat(discharge);
+  result["tracked_species"] = species_names.at(settings.TrackedSpecies());
+  result["penetration_depth_diameters"] = Stat(depths);
+  ordered_json runs_json = ordered_json::array();
+  for (size_t r = 0; r < runs.size(); ++r)
+    runs_json.push_back(RunJson(static_cast<int>(r), runs[r]));
+  result["runs"] = runs_json;
+  return result;
+}
+
+}  // namespace demcal::workflow

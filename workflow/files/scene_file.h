@@ -1,0 +1,25 @@
+#pragma once
+// SceneFile: a parsed "demcal-scene/1" file — the core::Scene it describes plus the output
+// settings of a run. The format is documented in docs/scene_format.md.
+#include <string>
+
+#include "core/io/vtk_writer.h"
+#include "core/scene.h"
+
+namespace demcal::workflow {
+
+struct OutputSettings {
+  double vtk_interval_s = 0;  // > 0: a snapshot every interval; 0: only the initial and final
+  core::io::VtkOptions vtk;   // encoding of the snapshots (binary by default)
+};
+
+struct SceneFile {
+  std::string source;       // where it came from (file path), for messages and summaries
+  std::string description;  // free text from the file, may be empty
+  core::Scene scene;
+  OutputSettings output;
+};
+
+inline constexpr const char* kSceneFormat = "demcal-scene/1";
+
+}  // namespace demcal::workflow
