@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "workflow/calibration/run_study.h"
+#include "apps/calibrate_command.h"
 #include "apps/command.h"
-#include "workflow/experiments/run_experiment.h"
-#include "workflow/simulation/simulate.h"
+#include "apps/experiment_command.h"
+#include "apps/simulate_command.h"
 #include "core/version.h"
 #include "workflow/exit_codes.h"
 

@@ -8,36 +8,6 @@
 namespace demcal::calibrate {
 namespace {
 
-struct PropertyInfo {
-  PairProperty property;
-  const char* key;
-  const char* unit;
-  double max;  // physical upper limit of the property
-};
-
-constexpr PropertyInfo kProperties[] = {
-    {PairProperty::kSlidingFriction, "sliding_friction", "", 10},
-    {PairProperty::kRollingFriction, "rolling_friction", "", 10},
-    {PairProperty::kRestitution, "restitution", "", 1},
-    {PairProperty::kInterfacialEnergy, "interfacial_energy_J_m2", "J/m2", 1e3},
-};
-
-const PropertyInfo& Info(PairProperty property) {
-  for (const PropertyInfo& p : kProperties)
-    if (p.property == property) return p;
-  return kProperties[0];
-}
-
-double& Slot(core::PairParameters& pair, PairProperty property) {
-  switch (property) {
-    case PairProperty::kRollingFriction: return pair.rolling_friction;
-    case PairProperty::kRestitution: return pair.restitution;
-    case PairProperty::kInterfacialEnergy: return pair.interfacial_energy_J_m2;
-    case PairProperty::kSlidingFriction: break;
-  }
-  return pair.sliding_friction;
-}
-
 bool Fail(std::string* error, const std::string& message) {
   if (error) *error = message;
   return false;
@@ -45,32 +15,27 @@ bool Fail(std::string* error, const std::string& message) {
 
 }  // namespace
 
-const char* PairPropertyKey(PairProperty property) { return Info(property).key; }
-const char* PairPropertyUnit(PairProperty property) { return Info(property).unit; }
-
-bool PairPropertyFromKey(const std::string& key, PairProperty* out) {
-  for (const PropertyInfo& p : kProperties)
-    if (key == p.key) return *out = p.property, true;
-  return false;
-}
-
 bool ParameterSpace::IsValid(const core::Scene& model, std::string* error) const {
   if (parameters.empty()) return Fail(error, "parameters: at least one parameter is needed");
   std::set<std::string> names;
-  std::set<std::tuple<int, int, int>> slots;
+  std::set<std::tuple<int, int, int, std::string>> slots;
   const int materials = static_cast<int>(model.materials.size());
   for (size_t k = 0; k < parameters.size(); ++k) {
     const Parameter& p = parameters[k];
     const std::string at = "parameters[" + std::to_string(k) + "]";
-    const double max = Info(p.property).max;
+    const double max = PairPropertyMax(p.property);
     if (p.name.empty()) return Fail(error, at + ".name: must not be empty");
     if (!names.insert(p.name).second) return Fail(error, at + ".name: '" + p.name + "' is used twice");
     if (p.material_i < 0 || p.material_i >= materials || p.material_j < 0 || p.material_j >= materials)
       return Fail(error, at + ".materials: not a material of the model");
     const auto slot = std::make_tuple(static_cast<int>(p.property), std::min(p.material_i, p.material_j),
-                                      std::max(p.material_i, p.material_j));
-    if (!slots.insert(slot).second) return Fail(error, at + ": sets the same pair property as an earlier parameter");
-    if (!(p.lower >= 0 && p.lower < p.upper && p.upper <= max))
+                                      std::max(p.material_i, p.material_j), DescribeCondition(p.when));
+    if (p.curve < 0 && !slots.insert(slot).second)
+      return Fail(error, at + ": sets the same pair property under the same condition as an earlier parameter");
+    if (p.curve >= 0) {  // a curve coefficient: any finite bounds (an intercept, an exponent)
+      if (!(std::isfinite(p.lower) && std::isfinite(p.upper) && p.lower < p.upper))
+        return Fail(error, at + ".min/max: need finite min < max");
+    } else if (!(p.lower >= 0 && p.lower < p.upper && p.upper <= max))
       return Fail(error, at + ".lower/upper: need 0 <= lower < upper <= " + std::to_string(max) +
                              " (got " + std::to_string(p.lower) + ", " + std::to_string(p.upper) + ")");
     if (p.property == PairProperty::kRestitution && p.lower <= 0)
@@ -80,16 +45,48 @@ bool ParameterSpace::IsValid(const core::Scene& model, std::string* error) const
       return Fail(error, at + ".start: must lie in [lower, upper] = [" + std::to_string(p.lower) +
                              ", " + std::to_string(p.upper) + "]");
   }
+  for (size_t c = 0; c < curves.size(); ++c)
+    for (int k : curves[c].coefficients)
+      if (k < 0 || k >= static_cast<int>(parameters.size()) || parameters[k].curve != static_cast<int>(c))
+        return Fail(error, "curves[" + std::to_string(c) + "]: coefficient index out of place");
+  for (const std::vector<int>& chain : non_decreasing)
+    for (int k : chain)
+      if (k < 0 || k >= static_cast<int>(parameters.size()))
+        return Fail(error, "non_decreasing: names a parameter that does not exist");
   return true;
 }
 
 void ParameterSpace::Apply(const std::vector<double>& values, core::Scene* model) const {
-  const size_t n = model->materials.size();
+  std::string ignored;
+  Apply(values, Condition{}, model, &ignored);
+}
+
+bool ParameterSpace::Apply(const std::vector<double>& values, const Condition& condition,
+                           core::Scene* model, std::string* why) const {
   for (size_t k = 0; k < parameters.size(); ++k) {
     const Parameter& p = parameters[k];
-    Slot(model->pair_parameters[p.material_i * n + p.material_j], p.property) = values[k];
-    Slot(model->pair_parameters[p.material_j * n + p.material_i], p.property) = values[k];
+    if (p.curve < 0 && ConditionIncludes(condition, p.when))
+      SetPairProperty(p.property, p.material_i, p.material_j, values[k], model);
   }
+  bool ok = true;
+  for (const ParameterCurve& c : curves) {
+    double value = 0;
+    if (c.Evaluate(values, condition, &value, why))
+      SetPairProperty(c.property, c.material_i, c.material_j, value, model);
+    else
+      ok = false;
+  }
+  return ok;
+}
+
+bool ParameterSpace::Feasible(const std::vector<double>& values, std::string* why) const {
+  for (const std::vector<int>& chain : non_decreasing)
+    for (size_t k = 1; k < chain.size(); ++k)
+      if (values[chain[k]] < values[chain[k - 1]]) {
+        *why = "non_decreasing: " + parameters[chain[k]].name + " < " + parameters[chain[k - 1]].name;
+        return false;
+      }
+  return true;
 }
 
 std::vector<double> ParameterSpace::ToUnit(const std::vector<double>& values) const {

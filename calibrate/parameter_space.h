@@ -14,17 +14,12 @@
 #include <string>
 #include <vector>
 
+#include "calibrate/condition.h"
+#include "calibrate/pair_property.h"
+#include "calibrate/parameter_curve.h"
 #include "core/scene.h"
 
 namespace demcal::calibrate {
-
-// The pair properties a calibration can vary (the paper's Table 1 columns and Γ).
-enum class PairProperty { kSlidingFriction, kRollingFriction, kRestitution, kInterfacialEnergy };
-
-// The key used in study files ("sliding_friction", ...) and its unit ("" or "J/m2").
-const char* PairPropertyKey(PairProperty property);
-const char* PairPropertyUnit(PairProperty property);
-bool PairPropertyFromKey(const std::string& key, PairProperty* out);
 
 struct Parameter {
   std::string name;       // unique, used in tables and journals
@@ -35,16 +30,32 @@ struct Parameter {
   double upper = 1;
   double start = 0.5;     // first candidate, inside the bounds
   bool log_scale = false; // uniform in log(value) in the unit cube (needs lower > 0)
+  // Applies only to targets whose condition includes this one (Γ of EP at 0.5 wt%); empty:
+  // every target.
+  Condition when;
+  // >= 0: a coefficient of curves[curve], written into the model only through that curve.
+  int curve = -1;
 };
 
 struct ParameterSpace {
   std::vector<Parameter> parameters;
+  std::vector<ParameterCurve> curves;
+  // Each list: parameter indices whose values must not decrease in this order (Γ non-decreasing
+  // in the coating level). A candidate that breaks one is infeasible: it is never simulated.
+  std::vector<std::vector<int>> non_decreasing;
 
   size_t Size() const { return parameters.size(); }
   // Names the first bad field ("parameters[1].lower") and the allowed range.
   bool IsValid(const core::Scene& model, std::string* error) const;
-  // Writes values (SI, one per parameter) into the model's pair table.
+  // Writes values (SI, one per parameter) into the model's pair table: every parameter without
+  // a `when`, and every curve (which needs a condition: use the overload below).
   void Apply(const std::vector<double>& values, core::Scene* model) const;
+  // The model of one target: the parameters whose `when` the condition includes, and every
+  // curve at the condition's covariate. False (with why) when a curve gives no valid value.
+  bool Apply(const std::vector<double>& values, const Condition& condition, core::Scene* model,
+             std::string* why) const;
+  // The declared constraints hold; false with the first broken one in *why.
+  bool Feasible(const std::vector<double>& values, std::string* why) const;
   std::vector<double> ToUnit(const std::vector<double>& values) const;
   std::vector<double> FromUnit(const std::vector<double>& unit) const;
   std::vector<double> Start() const;

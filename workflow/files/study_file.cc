@@ -1,10 +1,11 @@
 #include "workflow/files/study_file.h"
 
 #include <filesystem>
+#include <sstream>
 
 #include "workflow/files/json_document.h"
 #include "workflow/files/json_fields.h"
-#include "workflow/files/measurement_dataset.h"
+#include "workflow/files/measurement_table.h"
 
 namespace demcal::workflow {
 namespace {
@@ -50,24 +51,28 @@ void ParseMeasurement(const nlohmann::json& j, const std::string& path, const st
                       const std::string& observable, StudyFile* out, JsonStatus* status) {
   JsonFields f(j, path, {"dataset", "material", "coating_PEG_wt_pct", "uncertainty_deg", "uncertainty_note"},
                status);
-  DatasetQuery q;
-  std::string dataset;
+  std::string dataset, material;
+  double coating = 0;
   f.String("dataset", &dataset, kRequired);
-  f.String("material", &q.material, kRequired);
-  f.Number("coating_PEG_wt_pct", &q.coating_PEG_wt_pct, kOptional, Range::Closed(0, 100, "wt%"));
+  f.String("material", &material, kRequired);
+  f.Number("coating_PEG_wt_pct", &coating, kOptional, Range::Closed(0, 100, "wt%"));
   double assumed = 0;
   f.Number("uncertainty_deg", &assumed, kOptional, Range::LeftOpen(0, 90, "deg"));
   f.String("uncertainty_note", &out->measurement_note, kOptional);
   if (!f.ok()) return;
-  q.path = Resolve(study, dataset);
-  q.value_column = observable;
-  q.sd_column = "angle_sd_deg";
-  bool has_sd = false;
+  MeasurementTable table;
   std::string error;
+  if (!LoadMeasurementTable(Resolve(study, dataset), &table, &error)) return f.Fail("dataset", error);
+  std::ostringstream w;
+  w << coating;
+  const MeasurementRow* row = table.Find(observable, material, {{"coating_PEG_wt_pct", w.str()}}, &error);
+  if (!row) return f.Fail("dataset", error);
   out->measurement.observable = observable;
-  if (!ReadDatasetMeasurement(q, &out->measurement, &has_sd, &error)) return f.Fail("dataset", error);
-  if (assumed > 0 && !has_sd) out->measurement.uncertainty = assumed;
-  else if (!has_sd)
+  out->measurement.value = row->value;
+  out->measurement.uncertainty = row->uncertainty;
+  out->measurement.source = table.path + " line " + std::to_string(row->line) + " (" + row->source + ")";
+  if (assumed > 0 && !row->HasUncertainty()) out->measurement.uncertainty = assumed;
+  else if (!row->HasUncertainty())
     f.Fail("uncertainty_deg", "required: the dataset row reports no standard deviation, so the "
                               "study must state the uncertainty it assumes (deg, > 0)");
 }

@@ -60,6 +60,7 @@ struct SlotHeapShape {
   double half_width_m = 0.1;  // profile from apex − w to apex + w (run-out beyond the toes)
   double x_min_m = -1e9;      // a wall: nothing left of it
   int depth_layers = 3;       // copies along y, one diameter apart
+  double top_cut_m = 0;       // > 0: the crest flattened this far below the apex (a rounded top)
 };
 
 // Pseudo-2D triangle heap on the floor z = 0: surface spheres every half diameter along x.
@@ -73,7 +74,8 @@ inline Snapshot SlotHeap(const SlotHeapShape& shape, double diameter_m, const He
     const double deg = i < 0 ? shape.left_deg : shape.right_deg;
     const double line =
         shape.height_m - std::tan(deg * std::numbers::pi / 180) * std::abs(i * step);
-    const double top = std::max(line, diameter_m);  // the run-out: one layer on the floor
+    const double top = std::max(std::min(line, shape.height_m - shape.top_cut_m),
+                                diameter_m);  // the run-out: one layer on the floor
     for (int layer = 0; layer < shape.depth_layers; ++layer) {
       const double y = layer * diameter_m;
       b.AddTop(x, y, top);

@@ -34,7 +34,7 @@ TEST_CASE("calibrate writes its outputs and resumes from the journal", "[dem][ca
   ScratchDir dir("calibrate_e2e");
   nlohmann::json study = ReadJson((RepoRoot() / "examples/calibrate_bp_rolling.json").string());
   study["experiment_file"] = (RepoRoot() / "examples/aor_bp.json").string();
-  study["measurement"]["dataset"] = (RepoRoot() / "datasets/alizadeh2018/repose_angles.csv").string();
+  study["measurement"]["dataset"] = (RepoRoot() / "datasets/alizadeh2018/measurements.csv").string();
   study["replicates"] = 1;
   std::ofstream(dir.str("study.json")) << study.dump(2);
 

@@ -19,7 +19,7 @@ namespace {
 json ExampleStudy() {
   json j = ReadJson((RepoRoot() / "examples/calibrate_bp_rolling.json").string());
   j["experiment_file"] = (RepoRoot() / "examples/aor_bp.json").string();
-  j["measurement"]["dataset"] = (RepoRoot() / "datasets/alizadeh2018/repose_angles.csv").string();
+  j["measurement"]["dataset"] = (RepoRoot() / "datasets/alizadeh2018/measurements.csv").string();
   return j;
 }
 
@@ -56,7 +56,7 @@ TEST_CASE("study file errors name the file and the field", "[unit][calibrate]") 
 
   j = ExampleStudy();
   j["measurement"]["material"] = "sugar";
-  CHECK(Load(dir, j, &ok).find("no row with material 'sugar'") != std::string::npos);
+  CHECK(Load(dir, j, &ok).find("no row with angle_deg of sugar") != std::string::npos);
 
   j = ExampleStudy();
   j["parameters"][0]["materials"] = {"BP", "glass"};

@@ -1,0 +1,41 @@
+#include "calibrate/condition.h"
+
+#include <cmath>
+#include <cstdlib>
+
+namespace demcal::calibrate {
+
+bool ParseConditionNumber(const std::string& text, double* out) {
+  if (text.empty()) return false;
+  char* end = nullptr;
+  *out = std::strtod(text.c_str(), &end);
+  return end == text.c_str() + text.size() && std::isfinite(*out);
+}
+
+bool SameConditionCell(const std::string& a, const std::string& b) {
+  double x = 0, y = 0;
+  if (ParseConditionNumber(a, &x) && ParseConditionNumber(b, &y))
+    return std::abs(x - y) <= 1e-12 * (1 + std::abs(x));
+  return a == b;
+}
+
+bool ConditionIncludes(const Condition& condition, const Condition& part) {
+  for (const auto& [column, cell] : part) {
+    auto it = condition.find(column);
+    if (it == condition.end() || !SameConditionCell(it->second, cell)) return false;
+  }
+  return true;
+}
+
+bool ConditionNumber(const Condition& condition, const std::string& column, double* out) {
+  auto it = condition.find(column);
+  return it != condition.end() && ParseConditionNumber(it->second, out);
+}
+
+std::string DescribeCondition(const Condition& condition) {
+  std::string text;
+  for (const auto& [column, cell] : condition) text += (text.empty() ? "" : ", ") + column + "=" + cell;
+  return text;
+}
+
+}  // namespace demcal::calibrate
