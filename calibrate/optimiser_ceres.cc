@@ -15,8 +15,9 @@
 // sensitivity moves the residual by kSignalToNoise = 4 times the noise over the step, so the
 // noise error of the derivative (≈ noise / (sqrt 2 · h) for a central difference) stays below a
 // quarter of it. kMinStep = 0.01 keeps a step when the simulation is noise-free; kMaxStep = 0.25
-// keeps the linearisation local. Central differences where both sides lie in the cube, one-sided
-// into the interior at a bound. The centre and all 2n (or n) offsets are requested as one batch.
+// keeps the linearisation local. Central differences where both sides lie in the cube and give a
+// value, one-sided from the centre at a bound or next to a failed sample. The centre and all
+// 2n (or n) offsets are requested as one batch.
 //
 // Stops: at the first candidate within noise (TrialResult::WithinNoise: no refining beyond noise),
 // at Ceres' own tolerances (converged), or when the next batch would exceed max_evaluations
@@ -30,6 +31,7 @@
 #include <map>
 #include <sstream>
 
+#include "calibrate/jacobian_svd.h"
 #include "calibrate/optimiser.h"
 
 namespace demcal::calibrate {
@@ -103,22 +105,24 @@ class FiniteDifferenceCost final : public ceres::CostFunction {
     if (trials_->stop()) return false;  // the callback ends the solve
     const std::vector<double> x(parameters[0], parameters[0] + n_);
     std::vector<std::vector<double>> points{x};
-    std::vector<int> lo(n_), hi(n_);  // indices of the offset points (−1: the centre)
+    std::vector<int> lo(n_, 0), hi(n_, 0);  // indices of the offset points (0: the centre)
     const bool jacobian = jacobians && jacobians[0];
     if (jacobian)
       for (int k = 0; k < n_; ++k) {
-        lo[k] = hi[k] = 0;
         if (x[k] + step_ <= 1) hi[k] = Push(x, k, step_, &points);
         if (x[k] - step_ >= 0) lo[k] = Push(x, k, -step_, &points);
       }
     if (!trials_->Ensure(points)) return false;
-    for (const auto& p : points)
-      if (!trials_->At(p).ok) return false;
     const TrialResult& c = trials_->At(x);
+    if (!c.ok) return false;
     const int m = num_residuals();
     for (int i = 0; i < m; ++i) residuals[i] = weights_[i] * c.residuals[i];
     if (!jacobian) return true;
     for (int k = 0; k < n_; ++k) {
+      // Central where both offsets gave a value, else one-sided from the centre.
+      if (!trials_->At(points[hi[k]]).ok) hi[k] = 0;
+      if (!trials_->At(points[lo[k]]).ok) lo[k] = 0;
+      if (hi[k] == lo[k]) return false;  // neither side gave a value: infeasible here
       const TrialResult& a = trials_->At(points[lo[k]]);
       const TrialResult& b = trials_->At(points[hi[k]]);
       const double du = points[hi[k]][k] - points[lo[k]][k];
@@ -153,10 +157,30 @@ class StopWhenTold final : public ceres::IterationCallback {
 };
 
 // ceres::Covariance of the unit parameters at `best` (DENSE_SVD; false on a rank-deficient J).
-void Covariance(ceres::Problem* problem, double* x, const std::vector<double>& best,
-                OptimiserResult* result) {
+void Covariance(ceres::Problem* problem, const ceres::CostFunction& cost, double* x,
+                const std::vector<double>& best, OptimiserResult* result) {
   const int n = static_cast<int>(best.size());
   std::copy(best.begin(), best.end(), x);
+  // ceres::Covariance does not survive a failing Evaluate: try the Jacobian here first.
+  std::vector<double> r(cost.num_residuals()), j(cost.num_residuals() * n);
+  double* jacobians[] = {j.data()};
+  const double* parameters[] = {x};
+  if (!cost.Evaluate(parameters, r.data(), jacobians)) {
+    result->covariance_note =
+        "ceres::Covariance: not computed (the finite-difference points of the best candidate "
+        "are beyond the budget or gave no value)";
+    return;
+  }
+  // ceres::Covariance's DENSE_SVD sees only min(m, n) singular values, so fewer residuals than
+  // parameters would pass as full rank: judge the rank on the Jacobian itself.
+  const Eigen::MatrixXd jacobian = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic,
+      Eigen::Dynamic, Eigen::RowMajor>>(j.data(), cost.num_residuals(), n);
+  if (DecomposeJacobian(jacobian).rank < n) {
+    result->covariance_note =
+        "ceres::Covariance: not computed (rank-deficient Jacobian: some parameter combination is "
+        "not determined)";
+    return;
+  }
   ceres::Covariance::Options options;
   options.algorithm_type = ceres::DENSE_SVD;
   options.null_space_rank = 0;  // a rank-deficient Jacobian fails rather than give fake σ
@@ -164,8 +188,8 @@ void Covariance(ceres::Problem* problem, double* x, const std::vector<double>& b
   const std::vector<std::pair<const double*, const double*>> blocks{{x, x}};
   if (!covariance.Compute(blocks, problem)) {
     result->covariance_note =
-        "ceres::Covariance: not computed (rank-deficient Jacobian, an infeasible sample or the "
-        "budget at the finite-difference points of the best candidate)";
+        "ceres::Covariance: not computed (rank-deficient Jacobian: some parameter combination is "
+        "not determined)";
     return;
   }
   result->covariance_unit.assign(n * n, 0.0);
@@ -205,7 +229,8 @@ OptimiserResult CeresOptimise(const BatchTrialFunction& trial, const std::vector
   const double step = std::clamp(kSignalToNoise * noise_max / kMinSensitivity, kMinStep, kMaxStep);
 
   ceres::Problem problem;
-  problem.AddResidualBlock(new FiniteDifferenceCost(&trials, weights, step, n), nullptr, x.data());
+  auto* cost = new FiniteDifferenceCost(&trials, weights, step, n);  // owned by the problem
+  problem.AddResidualBlock(cost, nullptr, x.data());
   for (int k = 0; k < n; ++k) {
     problem.SetParameterLowerBound(x.data(), k, 0.0);
     problem.SetParameterUpperBound(x.data(), k, 1.0);
@@ -244,7 +269,7 @@ OptimiserResult CeresOptimise(const BatchTrialFunction& trial, const std::vector
   // The covariance's Jacobian at the best candidate: its finite-difference points are usually
   // known already; missing ones are evaluated only if the budget still allows.
   trials.Release();
-  if (!result.best_unit.empty()) Covariance(&problem, x.data(), result.best_unit, &result);
+  if (!result.best_unit.empty()) Covariance(&problem, *cost, x.data(), result.best_unit, &result);
   return result;
 }
 

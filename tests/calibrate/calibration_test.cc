@@ -110,9 +110,15 @@ TEST_CASE("two parameters against one measurement: matched, but reported as a va
   options.optimiser = "nlopt_bobyqa";
   options.optimiser_options.max_evaluations = 40;
   const CalibrationSummary s = Run(angle, space, 40.0, options);
+  INFO(s.uncertainty_note);
   CHECK(s.termination == "within_noise");
-  CHECK(s.uncertainty.empty());
+  REQUIRE(s.estimates.size() == 2);
+  for (size_t k = 0; k < 2; ++k) {
+    CHECK_FALSE(s.estimates[k].identifiable);
+    CHECK(s.uncertainty[k] == 0);  // the single-target field: 0 when not identifiable
+  }
   CHECK(s.uncertainty_note.find("valley") != std::string::npos);
+  CHECK(s.uncertainty_note.find("mu_s and mu_r trade off") != std::string::npos);
 }
 
 TEST_CASE("calibration options are checked before anything runs", "[unit][calibrate]") {
