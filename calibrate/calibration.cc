@@ -1,117 +1,182 @@
 #include "calibrate/calibration.h"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <sstream>
+#include <limits>
+#include <set>
+
+#include "calibrate/parameter_covariance.h"
+#include "calibrate/replicated_candidate_evaluator.h"
 
 namespace demcal::calibrate {
 namespace {
 
-TrialResult Standardise(const Evaluation& e, const Measurement& m) {
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Standardised residuals; a missing or non-finite value is an infeasible sample.
+TrialResult Standardise(const CandidateResult& c, const std::vector<Target>& targets) {
   TrialResult t;
-  t.ok = e.ok();
-  if (!t.ok) return t;
-  t.residuals = {(e.summary.mean - m.value) / m.uncertainty};
-  t.noise = {e.summary.sem / m.uncertainty};
+  if (!c.ok() || c.targets.size() != targets.size()) return t;
+  for (size_t k = 0; k < targets.size(); ++k) {
+    const double r = (c.targets[k].mean - targets[k].value) / targets[k].uncertainty;
+    const double noise = c.targets[k].sem / targets[k].uncertainty;
+    if (!std::isfinite(r) || !std::isfinite(noise)) return TrialResult{};
+    t.residuals.push_back(r);
+    t.noise.push_back(noise);
+  }
+  t.ok = true;
   return t;
 }
 
-// Slope of the observable against the single parameter: least-squares line through the best
-// evaluation and its nearest (up to 3) neighbours with other parameter values.
-void LocalSensitivity(const Measurement& m, CalibrationSummary* s) {
-  if (s->best < 0) return;
-  const Evaluation& best = s->history[s->best];
-  if (best.parameters.size() != 1) {
-    s->uncertainty_note = "not given: " + std::to_string(best.parameters.size()) +
-                          " parameters against one measurement match along a valley, not at a "
-                          "point; add a second measurement to fix them";
+std::string Validate(const ParameterSpace& space, const std::vector<Target>& targets,
+                     const CalibrationOptions& options, Optimiser* optimise) {
+  std::string error;
+  if (!FindOptimiser(options.optimiser, optimise)) return "optimiser: unknown '" + options.optimiser + "'";
+  if (space.Size() == 0) return "parameters: at least one parameter is needed";
+  if (targets.empty()) return "targets: at least one target is needed";
+  std::set<std::string> names;
+  for (size_t k = 0; k < targets.size(); ++k) {
+    const std::string at = "targets[" + std::to_string(k) + "]";
+    if (!(targets[k].uncertainty > 0 && std::isfinite(targets[k].uncertainty)))
+      return at + ".uncertainty: must be finite and > 0";
+    if (!std::isfinite(targets[k].value)) return at + ".value: must be finite";
+    if (!names.insert(targets[k].name).second) return at + ".name: '" + targets[k].name + "' is used twice";
+  }
+  if (!options.optimiser_options.IsValid(&error)) return error;
+  if (!options.response_surface.IsValid(&error)) return "response_surface." + error;
+  return "";
+}
+
+// J at the best (response surface, rows weighted by 1/sqrt(1 + noise²)), σ and correlations,
+// identifiability.
+void Analyse(const ParameterSpace& space, const std::vector<Target>& targets,
+             const CalibrationOptions& options, const OptimiserResult& r, CalibrationSummary* s) {
+  const Candidate& best = s->candidates[s->best];
+  const size_t n = space.Size();
+  std::vector<std::string> names;
+  for (const Parameter& p : space.parameters) names.push_back(p.name);
+  const std::vector<double> scale = SiPerUnit(space, best.unit);
+  for (size_t k = 0; k < targets.size(); ++k) {
+    const TargetValue& v = best.result.targets[k];
+    s->residuals.push_back({targets[k].name, targets[k].observable, targets[k].value,
+                            targets[k].uncertainty, v.mean, v.sem, best.trial.residuals[k],
+                            std::abs(best.trial.residuals[k]) <=
+                                std::sqrt(1 + best.trial.noise[k] * best.trial.noise[k])});
+  }
+  for (size_t k = 0; k < n; ++k) s->estimates.push_back({names[k], best.parameters[k], kInf, false});
+  std::vector<Sample> samples;
+  for (const Candidate& c : s->candidates) samples.push_back({c.unit, c.trial});
+  const ResponseSurface surface = FitResponseSurface(samples, best.unit, options.response_surface);
+  s->jacobian_note = surface.message;
+  if (!surface.ok) {
+    s->covariance_note = "not given: " + surface.message;
     return;
   }
-  std::vector<const Evaluation*> near;
-  for (const Evaluation& e : s->history)
-    if (e.ok()) near.push_back(&e);
-  std::sort(near.begin(), near.end(), [&](const Evaluation* a, const Evaluation* b) {
-    return std::abs(a->parameters[0] - best.parameters[0]) < std::abs(b->parameters[0] - best.parameters[0]);
-  });
-  near.resize(std::min<size_t>(near.size(), 4));
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (const Evaluation* e : near) {
-    sx += e->parameters[0], sy += e->summary.mean;
-    sxx += e->parameters[0] * e->parameters[0], sxy += e->parameters[0] * e->summary.mean;
+  s->jacobian = surface.jacobian;
+  s->jacobian_sigma = surface.jacobian_sigma;
+  for (size_t i = 0; i < targets.size(); ++i) {
+    const double w = 1 / std::sqrt(1 + best.trial.noise[i] * best.trial.noise[i]);
+    s->jacobian.row(i) *= w;
+    s->jacobian_sigma.row(i) *= w;
   }
-  const double n = static_cast<double>(near.size()), det = n * sxx - sx * sx;
-  if (near.size() < 2 || !(std::abs(det) > 0)) {
-    s->uncertainty_note = "not given: fewer than two distinct candidates near the best";
-    return;
+  s->identifiability = AnalyseIdentifiability(s->jacobian, names, scale);
+  ParameterCovariance c = CovarianceFromJacobian(s->jacobian, scale);
+  const bool ceres_cov = r.covariance_unit.size() == n * n && c.rank == static_cast<int>(n) &&
+                         r.best_unit == best.unit;
+  if (ceres_cov) {
+    c = CovarianceFromUnit(Eigen::Map<const Eigen::MatrixXd>(r.covariance_unit.data(), n, n), scale);
+    c.note = r.covariance_note;
+  } else {
+    c.note += " (" + surface.message + ")";
   }
-  const double slope = (n * sxy - sx * sy) / det;
-  const double sigma = std::hypot(m.uncertainty, best.summary.sem);
-  s->sensitivity = {slope};
-  if (!(std::abs(slope) > 0)) {
-    s->uncertainty = {0};
-    s->uncertainty_note = "not identifiable: the observable does not change with the parameter here";
-    return;
+  s->covariance_note = c.note;
+  s->covariance = c.covariance;
+  s->correlation = c.correlation;
+  for (size_t k = 0; k < n; ++k) {
+    s->estimates[k].sigma = c.sigma[k];
+    s->estimates[k].identifiable = c.identifiable[k];
   }
-  s->uncertainty = {sigma / std::abs(slope)};
-  s->uncertainty_note = "sqrt(u_measured^2 + sem_simulated^2) / |slope|, slope fitted through the " +
-                        std::to_string(near.size()) + " candidates nearest the best";
 }
 
 }  // namespace
 
-CalibrationSummary Calibrate(ReplicatedEvaluator& evaluator, const ParameterSpace& space,
-                             const Measurement& measurement, const CalibrationOptions& options,
-                             const CalibrationProgress& progress) {
+CalibrationSummary Calibrate(CandidateEvaluator& evaluator, const ParameterSpace& space,
+                             const std::vector<Target>& targets, const CalibrationOptions& options,
+                             const CandidateProgress& progress) {
   CalibrationSummary s;
   Optimiser optimise = nullptr;
-  std::string error;
-  if (!FindOptimiser(options.optimiser, &optimise)) error = "optimiser: unknown '" + options.optimiser + "'";
-  else if (!(measurement.uncertainty > 0)) error = "measurement.uncertainty: must be > 0";
-  else options.optimiser_options.IsValid(&error);
+  const std::string error = Validate(space, targets, options, &optimise);
   if (!error.empty()) {
     s.termination = "invalid";
     s.message = error;
     return s;
   }
   const auto start = std::chrono::steady_clock::now();
-  auto trial = [&](const std::vector<double>& unit) {
-    std::string journal_error;
-    const Evaluation& e = s.history.emplace_back(evaluator.Evaluate(space.FromUnit(unit), &journal_error));
-    if (s.journal_error.empty()) s.journal_error = journal_error;
-    s.replicates_reused += e.reused;
-    s.replicates_run += static_cast<int>(e.runs.size()) - e.reused;
-    const TrialResult t = Standardise(e, measurement);
-    if (progress)
-      progress(e, t, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    return t;
+  auto batch = [&](const std::vector<std::vector<double>>& units) {
+    std::vector<std::vector<double>> si;
+    for (const auto& u : units) si.push_back(space.FromUnit(u));
+    std::vector<CandidateResult> results = evaluator.EvaluateBatch(si);
+    ++s.batches;
+    std::vector<TrialResult> trials;
+    for (size_t i = 0; i < units.size(); ++i) {
+      Candidate& c = s.candidates.emplace_back();
+      c.index = static_cast<int>(s.candidates.size()) - 1;
+      c.parameters = si[i];
+      c.unit = units[i];
+      if (i < results.size()) c.result = std::move(results[i]);
+      else c.result.status = "no_result";  // the evaluator answered fewer candidates
+      c.trial = Standardise(c.result, targets);
+      s.replicates_run += c.result.replicates_run;
+      s.replicates_reused += c.result.replicates_reused;
+      if (s.journal_error.empty()) s.journal_error = c.result.journal_error;
+      trials.push_back(c.trial);
+      if (progress)
+        progress(c, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    return trials;
   };
-  const OptimiserResult r = optimise(trial, space.ToUnit(space.Start()), options.optimiser_options);
+  const OptimiserResult r = optimise(batch, space.ToUnit(space.Start()), options.optimiser_options);
   s.termination = r.termination;
   s.message = r.message;
-  for (const Evaluation& e : s.history) {  // the best candidate: the smallest |residual|
-    const TrialResult t = Standardise(e, measurement);
-    if (t.ok && (s.best < 0 || std::abs(t.residuals[0]) < std::abs(s.best_residual)))
-      s.best = e.index, s.best_residual = t.residuals[0];
-  }
-  LocalSensitivity(measurement, &s);
+  for (const Candidate& c : s.candidates)  // the best: the smallest Σ residual², first on ties
+    if (c.trial.ok && (s.best < 0 || c.trial.Cost() < s.candidates[s.best].trial.Cost())) s.best = c.index;
+  if (s.best >= 0) Analyse(space, targets, options, r, &s);
   return s;
 }
 
-std::string CalibrationSummary::BriefReport(const ParameterSpace& space, const Measurement& m) const {
-  std::ostringstream out;
-  out.precision(4);
-  out << "calibration: " << termination << " (" << message << "), " << history.size()
-      << " candidates, " << replicates_run << " replicate runs (+" << replicates_reused
-      << " from the journal)\n";
-  if (best < 0) return out.str();
-  const Evaluation& e = history[best];
-  out << "best: " << space.Describe(e.parameters) << " -> " << m.observable << " = " << e.summary.mean
-      << " +- " << e.summary.sem << " (measured " << m.value << " +- " << m.uncertainty << ")\n";
-  for (size_t k = 0; k < uncertainty.size(); ++k)
-    out << "uncertainty: " << space.parameters[k].name << " +- " << uncertainty[k] << "\n";
-  if (!uncertainty_note.empty()) out << "uncertainty: " << uncertainty_note << "\n";
-  return out.str();
+CalibrationSummary Calibrate(ReplicatedEvaluator& evaluator, const ParameterSpace& space,
+                             const Measurement& measurement, const CalibrationOptions& options,
+                             const CalibrationProgress& progress) {
+  ReplicatedCandidateEvaluator adapter(&evaluator);
+  const Target target{measurement.observable, measurement.observable, measurement.value,
+                      measurement.uncertainty, measurement.source};
+  CandidateProgress each;
+  if (progress)
+    each = [&](const Candidate& c, double elapsed) {
+      progress(adapter.evaluations()[c.index], c.trial, elapsed);
+    };
+  CalibrationSummary s = Calibrate(adapter, space, {target}, options, each);
+  s.history = adapter.evaluations();
+  if (s.best < 0) return s;
+  s.best_residual = s.candidates[s.best].trial.residuals[0];
+  if (s.jacobian.rows() != 1) {
+    s.uncertainty_note = "not given: " + s.covariance_note;
+    return s;
+  }
+  const std::vector<double> scale = SiPerUnit(space, s.candidates[s.best].unit);
+  const double noise = s.candidates[s.best].trial.noise[0];
+  bool all = true;
+  for (size_t k = 0; k < space.Size(); ++k) {
+    // J is weighted by 1/sqrt(1 + noise²); undo it for the observable's own slope.
+    s.sensitivity.push_back(s.jacobian(0, k) * std::sqrt(1 + noise * noise) *
+                            measurement.uncertainty / scale[k]);
+    s.uncertainty.push_back(s.estimates[k].identifiable ? s.estimates[k].sigma : 0.0);
+    all = all && s.estimates[k].identifiable;
+  }
+  s.uncertainty_note =
+      all ? "sqrt(u_measured^2 + sem_simulated^2) / |slope|: " + s.covariance_note
+          : "not identifiable: the targets leave a valley: " + s.identifiability.summary;
+  return s;
 }
 
 }  // namespace demcal::calibrate

@@ -1,24 +1,43 @@
 #pragma once
-// Calibrate: tune the parameters of a ParameterSpace so that a replicated observable matches
-// a measurement, with an optimiser from the registry; every evaluation is journalled (via the
-// evaluator), reported through a progress callback, and kept in the summary, which also gives
-// the calibrated value's uncertainty from the local sensitivity (one parameter):
-//   σ_θ = sqrt(u_measured² + sem_simulated²) / |d observable / dθ|,
-// the slope fitted through the evaluations nearest the best. With more parameters than
-// measurements the match is a valley, not a point; the summary says so rather than pretend.
+// Calibrate: tune the parameters of a ParameterSpace so that the simulated observables match a
+// list of measured targets, with an optimiser from the registry (optimiser.h). Candidates are
+// asked for in batches from a CandidateEvaluator (which runs, journals and resumes the
+// simulations); every candidate is reported through a progress callback and kept in the
+// summary. At the best candidate the summary gives:
+//  - per-target residuals, standardised by the measurement uncertainty;
+//  - the sensitivity matrix J (response_surface.h, fitted to the evaluated candidates near the
+//    best; each row divided by sqrt(1 + noise²), so measurement and simulation noise both count);
+//  - parameters with σ (SI) and correlations: ceres::Covariance when the "ceres" optimiser
+//    computed it, else the SVD pseudo-inverse of JᵀJ (parameter_covariance.h); a rank-deficient J
+//    gives σ = +∞ and "not identifiable", never a fake finite σ;
+//  - the identifiability report (identifiability.h): singular values, condition number and the
+//    parameter combinations the targets leave undetermined, in words.
 //
-//   CalibrationSummary s = Calibrate(evaluator, space, measurement, options, progress);
-//   std::cerr << s.BriefReport();
+//   CalibrationSummary s = Calibrate(evaluator, space, targets, options, progress);
+//   std::cerr << s.BriefReport(space);
+//
+// The single-target form over a ReplicatedEvaluator (the `demcal calibrate` command) is kept: it
+// adapts the evaluator (replicated_candidate_evaluator.h) and fills the single-target fields
+// (history, best_residual, sensitivity, uncertainty) too.
+//
+// Thread-safety: Calibrate runs on the calling thread; the evaluator parallelises.
 #include <functional>
 #include <string>
 #include <vector>
 
+#include <Eigen/Dense>
+
+#include "calibrate/candidate_evaluator.h"
+#include "calibrate/identifiability.h"
 #include "calibrate/optimiser.h"
 #include "calibrate/parameter_space.h"
 #include "calibrate/replicated_evaluator.h"
+#include "calibrate/response_surface.h"
+#include "calibrate/target.h"
 
 namespace demcal::calibrate {
 
+// The single measurement of a one-target study (kept for the `calibrate` command's study file).
 struct Measurement {
   std::string observable;   // e.g. "angle_deg"
   double value = 0;         // SI or the observable's unit
@@ -29,28 +48,72 @@ struct Measurement {
 struct CalibrationOptions {
   std::string optimiser = "bracket";
   OptimiserOptions optimiser_options;
+  ResponseSurfaceOptions response_surface;
 };
 
-// Called after every evaluation (the journal already holds it).
+// One candidate the optimiser asked for.
+struct Candidate {
+  int index = 0;                   // 0, 1, ... in the order asked
+  std::vector<double> parameters;  // SI
+  std::vector<double> unit;        // unit cube
+  CandidateResult result;
+  TrialResult trial;               // standardised residuals (ok = false: infeasible)
+};
+
+struct TargetResidual {
+  std::string name, observable;
+  double measured = 0, uncertainty = 0, simulated = 0, sem = 0;
+  double residual = 0;   // (simulated − measured) / uncertainty
+  bool within_noise = false;  // |residual| ≤ sqrt(1 + (sem/uncertainty)²)
+};
+
+struct ParameterEstimate {
+  std::string name;
+  double value = 0;           // SI, at the best candidate
+  double sigma = 0;           // SI; +∞ when not determined (rank-deficient J or no J)
+  bool identifiable = false;  // finite σ within the bounds' own spread (parameter_covariance.h)
+};
+
+// Called after every candidate (the journal already holds its replicates).
+using CandidateProgress = std::function<void(const Candidate& candidate, double elapsed_s)>;
+// The single-target form's callback.
 using CalibrationProgress =
     std::function<void(const Evaluation& evaluation, const TrialResult& trial, double elapsed_s)>;
 
 struct CalibrationSummary {
   std::string termination = "failed";  // the optimiser's (optimiser.h), or "invalid"
   std::string message = "Calibrate was not called";
-  std::vector<Evaluation> history;     // in the order evaluated
-  int best = -1;                       // index into history, −1 if no candidate gave a value
-  double best_residual = 0;            // (simulated − measured) / uncertainty at the best
-  // One parameter: sensitivity d observable / dθ and σ_θ (0 when not identifiable).
-  std::vector<double> sensitivity;
-  std::vector<double> uncertainty;
-  std::string uncertainty_note;        // how σ_θ was obtained, or why it is not given
+  std::vector<Candidate> candidates;   // in the order evaluated
+  int best = -1;                       // index into candidates, −1 if none gave a value
+  int batches = 0;
+  std::vector<TargetResidual> residuals;     // per target at the best
+  std::vector<ParameterEstimate> estimates;  // per parameter
+  Eigen::MatrixXd correlation;         // n×n, NaN where undefined (σ = +∞)
+  Eigen::MatrixXd covariance;          // SI, n×n, NaN where undefined
+  std::string covariance_note;         // how σ was obtained, or why it is not given
+  Eigen::MatrixXd jacobian;            // targets × parameters, standardised, per unit cube
+  Eigen::MatrixXd jacobian_sigma;      // its standard errors
+  std::string jacobian_note;
+  IdentifiabilityReport identifiability;
   int replicates_run = 0;
   int replicates_reused = 0;           // found in the journal (resumed work)
   std::string journal_error;           // first failure to write the journal ("" if none)
+
+  // Single-target form only: the evaluations (history[i] is candidates[i]) and its scalars.
+  std::vector<Evaluation> history;
+  double best_residual = 0;            // (simulated − measured) / uncertainty at the best
+  std::vector<double> sensitivity;     // d observable / dθ (observable unit per SI unit)
+  std::vector<double> uncertainty;     // σ_θ, SI (0 when not identifiable)
+  std::string uncertainty_note;        // how σ_θ was obtained, or why it is not given
+
   bool ok() const { return best >= 0 && termination == "within_noise"; }
+  std::string BriefReport(const ParameterSpace& space) const;
   std::string BriefReport(const ParameterSpace& space, const Measurement& m) const;
 };
+
+CalibrationSummary Calibrate(CandidateEvaluator& evaluator, const ParameterSpace& space,
+                             const std::vector<Target>& targets, const CalibrationOptions& options,
+                             const CandidateProgress& progress = {});
 
 CalibrationSummary Calibrate(ReplicatedEvaluator& evaluator, const ParameterSpace& space,
                              const Measurement& measurement, const CalibrationOptions& options,

@@ -1,23 +1,32 @@
 #pragma once
 // Optimisers: search the unit cube of a ParameterSpace for the candidate whose simulated
-// observables match the measured ones. They see a black box that maps a unit-cube point to
+// observables match the measured ones. They see a black box that maps unit-cube points to
 // standardised residuals (simulated − measured) / measurement uncertainty, with the simulation's
 // own noise (its standard error, in the same units) alongside, or reports a failed sample.
 // A candidate whose every |residual| is within sqrt(1 + noise²) matches "within noise", and no
 // optimiser refines beyond that: two numbers closer than their noise are not told apart.
+//
+// The black box takes a *batch* of points (BatchTrialFunction): the caller evaluates them
+// concurrently (replicates and candidates of a batch side by side). Sequential optimisers ask
+// for one point at a time; the batch ones (ceres' finite differences, differential_evolution's
+// generations) ask for several. Every optimiser is deterministic: the same inputs and the same
+// answers give the same sequence of batches, so a rerun after a kill asks for the same
+// candidates and finds them in the journal.
 //
 // An optimiser is one file defining a function of type Optimiser, registered by name in
 // optimiser_registry.cc.
 //
 //   Optimiser optimise;
 //   if (!FindOptimiser("bracket", &optimise)) ...;
-//   OptimiserResult r = optimise(trial, space.ToUnit(space.Start()), {.max_evaluations = 15});
+//   OptimiserResult r = optimise(batch_trial, space.ToUnit(space.Start()), {.max_evaluations = 15});
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
 
 namespace demcal::calibrate {
 
+// One candidate's answer. Thread-safety: a plain value.
 struct TrialResult {
   bool ok = false;                // false: the simulation gave no value here (infeasible)
   std::vector<double> residuals;  // (simulated − measured) / measurement uncertainty
@@ -27,11 +36,24 @@ struct TrialResult {
   double Cost() const;  // Σ residual²
 };
 
+// Unit-cube points in, one TrialResult per point out (same order). A NaN residual must be
+// reported as ok = false by the caller; optimisers also treat a non-finite residual so.
+using BatchTrialFunction =
+    std::function<std::vector<TrialResult>(const std::vector<std::vector<double>>& units)>;
+// One-point convenience for tests and sequential callers.
 using TrialFunction = std::function<TrialResult(const std::vector<double>& unit)>;
+BatchTrialFunction Batched(TrialFunction trial);
+// Asks `batch` for one point; a malformed answer (wrong count, non-finite residual) is a
+// failed sample.
+TrialResult EvaluateOne(const BatchTrialFunction& batch, const std::vector<double>& unit);
 
+// Options shared by every optimiser. Defaults suit a few-parameter DEM calibration.
 struct OptimiserOptions {
-  int max_evaluations = 20;     // candidates the optimiser may ask for (journal hits included)
+  int max_evaluations = 20;       // candidates the optimiser may ask for (journal hits included)
   double unit_tolerance = 0.002;  // stop when the search interval / step is this small (unit cube)
+  int batch_size = 4;             // candidates per batch of the batch optimisers, in [1, 1024];
+                                  // set it >= the cores that evaluate them
+  uint64_t seed = 1;              // for the optimisers that draw (differential_evolution)
   bool IsValid(std::string* error) const;
 };
 
@@ -43,18 +65,32 @@ struct OptimiserResult {
   std::vector<double> best_unit;  // the best candidate evaluated
   double best_cost = 0;
   int evaluations = 0;
+  int batches = 0;
+  // Filled by optimisers that estimate it (ceres: ceres::Covariance at the best candidate):
+  // covariance of the unit-cube parameters, n×n row-major, empty when not computed, with why.
+  std::vector<double> covariance_unit;
+  std::string covariance_note;
 };
 
-using Optimiser = OptimiserResult (*)(const TrialFunction& trial, const std::vector<double>& start_unit,
+using Optimiser = OptimiserResult (*)(const BatchTrialFunction& trial,
+                                      const std::vector<double>& start_unit,
                                       const OptimiserOptions& options);
 
 bool FindOptimiser(const std::string& name, Optimiser* out);
 std::vector<std::string> OptimiserNames();
 
 // The optimisers (each in its own file).
-OptimiserResult BracketOptimise(const TrialFunction&, const std::vector<double>&, const OptimiserOptions&);
-OptimiserResult NloptBobyqa(const TrialFunction&, const std::vector<double>&, const OptimiserOptions&);
-OptimiserResult NloptCobyla(const TrialFunction&, const std::vector<double>&, const OptimiserOptions&);
-OptimiserResult NloptNelderMead(const TrialFunction&, const std::vector<double>&, const OptimiserOptions&);
+OptimiserResult BracketOptimise(const BatchTrialFunction&, const std::vector<double>&,
+                                const OptimiserOptions&);
+OptimiserResult NloptBobyqa(const BatchTrialFunction&, const std::vector<double>&,
+                            const OptimiserOptions&);
+OptimiserResult NloptCobyla(const BatchTrialFunction&, const std::vector<double>&,
+                            const OptimiserOptions&);
+OptimiserResult NloptNelderMead(const BatchTrialFunction&, const std::vector<double>&,
+                                const OptimiserOptions&);
+OptimiserResult CeresOptimise(const BatchTrialFunction&, const std::vector<double>&,
+                              const OptimiserOptions&);
+OptimiserResult DifferentialEvolution(const BatchTrialFunction&, const std::vector<double>&,
+                                      const OptimiserOptions&);
 
 }  // namespace demcal::calibrate

@@ -27,13 +27,14 @@ struct Point {
 
 class Search {
  public:
-  Search(const TrialFunction& f, const OptimiserOptions& o) : f_(f), options_(o) {}
+  Search(const BatchTrialFunction& f, const OptimiserOptions& o) : f_(f), options_(o) {}
 
   bool Budget() const { return result_.evaluations >= options_.max_evaluations; }
   // Evaluates u; false if the trial failed (result_ says why).
   bool Eval(double u, Point* p) {
     p->u = u;
-    p->trial = f_({u});
+    p->trial = EvaluateOne(f_, {u});
+    ++result_.batches;
     ++result_.evaluations;
     if (!p->trial.ok || p->trial.residuals.size() != 1) return false;
     if (result_.best_unit.empty() || p->trial.Cost() < result_.best_cost) {
@@ -63,7 +64,7 @@ class Search {
   }
   bool retreated_ = false;
   OptimiserResult Refine(Point a, Point b);
-  const TrialFunction& f_;
+  const BatchTrialFunction& f_;
   const OptimiserOptions& options_;
   OptimiserResult result_;
 };
@@ -121,7 +122,7 @@ OptimiserResult Search::Refine(Point a, Point b) {
 
 }  // namespace
 
-OptimiserResult BracketOptimise(const TrialFunction& trial, const std::vector<double>& start_unit,
+OptimiserResult BracketOptimise(const BatchTrialFunction& trial, const std::vector<double>& start_unit,
                                 const OptimiserOptions& options) {
   Search search(trial, options);
   if (start_unit.size() != 1)

@@ -15,7 +15,7 @@ namespace {
 
 constexpr double kFailedCost = 1e6;
 
-OptimiserResult Run(nlopt::algorithm algorithm, const TrialFunction& trial,
+OptimiserResult Run(nlopt::algorithm algorithm, const BatchTrialFunction& trial,
                     const std::vector<double>& start_unit, const OptimiserOptions& options) {
   OptimiserResult result;
   bool matched = false;
@@ -27,8 +27,9 @@ OptimiserResult Run(nlopt::algorithm algorithm, const TrialFunction& trial,
   opt.set_xtol_abs(options.unit_tolerance);
   opt.set_initial_step(std::vector<double>(n, 0.25));
   auto objective = [&](const std::vector<double>& u) {
-    const TrialResult t = trial(u);
+    const TrialResult t = EvaluateOne(trial, u);
     ++result.evaluations;
+    ++result.batches;
     const double cost = t.ok ? t.Cost() : kFailedCost;
     if (t.ok && (result.best_unit.empty() || cost < result.best_cost)) {
       result.best_unit = u;
@@ -70,13 +71,13 @@ OptimiserResult Run(nlopt::algorithm algorithm, const TrialFunction& trial,
 
 }  // namespace
 
-OptimiserResult NloptBobyqa(const TrialFunction& t, const std::vector<double>& s, const OptimiserOptions& o) {
+OptimiserResult NloptBobyqa(const BatchTrialFunction& t, const std::vector<double>& s, const OptimiserOptions& o) {
   return Run(nlopt::LN_BOBYQA, t, s, o);
 }
-OptimiserResult NloptCobyla(const TrialFunction& t, const std::vector<double>& s, const OptimiserOptions& o) {
+OptimiserResult NloptCobyla(const BatchTrialFunction& t, const std::vector<double>& s, const OptimiserOptions& o) {
   return Run(nlopt::LN_COBYLA, t, s, o);
 }
-OptimiserResult NloptNelderMead(const TrialFunction& t, const std::vector<double>& s, const OptimiserOptions& o) {
+OptimiserResult NloptNelderMead(const BatchTrialFunction& t, const std::vector<double>& s, const OptimiserOptions& o) {
   return Run(nlopt::LN_NELDERMEAD, t, s, o);
 }
 

@@ -1,4 +1,5 @@
 #include <cmath>
+#include <utility>
 
 #include "calibrate/optimiser.h"
 
@@ -15,6 +16,8 @@ constexpr Entry kOptimisers[] = {
     {"nlopt_bobyqa", NloptBobyqa},
     {"nlopt_cobyla", NloptCobyla},
     {"nlopt_neldermead", NloptNelderMead},
+    {"ceres", CeresOptimise},
+    {"differential_evolution", DifferentialEvolution},
 };
 
 }  // namespace
@@ -34,6 +37,24 @@ double TrialResult::Cost() const {
   return cost;
 }
 
+BatchTrialFunction Batched(TrialFunction trial) {
+  return [trial = std::move(trial)](const std::vector<std::vector<double>>& units) {
+    std::vector<TrialResult> out;
+    out.reserve(units.size());
+    for (const std::vector<double>& u : units) out.push_back(trial(u));
+    return out;
+  };
+}
+
+TrialResult EvaluateOne(const BatchTrialFunction& batch, const std::vector<double>& unit) {
+  std::vector<TrialResult> out = batch({unit});
+  if (out.size() != 1) return {};
+  TrialResult t = std::move(out[0]);
+  for (double r : t.residuals)
+    if (!std::isfinite(r)) t.ok = false;
+  return t;
+}
+
 bool OptimiserOptions::IsValid(std::string* error) const {
   if (max_evaluations < 1 || max_evaluations > 100000) {
     if (error) *error = "max_evaluations: must be in [1, 100000]";
@@ -41,6 +62,10 @@ bool OptimiserOptions::IsValid(std::string* error) const {
   }
   if (!(unit_tolerance > 0 && unit_tolerance < 0.5)) {
     if (error) *error = "unit_tolerance: must be in (0, 0.5)";
+    return false;
+  }
+  if (batch_size < 1 || batch_size > 1024) {
+    if (error) *error = "batch_size: must be in [1, 1024]";
     return false;
   }
   return true;

@@ -110,9 +110,15 @@ TEST_CASE("two parameters against one measurement: matched, but reported as a va
   options.optimiser = "nlopt_bobyqa";
   options.optimiser_options.max_evaluations = 40;
   const CalibrationSummary s = Run(angle, space, 40.0, options);
+  INFO(s.uncertainty_note);
   CHECK(s.termination == "within_noise");
-  CHECK(s.uncertainty.empty());
+  REQUIRE(s.estimates.size() == 2);
+  for (size_t k = 0; k < 2; ++k) {
+    CHECK_FALSE(s.estimates[k].identifiable);
+    CHECK(s.uncertainty[k] == 0);  // the single-target field: 0 when not identifiable
+  }
   CHECK(s.uncertainty_note.find("valley") != std::string::npos);
+  CHECK(s.uncertainty_note.find("mu_s and mu_r trade off") != std::string::npos);
 }
 
 TEST_CASE("calibration options are checked before anything runs", "[unit][calibrate]") {
@@ -124,4 +130,40 @@ TEST_CASE("calibration options are checked before anything runs", "[unit][calibr
   options.optimiser_options.max_evaluations = 0;
   CHECK(Run(angle, RollingSpace(), 30.0, options).message.find("max_evaluations") != std::string::npos);
   CHECK(angle.runs == 0);
+}
+
+TEST_CASE("the batch optimisers resume from the journal without repeating finished runs",
+          "[unit][calibrate]") {
+  for (const std::string name : {"ceres", "differential_evolution"}) {
+    INFO(name);
+    CalibrationOptions options;
+    options.optimiser = name;
+    options.optimiser_options.max_evaluations = 30;
+    const double measured = 38.0;  // mu_r ≈ 0.383
+    SyntheticAngle uninterrupted;
+    const CalibrationSummary whole = Run(uninterrupted, RollingSpace(), measured, options);
+    REQUIRE(whole.termination == "within_noise");
+    REQUIRE(whole.history.size() >= 3);
+    CHECK(std::abs(whole.history[whole.best].parameters[0] - (measured - 15) / 60) <=
+          2 * whole.uncertainty[0]);
+
+    const std::string path = FreshJournal("resume_" + name + ".jsonl");
+    std::string error;
+    SyntheticAngle first, second;
+    CalibrationOptions cut = options;
+    cut.optimiser_options.max_evaluations = 2;  // "killed" after two candidates
+    {
+      EvaluationJournal journal;
+      REQUIRE(journal.Open(path, "twin", &error));
+      Run(first, RollingSpace(), measured, cut, &journal);
+    }
+    REQUIRE(first.runs > 0);
+    EvaluationJournal journal;
+    REQUIRE(journal.Open(path, "twin", &error));
+    const CalibrationSummary resumed = Run(second, RollingSpace(), measured, options, &journal);
+    CHECK(resumed.replicates_reused == first.runs);
+    CHECK(first.runs + second.runs == uninterrupted.runs);
+    REQUIRE(resumed.best >= 0);
+    CHECK(resumed.history[resumed.best].parameters == whole.history[whole.best].parameters);
+  }
 }

@@ -1,0 +1,57 @@
+// CalibrationSummary's reports (text for a terminal or a log).
+#include <cmath>
+#include <sstream>
+
+#include "calibrate/calibration.h"
+
+namespace demcal::calibrate {
+
+std::string CalibrationSummary::BriefReport(const ParameterSpace& space) const {
+  std::ostringstream out;
+  out.precision(4);
+  out << "calibration: " << termination << " (" << message << "), " << candidates.size()
+      << " candidates in " << batches << " batches, " << replicates_run << " replicate runs (+"
+      << replicates_reused << " from the journal)\n";
+  if (best < 0) return out.str();
+  out << "best: " << space.Describe(candidates[best].parameters) << "\n";
+  for (const TargetResidual& t : residuals)
+    out << "target " << t.name << ": " << t.observable << " = " << t.simulated << " +- " << t.sem
+        << " (measured " << t.measured << " +- " << t.uncertainty << "), residual " << t.residual
+        << (t.within_noise ? " (within noise)" : "") << "\n";
+  for (const ParameterEstimate& e : estimates) {
+    out << "parameter " << e.name << " = " << e.value << " +- ";
+    if (std::isfinite(e.sigma)) out << e.sigma;
+    else out << "inf";
+    out << (e.identifiable ? "" : " (not identifiable)") << "\n";
+  }
+  if (estimates.size() > 1 && correlation.rows() == static_cast<Eigen::Index>(estimates.size())) {
+    out << "correlation:";
+    for (Eigen::Index a = 0; a < correlation.rows(); ++a)
+      for (Eigen::Index b = a + 1; b < correlation.cols(); ++b) {
+        out << " " << estimates[a].name << "~" << estimates[b].name << " ";
+        if (std::isfinite(correlation(a, b))) out << correlation(a, b);
+        else out << "undefined";
+      }
+    out << "\n";
+  }
+  out << "uncertainty: " << covariance_note << "\n" << identifiability.summary;
+  return out.str();
+}
+
+std::string CalibrationSummary::BriefReport(const ParameterSpace& space, const Measurement& m) const {
+  std::ostringstream out;
+  out.precision(4);
+  out << "calibration: " << termination << " (" << message << "), " << history.size()
+      << " candidates, " << replicates_run << " replicate runs (+" << replicates_reused
+      << " from the journal)\n";
+  if (best < 0 || best >= static_cast<int>(history.size())) return out.str();
+  const Evaluation& e = history[best];
+  out << "best: " << space.Describe(e.parameters) << " -> " << m.observable << " = " << e.summary.mean
+      << " +- " << e.summary.sem << " (measured " << m.value << " +- " << m.uncertainty << ")\n";
+  for (size_t k = 0; k < uncertainty.size(); ++k)
+    out << "uncertainty: " << space.parameters[k].name << " +- " << uncertainty[k] << "\n";
+  if (!uncertainty_note.empty()) out << "uncertainty: " << uncertainty_note << "\n";
+  return out.str();
+}
+
+}  // namespace demcal::calibrate

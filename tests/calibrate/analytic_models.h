@@ -1,0 +1,72 @@
+#pragma once
+// Analytic stand-ins for DEM in optimiser and covariance tests: seeded Gaussian noise, a
+// recorder of the batches an optimiser asks for, and a linear multi-target CandidateEvaluator
+// (observable_k = offset_k + Σ slope_kj θ_j, plus a simulation-noise offset drawn once per seed:
+// common random numbers, as replicate seeds give).
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "calibrate/candidate_evaluator.h"
+#include "calibrate/optimiser.h"
+#include "core/random.h"
+
+namespace demcal::calibrate::testing {
+
+// Standard normal number k of stream `seed` (Box–Muller).
+inline double Normal(uint64_t seed, int k) {
+  core::Rng rng(seed * 1000003 + static_cast<uint64_t>(k));
+  const double u1 = 1.0 - rng.Uniform(), u2 = rng.Uniform();
+  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * 3.141592653589793 * u2);
+}
+
+// Wraps a one-point trial; records every batch asked for.
+struct Recorder {
+  std::function<TrialResult(const std::vector<double>&)> trial;
+  std::vector<std::vector<std::vector<double>>> batches;
+  BatchTrialFunction Function() {
+    return [this](const std::vector<std::vector<double>>& units) {
+      batches.push_back(units);
+      std::vector<TrialResult> out;
+      for (const auto& u : units) out.push_back(trial(u));
+      return out;
+    };
+  }
+  std::vector<std::vector<double>> Points() const {
+    std::vector<std::vector<double>> all;
+    for (const auto& b : batches) all.insert(all.end(), b.begin(), b.end());
+    return all;
+  }
+};
+
+class LinearTargets final : public CandidateEvaluator {
+ public:
+  std::vector<double> offset;               // per target
+  std::vector<std::vector<double>> slope;   // per target, per parameter (per SI unit)
+  std::vector<double> sem;                  // reported simulation sem per target
+  uint64_t seed = 1;                        // the simulation-noise offsets
+  double nan_above = 1e300;                 // theta[0] above this: the mean is NaN (a bug upstream)
+  std::vector<size_t> batch_sizes;
+
+  double Exact(size_t k, const std::vector<double>& theta) const {
+    double y = offset[k];
+    for (size_t j = 0; j < theta.size(); ++j) y += slope[k][j] * theta[j];
+    return y;
+  }
+  std::vector<CandidateResult> EvaluateBatch(const std::vector<std::vector<double>>& p) override {
+    batch_sizes.push_back(p.size());
+    std::vector<CandidateResult> out;
+    for (const auto& theta : p) {
+      CandidateResult c;
+      for (size_t k = 0; k < offset.size(); ++k)
+        c.targets.push_back({Exact(k, theta) + sem[k] * Normal(seed, static_cast<int>(k)), sem[k], 3});
+      if (theta[0] > nan_above) c.targets[0].mean = std::nan("");
+      c.replicates_run = 3;
+      out.push_back(c);
+    }
+    return out;
+  }
+};
+
+}  // namespace demcal::calibrate::testing

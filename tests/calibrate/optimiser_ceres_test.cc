@@ -1,0 +1,128 @@
+// The "ceres" optimiser on analytic stand-ins (no DEM): linear and nonlinear residuals with
+// known noise, a failing region, a valley, the budget, determinism.
+#include <catch2/catch.hpp>
+#include <Eigen/Dense>
+#include <cmath>
+
+#include "analytic_models.h"
+#include "calibrate/optimiser.h"
+
+using namespace demcal::calibrate;
+using demcal::calibrate::testing::Normal;
+using demcal::calibrate::testing::Recorder;
+
+namespace {
+
+// Two targets, linear in the unit cube, truth (0.6, 0.3), simulation noise 0.2 (standardised)
+// drawn once per seed (common random numbers).
+TrialResult Linear(const std::vector<double>& u, uint64_t seed) {
+  const double r1 = 8 * (u[0] - 0.6) + 3 * (u[1] - 0.3) + 0.2 * Normal(seed, 0);
+  const double r2 = -2 * (u[0] - 0.6) + 9 * (u[1] - 0.3) + 0.2 * Normal(seed, 1);
+  return {true, {r1, r2}, {0.2, 0.2}};
+}
+
+bool InCube(const std::vector<std::vector<double>>& points) {
+  for (const auto& p : points)
+    for (double v : p)
+      if (v < 0 || v > 1) return false;
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("ceres matches a linear two-target model within noise, asking for differences in batches",
+          "[unit][calibrate]") {
+  Recorder rec{[](const std::vector<double>& u) { return Linear(u, 3); }};
+  const OptimiserResult r = CeresOptimise(rec.Function(), {0.1, 0.9}, {.max_evaluations = 40});
+  INFO(r.message);
+  REQUIRE(r.termination == "within_noise");
+  CHECK(Linear(r.best_unit, 3).WithinNoise());
+  CHECK(r.evaluations <= 40);
+  CHECK(r.evaluations == static_cast<int>(rec.Points().size()));
+  CHECK(InCube(rec.Points()));
+  size_t largest = 0;
+  for (const auto& b : rec.batches) largest = std::max(largest, b.size());
+  CHECK(largest >= 3);  // centre and the offsets of both parameters as one batch
+}
+
+TEST_CASE("ceres finite-difference step exceeds the noise", "[unit][calibrate]") {
+  // Noise 0.5: the step is clamp(4·0.5/sqrt(12), 0.01, 0.25) = 0.25 of the range.
+  Recorder rec{[](const std::vector<double>& u) {
+    TrialResult t = Linear(u, 1);
+    t.noise = {0.5, 0.5};
+    return t;
+  }};
+  CeresOptimise(rec.Function(), {0.5, 0.5}, {.max_evaluations = 40});
+  REQUIRE(rec.batches.size() >= 2);
+  const auto& fd = rec.batches[1];  // the first Jacobian: centre + offsets
+  REQUIRE(fd.size() >= 2);
+  double step = 0;
+  for (const auto& p : fd) step = std::max(step, std::abs(p[0] - 0.5) + std::abs(p[1] - 0.5));
+  CHECK(step == Approx(0.25));
+}
+
+TEST_CASE("ceres solves a nonlinear model and stays inside the bounds", "[unit][calibrate]") {
+  auto model = [](const std::vector<double>& u) -> TrialResult {
+    const double r1 = (std::exp(2 * u[0]) - std::exp(0.6)) / 0.05;
+    const double r2 = (u[0] * u[1] - 0.3 * 0.7) / 0.02;
+    return {true, {r1, r2}, {0.05, 0.05}};
+  };
+  Recorder rec{model};
+  const OptimiserResult r = CeresOptimise(rec.Function(), {0.9, 0.1}, {.max_evaluations = 60});
+  INFO(r.message);
+  REQUIRE(r.termination == "within_noise");
+  CHECK(model(r.best_unit).WithinNoise());
+  CHECK(InCube(rec.Points()));
+}
+
+TEST_CASE("ceres treats failed samples as infeasible and still finds the match", "[unit][calibrate]") {
+  int failures = 0;
+  Recorder rec{[&](const std::vector<double>& u) {
+    if (u[0] > 0.75) return ++failures, TrialResult{};  // "the heap never settles"
+    return Linear(u, 2);
+  }};
+  const OptimiserResult r = CeresOptimise(rec.Function(), {0.2, 0.2}, {.max_evaluations = 60});
+  INFO(r.message);
+  CHECK(r.termination == "within_noise");
+  CHECK(r.best_unit[0] <= 0.75);
+  CHECK(Linear(r.best_unit, 2).WithinNoise());
+}
+
+TEST_CASE("ceres is deterministic: the same answers give the same candidates", "[unit][calibrate]") {
+  Recorder a{[](const std::vector<double>& u) { return Linear(u, 4); }};
+  Recorder b{[](const std::vector<double>& u) { return Linear(u, 4); }};
+  CeresOptimise(a.Function(), {0.95, 0.05}, {.max_evaluations = 40});
+  CeresOptimise(b.Function(), {0.95, 0.05}, {.max_evaluations = 40});
+  CHECK(a.batches == b.batches);
+}
+
+TEST_CASE("ceres stops at the budget and reports it", "[unit][calibrate]") {
+  Recorder rec{[](const std::vector<double>& u) { return Linear(u, 5); }};
+  const OptimiserResult r = CeresOptimise(rec.Function(), {0.0, 1.0}, {.max_evaluations = 4});
+  CHECK(r.termination == "budget");
+  CHECK(r.evaluations <= 4);
+  CHECK(static_cast<int>(rec.Points().size()) == r.evaluations);
+}
+
+TEST_CASE("ceres covariance: finite for two targets, refused on a valley", "[unit][calibrate]") {
+  // Noise-free linear model: ceres::Covariance must equal (JᵀJ)⁻¹ of the exact J.
+  auto exact = [](const std::vector<double>& u) -> TrialResult {
+    return {true, {8 * (u[0] - 0.6) + 3 * (u[1] - 0.3), -2 * (u[0] - 0.6) + 9 * (u[1] - 0.3)}, {0, 0}};
+  };
+  const OptimiserResult r = CeresOptimise(Batched(exact), {0.1, 0.9}, {.max_evaluations = 40});
+  REQUIRE(r.covariance_unit.size() == 4);
+  Eigen::Matrix2d j;
+  j << 8, 3, -2, 9;
+  const Eigen::Matrix2d expected = (j.transpose() * j).inverse();
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b) CHECK(r.covariance_unit[a * 2 + b] == Approx(expected(a, b)).epsilon(1e-6));
+
+  // One target, two parameters: J is 1×2 and rank-deficient.
+  auto valley = [](const std::vector<double>& u) -> TrialResult {
+    return {true, {10 * (u[0] - 0.5) + 5 * (u[1] - 0.5)}, {0.1}};
+  };
+  const OptimiserResult v = CeresOptimise(Batched(valley), {0.05, 0.05}, {.max_evaluations = 40});
+  CHECK(v.termination == "within_noise");
+  CHECK(v.covariance_unit.empty());
+  CHECK(v.covariance_note.find("rank-deficient") != std::string::npos);
+}
