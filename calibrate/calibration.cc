@@ -31,7 +31,8 @@ TrialResult Standardise(const CandidateResult& c, const std::vector<Target>& tar
 std::string Validate(const ParameterSpace& space, const std::vector<Target>& targets,
                      const CalibrationOptions& options, Optimiser* optimise) {
   std::string error;
-  if (!FindOptimiser(options.optimiser, optimise)) return "optimiser: unknown '" + options.optimiser + "'";
+  if (!FindOptimiser(options.optimiser, optimise))
+    return "optimiser: unknown '" + options.optimiser + "'";
   if (space.Size() == 0) return "parameters: at least one parameter is needed";
   if (targets.empty()) return "targets: at least one target is needed";
   std::set<std::string> names;
@@ -40,7 +41,8 @@ std::string Validate(const ParameterSpace& space, const std::vector<Target>& tar
     if (!(targets[k].uncertainty > 0 && std::isfinite(targets[k].uncertainty)))
       return at + ".uncertainty: must be finite and > 0";
     if (!std::isfinite(targets[k].value)) return at + ".value: must be finite";
-    if (!names.insert(targets[k].name).second) return at + ".name: '" + targets[k].name + "' is used twice";
+    if (!names.insert(targets[k].name).second)
+      return at + ".name: '" + targets[k].name + "' is used twice";
   }
   if (!options.optimiser_options.IsValid(&error)) return error;
   if (!options.response_surface.IsValid(&error)) return "response_surface." + error;
@@ -63,7 +65,8 @@ void Analyse(const ParameterSpace& space, const std::vector<Target>& targets,
                             std::abs(best.trial.residuals[k]) <=
                                 std::sqrt(1 + best.trial.noise[k] * best.trial.noise[k])});
   }
-  for (size_t k = 0; k < n; ++k) s->estimates.push_back({names[k], best.parameters[k], kInf, false});
+  for (size_t k = 0; k < n; ++k)
+    s->estimates.push_back({names[k], best.parameters[k], kInf, false});
   std::vector<Sample> samples;
   for (const Candidate& c : s->candidates) samples.push_back({c.unit, c.trial});
   const ResponseSurface surface = FitResponseSurface(samples, best.unit, options.response_surface);
@@ -84,7 +87,8 @@ void Analyse(const ParameterSpace& space, const std::vector<Target>& targets,
   const bool ceres_cov = r.covariance_unit.size() == n * n && c.rank == static_cast<int>(n) &&
                          r.best_unit == best.unit;
   if (ceres_cov) {
-    c = CovarianceFromUnit(Eigen::Map<const Eigen::MatrixXd>(r.covariance_unit.data(), n, n), scale);
+    c = CovarianceFromUnit(Eigen::Map<const Eigen::MatrixXd>(r.covariance_unit.data(), n, n),
+                           scale);
     c.note = r.covariance_note;
   } else {
     c.note += " (" + surface.message + ")";
@@ -123,15 +127,18 @@ CalibrationSummary Calibrate(CandidateEvaluator& evaluator, const ParameterSpace
       c.index = static_cast<int>(s.candidates.size()) - 1;
       c.parameters = si[i];
       c.unit = units[i];
-      if (i < results.size()) c.result = std::move(results[i]);
-      else c.result.status = "no_result";  // the evaluator answered fewer candidates
+      if (i < results.size())
+        c.result = std::move(results[i]);
+      else
+        c.result.status = "no_result";  // the evaluator answered fewer candidates
       c.trial = Standardise(c.result, targets);
       s.replicates_run += c.result.replicates_run;
       s.replicates_reused += c.result.replicates_reused;
       if (s.journal_error.empty()) s.journal_error = c.result.journal_error;
       trials.push_back(c.trial);
       if (progress)
-        progress(c, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        progress(c,
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
     return trials;
   };
@@ -139,7 +146,8 @@ CalibrationSummary Calibrate(CandidateEvaluator& evaluator, const ParameterSpace
   s.termination = r.termination;
   s.message = r.message;
   for (const Candidate& c : s.candidates)  // the best: the smallest Σ residual², first on ties
-    if (c.trial.ok && (s.best < 0 || c.trial.Cost() < s.candidates[s.best].trial.Cost())) s.best = c.index;
+    if (c.trial.ok && (s.best < 0 || c.trial.Cost() < s.candidates[s.best].trial.Cost()))
+      s.best = c.index;
   if (s.best >= 0) Analyse(space, targets, options, r, &s);
   return s;
 }

@@ -21,11 +21,10 @@
 // (history, best_residual, sensitivity, uncertainty) too.
 //
 // Thread-safety: Calibrate runs on the calling thread; the evaluator parallelises.
+#include <Eigen/Dense>
 #include <functional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Dense>
 
 #include "calibrate/candidate_evaluator.h"
 #include "calibrate/identifiability.h"
@@ -39,10 +38,10 @@ namespace demcal::calibrate {
 
 // The single measurement of a one-target study (kept for the `calibrate` command's study file).
 struct Measurement {
-  std::string observable;   // e.g. "angle_deg"
-  double value = 0;         // SI or the observable's unit
-  double uncertainty = 1;   // one standard deviation of the measurement, > 0
-  std::string source;       // provenance: dataset file and row, or paper/table/figure
+  std::string observable;  // e.g. "angle_deg"
+  double value = 0;        // SI or the observable's unit
+  double uncertainty = 1;  // one standard deviation of the measurement, > 0
+  std::string source;      // provenance: dataset file and row, or paper/table/figure
 };
 
 struct CalibrationOptions {
@@ -57,13 +56,13 @@ struct Candidate {
   std::vector<double> parameters;  // SI
   std::vector<double> unit;        // unit cube
   CandidateResult result;
-  TrialResult trial;               // standardised residuals (ok = false: infeasible)
+  TrialResult trial;  // standardised residuals (ok = false: infeasible)
 };
 
 struct TargetResidual {
   std::string name, observable;
   double measured = 0, uncertainty = 0, simulated = 0, sem = 0;
-  double residual = 0;   // (simulated − measured) / uncertainty
+  double residual = 0;        // (simulated − measured) / uncertainty
   bool within_noise = false;  // |residual| ≤ sqrt(1 + (sem/uncertainty)²)
 };
 
@@ -83,28 +82,28 @@ using CalibrationProgress =
 struct CalibrationSummary {
   std::string termination = "failed";  // the optimiser's (optimiser.h), or "invalid"
   std::string message = "Calibrate was not called";
-  std::vector<Candidate> candidates;   // in the order evaluated
-  int best = -1;                       // index into candidates, −1 if none gave a value
+  std::vector<Candidate> candidates;  // in the order evaluated
+  int best = -1;                      // index into candidates, −1 if none gave a value
   int batches = 0;
   std::vector<TargetResidual> residuals;     // per target at the best
   std::vector<ParameterEstimate> estimates;  // per parameter
-  Eigen::MatrixXd correlation;         // n×n, NaN where undefined (σ = +∞)
-  Eigen::MatrixXd covariance;          // SI, n×n, NaN where undefined
-  std::string covariance_note;         // how σ was obtained, or why it is not given
-  Eigen::MatrixXd jacobian;            // targets × parameters, standardised, per unit cube
-  Eigen::MatrixXd jacobian_sigma;      // its standard errors
+  Eigen::MatrixXd correlation;               // n×n, NaN where undefined (σ = +∞)
+  Eigen::MatrixXd covariance;                // SI, n×n, NaN where undefined
+  std::string covariance_note;               // how σ was obtained, or why it is not given
+  Eigen::MatrixXd jacobian;                  // targets × parameters, standardised, per unit cube
+  Eigen::MatrixXd jacobian_sigma;            // its standard errors
   std::string jacobian_note;
   IdentifiabilityReport identifiability;
   int replicates_run = 0;
-  int replicates_reused = 0;           // found in the journal (resumed work)
-  std::string journal_error;           // first failure to write the journal ("" if none)
+  int replicates_reused = 0;  // found in the journal (resumed work)
+  std::string journal_error;  // first failure to write the journal ("" if none)
 
   // Single-target form only: the evaluations (history[i] is candidates[i]) and its scalars.
   std::vector<Evaluation> history;
-  double best_residual = 0;            // (simulated − measured) / uncertainty at the best
-  std::vector<double> sensitivity;     // d observable / dθ (observable unit per SI unit)
-  std::vector<double> uncertainty;     // σ_θ, SI (0 when not identifiable)
-  std::string uncertainty_note;        // how σ_θ was obtained, or why it is not given
+  double best_residual = 0;         // (simulated − measured) / uncertainty at the best
+  std::vector<double> sensitivity;  // d observable / dθ (observable unit per SI unit)
+  std::vector<double> uncertainty;  // σ_θ, SI (0 when not identifiable)
+  std::string uncertainty_note;     // how σ_θ was obtained, or why it is not given
 
   bool ok() const { return best >= 0 && termination == "within_noise"; }
   std::string BriefReport(const ParameterSpace& space) const;

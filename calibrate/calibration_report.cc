@@ -20,8 +20,10 @@ std::string CalibrationSummary::BriefReport(const ParameterSpace& space) const {
         << (t.within_noise ? " (within noise)" : "") << "\n";
   for (const ParameterEstimate& e : estimates) {
     out << "parameter " << e.name << " = " << e.value << " +- ";
-    if (std::isfinite(e.sigma)) out << e.sigma;
-    else out << "inf";
+    if (std::isfinite(e.sigma))
+      out << e.sigma;
+    else
+      out << "inf";
     out << (e.identifiable ? "" : " (not identifiable)") << "\n";
   }
   if (estimates.size() > 1 && correlation.rows() == static_cast<Eigen::Index>(estimates.size())) {
@@ -29,8 +31,10 @@ std::string CalibrationSummary::BriefReport(const ParameterSpace& space) const {
     for (Eigen::Index a = 0; a < correlation.rows(); ++a)
       for (Eigen::Index b = a + 1; b < correlation.cols(); ++b) {
         out << " " << estimates[a].name << "~" << estimates[b].name << " ";
-        if (std::isfinite(correlation(a, b))) out << correlation(a, b);
-        else out << "undefined";
+        if (std::isfinite(correlation(a, b)))
+          out << correlation(a, b);
+        else
+          out << "undefined";
       }
     out << "\n";
   }
@@ -38,7 +42,8 @@ std::string CalibrationSummary::BriefReport(const ParameterSpace& space) const {
   return out.str();
 }
 
-std::string CalibrationSummary::BriefReport(const ParameterSpace& space, const Measurement& m) const {
+std::string CalibrationSummary::BriefReport(const ParameterSpace& space,
+                                            const Measurement& m) const {
   std::ostringstream out;
   out.precision(4);
   out << "calibration: " << termination << " (" << message << "), " << history.size()
@@ -46,8 +51,9 @@ std::string CalibrationSummary::BriefReport(const ParameterSpace& space, const M
       << " from the journal)\n";
   if (best < 0 || best >= static_cast<int>(history.size())) return out.str();
   const Evaluation& e = history[best];
-  out << "best: " << space.Describe(e.parameters) << " -> " << m.observable << " = " << e.summary.mean
-      << " +- " << e.summary.sem << " (measured " << m.value << " +- " << m.uncertainty << ")\n";
+  out << "best: " << space.Describe(e.parameters) << " -> " << m.observable << " = "
+      << e.summary.mean << " +- " << e.summary.sem << " (measured " << m.value << " +- "
+      << m.uncertainty << ")\n";
   for (size_t k = 0; k < uncertainty.size(); ++k)
     out << "uncertainty: " << space.parameters[k].name << " +- " << uncertainty[k] << "\n";
   if (!uncertainty_note.empty()) out << "uncertainty: " << uncertainty_note << "\n";

@@ -7,7 +7,8 @@
 // every replicate, and reads finished ones back from the journal on resume.
 //
 //   class MyEvaluator final : public CandidateEvaluator {
-//     std::vector<CandidateResult> EvaluateBatch(const std::vector<std::vector<double>>& p) override;
+//     std::vector<CandidateResult> EvaluateBatch(const std::vector<std::vector<double>>& p)
+//     override;
 //   };
 //
 // Thread-safety: the driver calls EvaluateBatch from one thread, one batch at a time.
@@ -18,11 +19,11 @@ namespace demcal::calibrate {
 
 // One target's simulated value at one candidate.
 struct TargetValue {
-  double mean = 0;              // observable unit
-  double sem = 0;               // standard error of the mean over replicates, >= 0
-  int replicates = 0;           // replicates that gave a value
-  std::string status = "ok";    // "ok", or why there is no value ("not_settled", ...)
-  bool ok() const;              // status "ok", replicates >= 1, finite mean and sem
+  double mean = 0;            // observable unit
+  double sem = 0;             // standard error of the mean over replicates, >= 0
+  int replicates = 0;         // replicates that gave a value
+  std::string status = "ok";  // "ok", or why there is no value ("not_settled", ...)
+  bool ok() const;            // status "ok", replicates >= 1, finite mean and sem
 };
 
 struct CandidateResult {

@@ -15,9 +15,8 @@ constexpr double kInvolved = 0.1;
 
 std::string Describe(const UndeterminedDirection& d, const std::vector<std::string>& names) {
   const std::vector<double>& v = d.unit_direction;
-  const double top = *std::max_element(v.begin(), v.end(), [](double a, double b) {
-    return std::abs(a) < std::abs(b);
-  });
+  const double top = *std::max_element(
+      v.begin(), v.end(), [](double a, double b) { return std::abs(a) < std::abs(b); });
   std::vector<size_t> order(v.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(),
@@ -44,8 +43,7 @@ std::string Describe(const UndeterminedDirection& d, const std::vector<std::stri
     out << std::defaultfloat << " (in fractions of each parameter's range; in SI";
     out.precision(3);
     for (size_t i = 0; i < involved.size(); ++i)
-      out << (i ? " with " : " ") << d.si_direction[involved[i]] / top << " "
-          << names[involved[i]];
+      out << (i ? " with " : " ") << d.si_direction[involved[i]] / top << " " << names[involved[i]];
     out << ") leaves the targets unchanged";
   }
   out << std::noshowpos;
@@ -70,8 +68,8 @@ IdentifiabilityReport AnalyseIdentifiability(const Eigen::MatrixXd& jacobian,
   for (Eigen::Index i = 0; i < n; ++i)
     r.singular_values.push_back(svd.Null(static_cast<int>(i)) ? 0.0 : svd.values(i));
   const double s_min = r.singular_values.back();
-  r.condition_number = s_min > 0 ? r.singular_values.front() / s_min
-                                 : std::numeric_limits<double>::infinity();
+  r.condition_number =
+      s_min > 0 ? r.singular_values.front() / s_min : std::numeric_limits<double>::infinity();
   std::ostringstream summary;
   summary.precision(3);
   summary << "singular values of the standardised sensitivity matrix:";

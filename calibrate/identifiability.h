@@ -17,10 +17,9 @@
 //   // "mu_r and mu_s trade off: +1.00 mu_r ~ -0.82 mu_s (per range) ..."
 //
 // Thread-safety: plain values and a pure function.
+#include <Eigen/Dense>
 #include <string>
 #include <vector>
-
-#include <Eigen/Dense>
 
 namespace demcal::calibrate {
 
@@ -30,8 +29,8 @@ struct UndeterminedDirection {
   std::vector<double> unit_direction;  // unit-length, largest component +; per unit cube
   std::vector<double> si_direction;    // the same move in SI (unit_direction · dθ/du)
   double singular_value = 0;
-  double sigma_unit = 0;               // 1 / s_i along it (+∞ when s_i = 0)
-  std::string description;             // in words, naming the parameters involved
+  double sigma_unit = 0;    // 1 / s_i along it (+∞ when s_i = 0)
+  std::string description;  // in words, naming the parameters involved
 };
 
 struct IdentifiabilityReport {
@@ -39,7 +38,7 @@ struct IdentifiabilityReport {
   std::vector<double> singular_values;  // one per parameter, descending (0-padded)
   double condition_number = 0;          // s_max / s_min, +∞ when s_min = 0
   std::vector<UndeterminedDirection> undetermined;
-  std::string summary;                  // one line per finding, "" before analysis
+  std::string summary;  // one line per finding, "" before analysis
   bool Identifiable() const { return undetermined.empty() && !singular_values.empty(); }
 };
 

@@ -15,7 +15,8 @@ JacobianSvd DecomposeJacobian(const Eigen::MatrixXd& jacobian) {
   }
   const double s_max = out.values(0);
   for (Eigen::Index i = 0; i < n; ++i)
-    if (out.values(i) > 0 && out.values(i) > kRankTolerance * s_max) out.rank = static_cast<int>(i) + 1;
+    if (out.values(i) > 0 && out.values(i) > kRankTolerance * s_max)
+      out.rank = static_cast<int>(i) + 1;
   // Sign convention: the largest component of each vector is positive (reports are stable).
   for (Eigen::Index i = 0; i < n; ++i) {
     Eigen::Index k = 0;

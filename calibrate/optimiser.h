@@ -18,7 +18,8 @@
 //
 //   Optimiser optimise;
 //   if (!FindOptimiser("bracket", &optimise)) ...;
-//   OptimiserResult r = optimise(batch_trial, space.ToUnit(space.Start()), {.max_evaluations = 15});
+//   OptimiserResult r = optimise(batch_trial, space.ToUnit(space.Start()), {.max_evaluations =
+//   15});
 #include <cstdint>
 #include <functional>
 #include <string>

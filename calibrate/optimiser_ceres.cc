@@ -173,8 +173,9 @@ void Covariance(ceres::Problem* problem, const ceres::CostFunction& cost, double
   }
   // ceres::Covariance's DENSE_SVD sees only min(m, n) singular values, so fewer residuals than
   // parameters would pass as full rank: judge the rank on the Jacobian itself.
-  const Eigen::MatrixXd jacobian = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic,
-      Eigen::Dynamic, Eigen::RowMajor>>(j.data(), cost.num_residuals(), n);
+  const Eigen::MatrixXd jacobian =
+      Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+          j.data(), cost.num_residuals(), n);
   if (DecomposeJacobian(jacobian).rank < n) {
     result->covariance_note =
         "ceres::Covariance: not computed (rank-deficient Jacobian: some parameter combination is "
@@ -199,7 +200,8 @@ void Covariance(ceres::Problem* problem, const ceres::CostFunction& cost, double
 
 }  // namespace
 
-OptimiserResult CeresOptimise(const BatchTrialFunction& trial, const std::vector<double>& start_unit,
+OptimiserResult CeresOptimise(const BatchTrialFunction& trial,
+                              const std::vector<double>& start_unit,
                               const OptimiserOptions& options) {
   OptimiserResult result;
   const int n = static_cast<int>(start_unit.size());

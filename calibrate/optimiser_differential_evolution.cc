@@ -36,7 +36,8 @@ struct Member {
 
 class Evolution {
  public:
-  Evolution(const BatchTrialFunction& f, const OptimiserOptions& o) : f_(f), options_(o), rng_(o.seed) {}
+  Evolution(const BatchTrialFunction& f, const OptimiserOptions& o)
+      : f_(f), options_(o), rng_(o.seed) {}
 
   // Evaluates the points (cut to the budget); costs of failed samples are +∞. False if the
   // budget cut the batch.
@@ -112,7 +113,8 @@ OptimiserResult Evolution::Run(const std::vector<double>& start) {
       extent = std::max(extent, hi - lo);
     }
     if (extent < options_.unit_tolerance)
-      return Finish("converged", "population narrower than unit_tolerance without a match within noise");
+      return Finish("converged",
+                    "population narrower than unit_tolerance without a match within noise");
     if (result_.evaluations >= options_.max_evaluations)
       return Finish("budget", "budget used up before a match within noise");
     std::vector<Member> trials(size_, Member{std::vector<double>(n)});

@@ -68,7 +68,8 @@ ParameterCovariance CovarianceFromJacobian(const Eigen::MatrixXd& jacobian,
   c.rank = svd.rank;
   c.note = svd.rank == n ? "(J^T J)^-1 of the standardised sensitivity matrix"
                          : "J is rank-deficient (rank " + std::to_string(svd.rank) + " of " +
-                               std::to_string(n) + "): parameters along its null space have no "
+                               std::to_string(n) +
+                               "): parameters along its null space have no "
                                "finite sigma";
   return c;
 }

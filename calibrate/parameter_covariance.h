@@ -15,23 +15,22 @@
 //   if (c.identifiable[0]) report(c.sigma[0]);
 //
 // Thread-safety: plain values and pure functions.
+#include <Eigen/Dense>
 #include <string>
 #include <vector>
-
-#include <Eigen/Dense>
 
 #include "calibrate/parameter_space.h"
 
 namespace demcal::calibrate {
 
 struct ParameterCovariance {
-  std::vector<double> sigma_unit;   // σ in the unit cube, +∞ if not determined at all
-  std::vector<double> sigma;        // σ in SI (the parameter's unit), +∞ if not determined
-  std::vector<bool> identifiable;   // finite σ no larger than the bounds' uniform σ
-  Eigen::MatrixXd covariance;       // SI, n×n; rows/columns of +∞-σ parameters are NaN
-  Eigen::MatrixXd correlation;      // n×n, NaN where undefined
-  int rank = 0;                     // of J
-  std::string note;                 // how it was obtained
+  std::vector<double> sigma_unit;  // σ in the unit cube, +∞ if not determined at all
+  std::vector<double> sigma;       // σ in SI (the parameter's unit), +∞ if not determined
+  std::vector<bool> identifiable;  // finite σ no larger than the bounds' uniform σ
+  Eigen::MatrixXd covariance;      // SI, n×n; rows/columns of +∞-σ parameters are NaN
+  Eigen::MatrixXd correlation;     // n×n, NaN where undefined
+  int rank = 0;                    // of J
+  std::string note;                // how it was obtained
 };
 
 // dθ/du of each parameter at a unit-cube point (SI per unit).

@@ -93,7 +93,8 @@ ResponseSurface FitResponseSurface(const std::vector<Sample>& samples,
     for (size_t k = 0; k < n; ++k) d2 += (a->unit[k] - centre[k]) * (a->unit[k] - centre[k]);
     return std::sqrt(d2);
   };
-  std::stable_sort(ok.begin(), ok.end(), [&](const Sample* a, const Sample* b) { return dist(a) < dist(b); });
+  std::stable_sort(ok.begin(), ok.end(),
+                   [&](const Sample* a, const Sample* b) { return dist(a) < dist(b); });
   const size_t q2 = 2 * (1 + n + n * (n + 1) / 2);
   ok.resize(std::min(ok.size(), q2));
   if (ok.size() < n + 1) {
@@ -108,11 +109,13 @@ ResponseSurface FitResponseSurface(const std::vector<Sample>& samples,
   }
   const bool quadratic = options.allow_quadratic && ok.size() == q2;
   if (quadratic && Fit(ok, centre, kernel, true, options.noise_floor, &s)) {
-    s.message = "quadratic fit through the " + std::to_string(s.points) + " candidates nearest the best";
+    s.message =
+        "quadratic fit through the " + std::to_string(s.points) + " candidates nearest the best";
     return s;
   }
   if (Fit(ok, centre, kernel, false, options.noise_floor, &s)) {
-    s.message = "linear fit through the " + std::to_string(s.points) + " candidates nearest the best";
+    s.message =
+        "linear fit through the " + std::to_string(s.points) + " candidates nearest the best";
     return s;
   }
   s.ok = false;

@@ -20,10 +20,9 @@
 //   if (s.ok) use(s.jacobian, s.jacobian_sigma);
 //
 // Thread-safety: plain values and a pure function.
+#include <Eigen/Dense>
 #include <string>
 #include <vector>
-
-#include <Eigen/Dense>
 
 #include "calibrate/optimiser.h"
 
@@ -43,7 +42,7 @@ struct ResponseSurfaceOptions {
 struct ResponseSurface {
   bool ok = false;
   std::string message = "not fitted";
-  int points = 0;                  // samples used
+  int points = 0;  // samples used
   bool quadratic = false;
   Eigen::MatrixXd jacobian;        // m×n
   Eigen::MatrixXd jacobian_sigma;  // m×n standard errors

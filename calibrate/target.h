@@ -13,11 +13,11 @@
 namespace demcal::calibrate {
 
 struct Target {
-  std::string name;         // unique within a study, e.g. "aor_EP_w2"
-  std::string observable;   // e.g. "angle_deg", "discharge_time_s"
-  double value = 0;         // in the observable's unit (SI unless the name says otherwise)
-  double uncertainty = 1;   // one standard deviation of the measurement, > 0
-  std::string source;       // provenance: dataset file and row, or paper/table/figure
+  std::string name;        // unique within a study, e.g. "aor_EP_w2"
+  std::string observable;  // e.g. "angle_deg", "discharge_time_s"
+  double value = 0;        // in the observable's unit (SI unless the name says otherwise)
+  double uncertainty = 1;  // one standard deviation of the measurement, > 0
+  std::string source;      // provenance: dataset file and row, or paper/table/figure
 };
 
 }  // namespace demcal::calibrate

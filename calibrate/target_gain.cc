@@ -42,7 +42,8 @@ std::vector<TargetGain> RankCandidateTargets(const Eigen::MatrixXd& jacobian,
     d << "adding " << c.name << (g.lifts_valley ? " lifts the valley" : "") << ":";
     for (Eigen::Index k = 0; k < n; ++k) {
       const double b = g.sigma_before[k], a = g.sigma_after[k];
-      g.shrink.push_back(!std::isfinite(b) ? (std::isfinite(a) ? 0.0 : 1.0) : (b > 0 ? a / b : 1.0));
+      g.shrink.push_back(!std::isfinite(b) ? (std::isfinite(a) ? 0.0 : 1.0)
+                                           : (b > 0 ? a / b : 1.0));
       d << (k ? "," : "") << " sigma " << names[k] << " " << b << " -> " << a;
       if (std::isfinite(b) && std::isfinite(a)) d << " (x" << g.shrink.back() << ")";
     }

@@ -12,16 +12,15 @@
 //   if (g[0].lifts_valley) std::cerr << g[0].description;
 //
 // Thread-safety: plain values and a pure function.
+#include <Eigen/Dense>
 #include <string>
 #include <vector>
-
-#include <Eigen/Dense>
 
 namespace demcal::calibrate {
 
 struct CandidateTarget {
-  std::string name;                  // e.g. "discharge_time_s (funnel D = 10 mm)"
-  std::vector<double> sensitivity;   // one per parameter: d observable / d u / uncertainty
+  std::string name;                 // e.g. "discharge_time_s (funnel D = 10 mm)"
+  std::vector<double> sensitivity;  // one per parameter: d observable / d u / uncertainty
 };
 
 struct TargetGain {
@@ -31,10 +30,10 @@ struct TargetGain {
   // σ_after / σ_before per parameter (1: no help; 0: from +∞ to finite).
   std::vector<double> shrink;
   std::vector<bool> identifiable_after;
-  int undetermined_before = 0;       // undetermined directions (identifiability.h)
+  int undetermined_before = 0;  // undetermined directions (identifiability.h)
   int undetermined_after = 0;
-  bool lifts_valley = false;         // fewer undetermined directions with this target
-  std::string description;           // in words
+  bool lifts_valley = false;  // fewer undetermined directions with this target
+  std::string description;    // in words
 };
 
 // J: the current standardised sensitivity matrix (targets × parameters, unit cube); names and

@@ -42,11 +42,11 @@ struct Recorder {
 
 class LinearTargets final : public CandidateEvaluator {
  public:
-  std::vector<double> offset;               // per target
-  std::vector<std::vector<double>> slope;   // per target, per parameter (per SI unit)
-  std::vector<double> sem;                  // reported simulation sem per target
-  uint64_t seed = 1;                        // the simulation-noise offsets
-  double nan_above = 1e300;                 // theta[0] above this: the mean is NaN (a bug upstream)
+  std::vector<double> offset;              // per target
+  std::vector<std::vector<double>> slope;  // per target, per parameter (per SI unit)
+  std::vector<double> sem;                 // reported simulation sem per target
+  uint64_t seed = 1;                       // the simulation-noise offsets
+  double nan_above = 1e300;                // theta[0] above this: the mean is NaN (a bug upstream)
   std::vector<size_t> batch_sizes;
 
   double Exact(size_t k, const std::vector<double>& theta) const {
@@ -60,7 +60,8 @@ class LinearTargets final : public CandidateEvaluator {
     for (const auto& theta : p) {
       CandidateResult c;
       for (size_t k = 0; k < offset.size(); ++k)
-        c.targets.push_back({Exact(k, theta) + sem[k] * Normal(seed, static_cast<int>(k)), sem[k], 3});
+        c.targets.push_back(
+            {Exact(k, theta) + sem[k] * Normal(seed, static_cast<int>(k)), sem[k], 3});
       if (theta[0] > nan_above) c.targets[0].mean = std::nan("");
       c.replicates_run = 3;
       out.push_back(c);

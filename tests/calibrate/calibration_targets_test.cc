@@ -43,7 +43,8 @@ std::vector<Target> Measured(uint64_t seed, size_t targets) {
   std::vector<Target> out;
   for (size_t k = 0; k < targets; ++k)
     out.push_back({k ? "flow" : "angle", k ? "mass_flow_kg_s" : "angle_deg",
-                   m.Exact(k, kTruth) + u[k] * Normal(seed + 1000, static_cast<int>(k)), u[k], "twin"});
+                   m.Exact(k, kTruth) + u[k] * Normal(seed + 1000, static_cast<int>(k)), u[k],
+                   "twin"});
   return out;
 }
 
@@ -56,8 +57,10 @@ CalibrationOptions Ceres() {
 
 }  // namespace
 
-TEST_CASE("one angle for mu_s and mu_r: matched, not identifiable, the valley named, and the "
-          "target that lifts it", "[unit][calibrate]") {
+TEST_CASE(
+    "one angle for mu_s and mu_r: matched, not identifiable, the valley named, and the "
+    "target that lifts it",
+    "[unit][calibrate]") {
   LinearTargets model = Model(1, 1);
   const CalibrationSummary s = Calibrate(model, Space(), Measured(1, 1), Ceres());
   INFO(s.BriefReport(Space()));
@@ -69,7 +72,8 @@ TEST_CASE("one angle for mu_s and mu_r: matched, not identifiable, the valley na
     CHECK(std::isinf(e.sigma));  // no fake finite σ
   }
   REQUIRE(s.identifiability.undetermined.size() == 1);
-  CHECK(s.identifiability.undetermined[0].description.find("mu_s and mu_r trade off") != std::string::npos);
+  CHECK(s.identifiability.undetermined[0].description.find("mu_s and mu_r trade off") !=
+        std::string::npos);
   // Along the named direction the angle does not change: 20 Δmu_s + 60 Δmu_r = 0.
   const std::vector<double>& si = s.identifiability.undetermined[0].si_direction;
   CHECK(std::abs(20 * si[0] + 60 * si[1]) < 1e-6 * (20 * std::abs(si[0]) + 60 * std::abs(si[1])));
@@ -79,7 +83,8 @@ TEST_CASE("one angle for mu_s and mu_r: matched, not identifiable, the valley na
   const double sd = std::hypot(0.1, 0.02);
   const std::vector<CandidateTarget> extra{{"flow", {8 * scale[0] / sd, -3 * scale[1] / sd}},
                                            {"second angle", {40 * scale[0], 120 * scale[1]}}};
-  const std::vector<TargetGain> g = RankCandidateTargets(s.jacobian, extra, {"mu_s", "mu_r"}, scale);
+  const std::vector<TargetGain> g =
+      RankCandidateTargets(s.jacobian, extra, {"mu_s", "mu_r"}, scale);
   CHECK(g[0].lifts_valley);
   CHECK(std::isfinite(g[0].sigma_after[0]));
   CHECK(std::isfinite(g[0].sigma_after[1]));
@@ -98,8 +103,10 @@ TEST_CASE("one angle for mu_s and mu_r: matched, not identifiable, the valley na
   CHECK(s2.covariance_note.find("ceres::Covariance") != std::string::npos);
 }
 
-TEST_CASE("two targets: the spread of recovered values over 20 noise seeds matches the reported "
-          "sigma", "[unit][calibrate]") {
+TEST_CASE(
+    "two targets: the spread of recovered values over 20 noise seeds matches the reported "
+    "sigma",
+    "[unit][calibrate]") {
   constexpr int kSeeds = 20;
   std::vector<std::vector<double>> recovered(2);
   std::vector<double> sigma(2, 0.0);
@@ -139,7 +146,8 @@ TEST_CASE("the driver asks in batches, is deterministic, and treats NaN as infea
   INFO(sa.BriefReport(Space()));
   CHECK(a.batch_sizes == b.batch_sizes);
   REQUIRE(sa.candidates.size() == sb.candidates.size());
-  for (size_t i = 0; i < sa.candidates.size(); ++i) CHECK(sa.candidates[i].unit == sb.candidates[i].unit);
+  for (size_t i = 0; i < sa.candidates.size(); ++i)
+    CHECK(sa.candidates[i].unit == sb.candidates[i].unit);
   for (size_t n : a.batch_sizes) CHECK(n >= 6);
   int nan = 0;
   for (const Candidate& c : sa.candidates)
@@ -156,7 +164,8 @@ TEST_CASE("driver options and targets are checked before anything runs", "[unit]
   LinearTargets m = Model(1, 2);
   std::vector<Target> t = Measured(1, 2);
   t[1].uncertainty = 0;
-  CHECK(Calibrate(m, Space(), t, Ceres()).message.find("targets[1].uncertainty") != std::string::npos);
+  CHECK(Calibrate(m, Space(), t, Ceres()).message.find("targets[1].uncertainty") !=
+        std::string::npos);
   t = Measured(1, 2);
   t[1].name = t[0].name;
   CHECK(Calibrate(m, Space(), t, Ceres()).message.find("targets[1].name") != std::string::npos);

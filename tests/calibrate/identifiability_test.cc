@@ -7,7 +7,8 @@
 
 using namespace demcal::calibrate;
 
-TEST_CASE("one target, two parameters: the valley is named with its direction", "[unit][calibrate]") {
+TEST_CASE("one target, two parameters: the valley is named with its direction",
+          "[unit][calibrate]") {
   Eigen::MatrixXd j(1, 2);
   j << 18, 52.8;  // an angle: 20 deg per mu_s over 0.9, 60 deg per mu_r over 0.88 (u = 1 deg)
   const IdentifiabilityReport r = AnalyseIdentifiability(j, {"mu_s", "mu_r"}, {0.9, 0.88});

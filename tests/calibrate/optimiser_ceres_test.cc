@@ -1,7 +1,7 @@
 // The "ceres" optimiser on analytic stand-ins (no DEM): linear and nonlinear residuals with
 // known noise, a failing region, a valley, the budget, determinism.
-#include <catch2/catch.hpp>
 #include <Eigen/Dense>
+#include <catch2/catch.hpp>
 #include <cmath>
 
 #include "analytic_models.h"
@@ -75,7 +75,8 @@ TEST_CASE("ceres solves a nonlinear model and stays inside the bounds", "[unit][
   CHECK(InCube(rec.Points()));
 }
 
-TEST_CASE("ceres treats failed samples as infeasible and still finds the match", "[unit][calibrate]") {
+TEST_CASE("ceres treats failed samples as infeasible and still finds the match",
+          "[unit][calibrate]") {
   int failures = 0;
   Recorder rec{[&](const std::vector<double>& u) {
     if (u[0] > 0.75) return ++failures, TrialResult{};  // "the heap never settles"
@@ -88,7 +89,8 @@ TEST_CASE("ceres treats failed samples as infeasible and still finds the match",
   CHECK(Linear(r.best_unit, 2).WithinNoise());
 }
 
-TEST_CASE("ceres is deterministic: the same answers give the same candidates", "[unit][calibrate]") {
+TEST_CASE("ceres is deterministic: the same answers give the same candidates",
+          "[unit][calibrate]") {
   Recorder a{[](const std::vector<double>& u) { return Linear(u, 4); }};
   Recorder b{[](const std::vector<double>& u) { return Linear(u, 4); }};
   CeresOptimise(a.Function(), {0.95, 0.05}, {.max_evaluations = 40});
@@ -107,7 +109,8 @@ TEST_CASE("ceres stops at the budget and reports it", "[unit][calibrate]") {
 TEST_CASE("ceres covariance: finite for two targets, refused on a valley", "[unit][calibrate]") {
   // Noise-free linear model: ceres::Covariance must equal (JᵀJ)⁻¹ of the exact J.
   auto exact = [](const std::vector<double>& u) -> TrialResult {
-    return {true, {8 * (u[0] - 0.6) + 3 * (u[1] - 0.3), -2 * (u[0] - 0.6) + 9 * (u[1] - 0.3)}, {0, 0}};
+    return {
+        true, {8 * (u[0] - 0.6) + 3 * (u[1] - 0.3), -2 * (u[0] - 0.6) + 9 * (u[1] - 0.3)}, {0, 0}};
   };
   const OptimiserResult r = CeresOptimise(Batched(exact), {0.1, 0.9}, {.max_evaluations = 40});
   REQUIRE(r.covariance_unit.size() == 4);
@@ -115,7 +118,8 @@ TEST_CASE("ceres covariance: finite for two targets, refused on a valley", "[uni
   j << 8, 3, -2, 9;
   const Eigen::Matrix2d expected = (j.transpose() * j).inverse();
   for (int a = 0; a < 2; ++a)
-    for (int b = 0; b < 2; ++b) CHECK(r.covariance_unit[a * 2 + b] == Approx(expected(a, b)).epsilon(1e-6));
+    for (int b = 0; b < 2; ++b)
+      CHECK(r.covariance_unit[a * 2 + b] == Approx(expected(a, b)).epsilon(1e-6));
 
   // One target, two parameters: J is 1×2 and rank-deficient.
   auto valley = [](const std::vector<double>& u) -> TrialResult {

@@ -30,8 +30,8 @@ TEST_CASE("differential_evolution finds the match of a two-basin problem a local
   CHECK(local.best_unit[0] < 0.5);
 
   Recorder rec{TwoBasins};
-  const OptimiserResult r =
-      DifferentialEvolution(rec.Function(), start, {.max_evaluations = 200, .batch_size = 6, .seed = 11});
+  const OptimiserResult r = DifferentialEvolution(
+      rec.Function(), start, {.max_evaluations = 200, .batch_size = 6, .seed = 11});
   INFO(r.message);
   REQUIRE(r.termination == "within_noise");
   CHECK(TwoBasins(r.best_unit).WithinNoise());
@@ -39,7 +39,7 @@ TEST_CASE("differential_evolution finds the match of a two-basin problem a local
   CHECK(r.evaluations <= 200);
   CHECK(r.batches == static_cast<int>(rec.batches.size()));
   for (const auto& b : rec.batches) CHECK(b.size() >= 6);  // never fewer than batch_size
-  CHECK(rec.batches[0][0] == start);                        // the start is a member
+  CHECK(rec.batches[0][0] == start);                       // the start is a member
 }
 
 TEST_CASE("differential_evolution is deterministic for a seed and differs between seeds",
@@ -57,7 +57,8 @@ TEST_CASE("differential_evolution is deterministic for a seed and differs betwee
 
 TEST_CASE("differential_evolution keeps to the budget and steps over failed samples",
           "[unit][calibrate]") {
-  Recorder rec{[](const std::vector<double>& u) { return u[1] < 0.5 ? TrialResult{} : TwoBasins(u); }};
+  Recorder rec{
+      [](const std::vector<double>& u) { return u[1] < 0.5 ? TrialResult{} : TwoBasins(u); }};
   const OptimiserResult r =
       DifferentialEvolution(rec.Function(), {0.3, 0.3}, {.max_evaluations = 150, .batch_size = 5});
   CHECK(static_cast<int>(rec.Points().size()) == r.evaluations);

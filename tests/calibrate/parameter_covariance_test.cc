@@ -27,7 +27,8 @@ TEST_CASE("covariance of a full-rank J is (J^T J)^-1, in SI", "[unit][calibrate]
 TEST_CASE("unit-to-SI scale respects log-scale parameters", "[unit][calibrate]") {
   ParameterSpace space;
   space.parameters.push_back({"mu_s", PairProperty::kSlidingFriction, 0, 0, 0.1, 0.9, 0.5});
-  space.parameters.push_back({"gamma", PairProperty::kInterfacialEnergy, 0, 0, 1e-3, 1.0, 0.01, true});
+  space.parameters.push_back(
+      {"gamma", PairProperty::kInterfacialEnergy, 0, 0, 1e-3, 1.0, 0.01, true});
   const std::vector<double> u{0.3, 0.4};
   const std::vector<double> scale = SiPerUnit(space, u);
   const double h = 1e-6;

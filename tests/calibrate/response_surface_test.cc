@@ -19,9 +19,11 @@ std::vector<Sample> Cloud(int count, const std::vector<double>& centre, double n
   demcal::core::Rng rng(seed);
   std::vector<Sample> out;
   for (int i = 0; i < count; ++i) {
-    std::vector<double> u{centre[0] + rng.Uniform(-0.15, 0.15), centre[1] + rng.Uniform(-0.15, 0.15)};
+    std::vector<double> u{centre[0] + rng.Uniform(-0.15, 0.15),
+                          centre[1] + rng.Uniform(-0.15, 0.15)};
     std::vector<double> r = f(u);
-    for (size_t k = 0; k < r.size(); ++k) r[k] += noise * Normal(seed + 17 * i, static_cast<int>(k));
+    for (size_t k = 0; k < r.size(); ++k)
+      r[k] += noise * Normal(seed + 17 * i, static_cast<int>(k));
     out.push_back({u, {true, r, std::vector<double>(r.size(), noise)}});
   }
   return out;
@@ -38,8 +40,8 @@ TEST_CASE("response surface recovers a linear model's sensitivities within their
   const double truth[2][2] = {{5, -2}, {0.5, 7}};
   int outside = 0, entries = 0;
   for (uint64_t seed = 1; seed <= 10; ++seed) {
-    const ResponseSurface s = FitResponseSurface(Cloud(8, {0.5, 0.5}, 0.3, seed, LinearModel), {0.5, 0.5},
-                                                 {.allow_quadratic = false});
+    const ResponseSurface s = FitResponseSurface(Cloud(8, {0.5, 0.5}, 0.3, seed, LinearModel),
+                                                 {0.5, 0.5}, {.allow_quadratic = false});
     REQUIRE(s.ok);
     CHECK_FALSE(s.quadratic);
     for (int i = 0; i < 2; ++i)
@@ -56,7 +58,8 @@ TEST_CASE("response surface recovers a linear model's sensitivities within their
   CHECK(outside <= entries / 5);  // ~5 % expected outside 2σ; 20 % would mean σ is too small
 }
 
-TEST_CASE("response surface fits a quadratic when it has twice its coefficients", "[unit][calibrate]") {
+TEST_CASE("response surface fits a quadratic when it has twice its coefficients",
+          "[unit][calibrate]") {
   // r = 3 (u0 − 0.2)² + u0 u1: at (0.5, 0.5) the gradient is (3·2·0.3 + 0.5, 0.5) = (2.3, 0.5).
   auto quad = [](const std::vector<double>& u) {
     return std::vector<double>{3 * (u[0] - 0.2) * (u[0] - 0.2) + u[0] * u[1]};
@@ -73,7 +76,8 @@ TEST_CASE("response surface fits a quadratic when it has twice its coefficients"
   CHECK(std::abs(l.jacobian(0, 0) - 2.3) > 1e-3);  // a line through a curve is biased here
 }
 
-TEST_CASE("response surface ignores failed samples and says when it has too few", "[unit][calibrate]") {
+TEST_CASE("response surface ignores failed samples and says when it has too few",
+          "[unit][calibrate]") {
   std::vector<Sample> samples = Cloud(2, {0.5, 0.5}, 0.1, 2, LinearModel);
   samples.push_back({{0.5, 0.52}, {}});  // failed
   const ResponseSurface s = FitResponseSurface(samples, {0.5, 0.5});

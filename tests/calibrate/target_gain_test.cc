@@ -15,7 +15,8 @@ TEST_CASE("a target with independent sensitivities lifts a valley, a proportiona
   j << 18, 52.8;
   const std::vector<CandidateTarget> candidates{{"discharge_time_s", {25, -6}},
                                                 {"angle_deg (second heap)", {9, 26.4}}};
-  const std::vector<TargetGain> g = RankCandidateTargets(j, candidates, {"mu_s", "mu_r"}, {0.9, 0.88});
+  const std::vector<TargetGain> g =
+      RankCandidateTargets(j, candidates, {"mu_s", "mu_r"}, {0.9, 0.88});
   REQUIRE(g.size() == 2);
   CHECK(g[0].lifts_valley);
   CHECK(g[0].undetermined_before == 1);
@@ -47,6 +48,7 @@ TEST_CASE("an extra target shrinks finite sigmas by the information it adds", "[
   CHECK_FALSE(g[0].lifts_valley);
   CHECK(g[0].shrink[0] == Approx(1.0));
   CHECK(g[0].shrink[1] == Approx(1 / std::sqrt(2.0)));  // information 25 → 50
-  const std::vector<TargetGain> bad = RankCandidateTargets(j, {{"wrong", {1}}}, {"p0", "p1"}, {1, 1});
+  const std::vector<TargetGain> bad =
+      RankCandidateTargets(j, {{"wrong", {1}}}, {"p0", "p1"}, {1, 1});
   CHECK(bad[0].description.find("ignored") != std::string::npos);
 }
