@@ -3,16 +3,40 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "calibrate/observable_registry.h"
+
 namespace demcal::calibrate {
 namespace {
 
-constexpr const char* kFormat = "demcal-journal/1";
+constexpr const char* kFormat = "demcal-journal/2";
+
+// A record is ~200 bytes; a megabyte line is not one of ours (and a cheap guard before parsing).
+constexpr size_t kMaxLineBytes = 1 << 20;
+// A record nests 2 deep; the parser recurses, so a hostile deep line must be refused before it.
+constexpr int kMaxDepth = 8;
+
+int NestingDepth(const std::string& text) {
+  int depth = 0, deepest = 0;
+  bool quoted = false;
+  for (size_t k = 0; k < text.size(); ++k) {
+    const char c = text[k];
+    if (quoted) {
+      if (c == '\\') ++k;
+      else if (c == '"') quoted = false;
+    } else if (c == '"') quoted = true;
+    else if (c == '[' || c == '{') deepest = std::max(deepest, ++depth);
+    else if (c == ']' || c == '}') --depth;
+  }
+  return deepest;
+}
 
 bool Fail(std::string* error, const std::string& message) {
   if (error) *error = message;
@@ -21,25 +45,76 @@ bool Fail(std::string* error, const std::string& message) {
 
 std::string RecordLine(const ReplicateRecord& r) {
   nlohmann::json j;
+  if (!r.group.empty()) j["group"] = r.group;
   j["parameters"] = r.parameters;  // shortest round-trip form: reads back bit-identical
   j["replicate"] = r.replicate;
   j["seed"] = r.seed;
   j["status"] = r.status;
-  j["value"] = r.ok() ? nlohmann::json(r.value) : nlohmann::json(nullptr);
+  if (!r.values.empty() || !r.group.empty())
+    j["values"] = r.ok() ? nlohmann::json(r.values) : nlohmann::json(nullptr);
+  else
+    j["value"] = r.ok() ? nlohmann::json(r.value) : nlohmann::json(nullptr);
   j["wall_time_s"] = r.wall_time_s;
   return j.dump() + "\n";
 }
 
-bool ParseRecord(const nlohmann::json& j, ReplicateRecord* r) {
-  if (!j.is_object() || !j.contains("parameters") || !j.contains("replicate") || !j.contains("seed"))
-    return false;
-  r->parameters = j.at("parameters").get<std::vector<double>>();
+bool Finite(const nlohmann::json& v) { return v.is_number() && std::isfinite(v.get<double>()); }
+
+// A value of observable `name` must lie in its physical range (registered observables) and be
+// finite; a journal line that breaks this was not written by demcal.
+std::string CheckValue(const std::string& name, double v) {
+  const ObservableInfo* info = FindObservable(name);
+  if (info && !info->Contains(v))
+    return name + " = " + std::to_string(v) + " outside " + info->RangeText();
+  return "";
+}
+
+// "" when the record is sound, else what is wrong with it.
+std::string ParseRecord(const nlohmann::json& j, size_t parameter_count, ReplicateRecord* r) {
+  if (!j.is_object()) return "not a JSON object";
+  for (const char* key : {"parameters", "replicate", "seed", "status"})
+    if (!j.contains(key)) return std::string("missing '") + key + "'";
+  const nlohmann::json& p = j.at("parameters");
+  if (!p.is_array() || p.empty()) return "parameters: must be a non-empty array of numbers";
+  for (const nlohmann::json& v : p)
+    if (!Finite(v)) return "parameters: must be finite numbers";
+  if (parameter_count > 0 && p.size() != parameter_count)
+    return "parameters: " + std::to_string(p.size()) + " values, the study has " +
+           std::to_string(parameter_count);
+  r->parameters = p.get<std::vector<double>>();
+  if (!j.at("replicate").is_number_unsigned() || j.at("replicate").get<uint64_t>() > 1000000)
+    return "replicate: must be a whole number in [0, 1000000]";
   r->replicate = j.at("replicate").get<int>();
+  if (!j.at("seed").is_number_unsigned()) return "seed: must be a whole number >= 0";
   r->seed = j.at("seed").get<uint64_t>();
-  r->status = j.value("status", std::string("ok"));
-  r->value = j.at("value").is_number() ? j.at("value").get<double>() : 0.0;
+  if (!j.at("status").is_string() || j.at("status").get<std::string>().empty())
+    return "status: must be a non-empty string";
+  r->status = j.at("status").get<std::string>();
+  if (j.contains("group") && !j.at("group").is_string()) return "group: must be a string";
+  r->group = j.value("group", std::string());
+  if (j.contains("wall_time_s") && !(Finite(j.at("wall_time_s")) && j.at("wall_time_s").get<double>() >= 0))
+    return "wall_time_s: must be a finite number >= 0";
   r->wall_time_s = j.value("wall_time_s", 0.0);
-  return r->ok() == j.at("value").is_number();
+  const bool has_values = j.contains("values"), has_value = j.contains("value");
+  if (has_values == has_value) return "needs exactly one of 'value' or 'values'";
+  const nlohmann::json& v = has_values ? j.at("values") : j.at("value");
+  if (!r->ok()) return v.is_null() ? "" : "a failed run carries no value";
+  if (has_value) {
+    if (!Finite(v)) return "value: must be a finite number for status ok";
+    r->value = v.get<double>();
+    return "";
+  }
+  if (!v.is_object() || v.empty()) return "values: must be an object of observable -> number";
+  for (const auto& [name, x] : v.items()) {
+    if (!Finite(x)) return "values." + name + ": must be a finite number";
+    if (std::string why = CheckValue(name, x.get<double>()); !why.empty()) return "values." + why;
+    r->values[name] = x.get<double>();
+  }
+  return "";
+}
+
+bool SameRecord(const ReplicateRecord& a, const ReplicateRecord& b) {
+  return a.seed == b.seed && a.status == b.status && a.value == b.value && a.values == b.values;
 }
 
 }  // namespace
@@ -49,7 +124,7 @@ EvaluationJournal::~EvaluationJournal() {
 }
 
 bool EvaluationJournal::Open(const std::string& path, const std::string& fingerprint,
-                             std::string* error) {
+                             std::string* error, size_t parameter_count) {
   path_ = path;
   std::string content;
   {
@@ -63,6 +138,9 @@ bool EvaluationJournal::Open(const std::string& path, const std::string& fingerp
   std::string line;
   bool has_header = false;
   for (int number = 1; std::getline(lines, line); ++number) {
+    if (line.size() > kMaxLineBytes || NestingDepth(line) > kMaxDepth)
+      return Fail(error, path + ":" + std::to_string(number) + ": not a journal record (longer "
+                         "than 1 MiB or nested deeper than 8)");
     nlohmann::json j = nlohmann::json::parse(line, nullptr, /*allow_exceptions=*/false);
     const std::string at = path + ":" + std::to_string(number) + ": ";
     if (!has_header) {
@@ -76,8 +154,13 @@ bool EvaluationJournal::Open(const std::string& path, const std::string& fingerp
       continue;
     }
     ReplicateRecord r;
-    if (j.is_discarded() || !ParseRecord(j, &r)) return Fail(error, at + "not a journal record");
-    records_[{r.parameters, r.replicate}] = r;
+    if (j.is_discarded()) return Fail(error, at + "not JSON (a journal line is one JSON record)");
+    if (std::string why = ParseRecord(j, parameter_count, &r); !why.empty())
+      return Fail(error, at + why);
+    const auto [it, inserted] = records_.try_emplace({r.group, r.parameters, r.replicate}, r);
+    if (!inserted && !SameRecord(it->second, r))
+      return Fail(error, at + "a second record of the same run (group, parameters, replicate) "
+                              "with other content; the journal has been edited or mixed");
   }
   loaded_ = records_.size();
   fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
@@ -95,8 +178,14 @@ bool EvaluationJournal::Open(const std::string& path, const std::string& fingerp
 
 const ReplicateRecord* EvaluationJournal::Find(const std::vector<double>& parameters, int replicate,
                                                uint64_t seed) const {
+  return Find("", parameters, replicate, seed);
+}
+
+const ReplicateRecord* EvaluationJournal::Find(const std::string& group,
+                                               const std::vector<double>& parameters,
+                                               int replicate, uint64_t seed) const {
   std::lock_guard lock(mutex_);
-  const auto it = records_.find({parameters, replicate});
+  const auto it = records_.find({group, parameters, replicate});
   return it != records_.end() && it->second.seed == seed ? &it->second : nullptr;
 }
 
@@ -106,7 +195,7 @@ bool EvaluationJournal::Append(const ReplicateRecord& record, std::string* error
   if (fd_ < 0) return Fail(error, "journal not open");
   if (::write(fd_, line.data(), line.size()) != static_cast<ssize_t>(line.size()) || ::fsync(fd_) != 0)
     return Fail(error, path_ + ": cannot append: " + std::strerror(errno));
-  records_[{record.parameters, record.replicate}] = record;
+  records_[{record.group, record.parameters, record.replicate}] = record;
   return true;
 }
 

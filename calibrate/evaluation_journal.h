@@ -5,10 +5,16 @@
 // asks for the same candidates again and finds them here (exact match on the parameter values
 // and the replicate's seed).
 //
-// File: the first line is a header {"format": "demcal-journal/1", "study": <fingerprint>}; then
-// one record per replicate run: {"parameters": [...], "replicate": r, "seed": s, "status": "ok",
-// "value": x, "wall_time_s": t}. A line cut short by a kill is dropped on reopening. A journal of
-// another study (a different fingerprint) is refused, never mixed in.
+// File: the first line is a header {"format": "demcal-journal/2", "study": <fingerprint>}; then
+// one record per replicate run: {"group": g, "parameters": [...], "replicate": r, "seed": s,
+// "status": "ok", "values": {"angle_deg": x, ...}, "wall_time_s": t} (single-observable studies
+// write "value": x instead of "values"). The group names the experiment run a record belongs to
+// (an experiment file under a condition: one heap feeds every target that reads it). A line cut
+// short by a kill is dropped on reopening. A journal of another study (a different fingerprint)
+// is refused, never mixed in. Every record is checked on loading: types, finite numbers, the
+// parameter count, values inside their observable's physical range; a bad line is an error
+// "journal.jsonl:LINE: ...", and a second record of the same run with other content is an
+// error, never a silent overwrite.
 //
 //   EvaluationJournal journal;
 //   if (!journal.Open(dir + "/journal.jsonl", fingerprint, &error)) ...;
@@ -20,6 +26,7 @@
 #include <map>
 #include <mutex>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace demcal::calibrate {
@@ -31,6 +38,8 @@ struct ReplicateRecord {
   std::string status = "ok";       // "ok", or why the run gave no value
   double value = 0;                // the observable (meaningful when status == "ok")
   double wall_time_s = 0;
+  std::string group;                     // the experiment run ("" for single-observable studies)
+  std::map<std::string, double> values;  // observable -> value (multi-observable runs)
   bool ok() const { return status == "ok"; }
 };
 
@@ -43,11 +52,15 @@ class EvaluationJournal {
 
   // Opens (creating it if absent) and loads the journal; false with a message naming the file
   // if it cannot be read or written, or belongs to another study.
-  bool Open(const std::string& path, const std::string& fingerprint, std::string* error);
+  // parameter_count > 0: every record must have that many parameters.
+  bool Open(const std::string& path, const std::string& fingerprint, std::string* error,
+            size_t parameter_count = 0);
 
   // The record of this candidate's replicate, or nullptr. The pointer stays valid.
   const ReplicateRecord* Find(const std::vector<double>& parameters, int replicate,
                               uint64_t seed) const;
+  const ReplicateRecord* Find(const std::string& group, const std::vector<double>& parameters,
+                              int replicate, uint64_t seed) const;
   bool Append(const ReplicateRecord& record, std::string* error);
 
   size_t LoadedRecords() const { return loaded_; }  // records found on opening
@@ -55,7 +68,7 @@ class EvaluationJournal {
   const std::string& path() const { return path_; }
 
  private:
-  using Key = std::pair<std::vector<double>, int>;
+  using Key = std::tuple<std::string, std::vector<double>, int>;
   std::string path_;
   int fd_ = -1;
   size_t loaded_ = 0;

@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/io/scratch_dir.h"
+
 using demcal::calibrate::EvaluationJournal;
 using demcal::calibrate::ReplicateRecord;
 
@@ -80,4 +82,31 @@ TEST_CASE("journal of another study or a foreign file is refused", "[unit][calib
   EvaluationJournal j;
   CHECK_FALSE(j.Open(junk, "study-A", &error));
   CHECK(error.find(junk + ":1") != std::string::npos);
+}
+
+TEST_CASE("journal records are validated line by line on loading", "[unit][calibrate]") {
+  demcal::testing::ScratchDir dir("journal_validation");
+  const std::string header = R"({"format": "demcal-journal/2", "study": "f"})";
+  const std::string good = R"({"parameters": [0.5], "replicate": 0, "seed": 1, "status": "ok", "value": 30.0})";
+  auto load = [&](const std::string& body) {
+    std::ofstream(dir.str("j.jsonl"), std::ios::trunc) << header << "\n" << body << "\n";
+    demcal::calibrate::EvaluationJournal j;
+    std::string error;
+    return j.Open(dir.str("j.jsonl"), "f", &error, 1) ? std::string("ok") : error;
+  };
+  CHECK(load(good) == "ok");
+  CHECK(load(good + "\n" + good) == "ok");  // an identical duplicate is harmless
+  CHECK_THAT(load(good + "\n" + R"({"parameters": [0.5], "replicate": 0, "seed": 1, "status": "ok", "value": 31.0})"),
+             Catch::Contains("j.jsonl:3: a second record of the same run"));
+  CHECK_THAT(load(R"({"parameters": "x", "replicate": 0, "seed": 1, "status": "ok", "value": 1})"),
+             Catch::Contains("j.jsonl:2: parameters"));
+  CHECK_THAT(load(R"({"parameters": [0.5], "replicate": 0, "seed": 1, "status": "ok"})"),
+             Catch::Contains("exactly one of 'value' or 'values'"));
+  CHECK_THAT(load(R"({"parameters": [0.5], "replicate": 0, "seed": "1", "status": "ok", "value": 1})"),
+             Catch::Contains("seed"));
+  CHECK_THAT(load(R"({"parameters": [0.5, 1], "replicate": 0, "seed": 1, "status": "ok", "value": 1})"),
+             Catch::Contains("2 values, the study has 1"));
+  CHECK_THAT(load(R"({"group": "g", "parameters": [0.5], "replicate": 0, "seed": 1, "status": "ok", "values": {"angle_deg": -1e5}})"),
+             Catch::Contains("angle_deg") && Catch::Contains("outside [0, 90] deg"));
+  CHECK_THAT(load(std::string(100000, '[')), Catch::Contains("j.jsonl:2: not a journal record"));
 }

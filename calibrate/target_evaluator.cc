@@ -1,0 +1,112 @@
+#include "calibrate/target_evaluator.h"
+
+#include <mutex>
+
+#include "objectives/common/replicates.h"
+
+namespace demcal::calibrate {
+
+// One replicate of one group at one candidate still to run.
+struct TargetEvaluator::Task {
+  int candidate = 0, group = 0, replicate = 0;
+};
+
+TargetEvaluator::TargetEvaluator(const ParameterSpace& space, std::vector<RunGroup> groups,
+                                 std::vector<TargetBinding> targets,
+                                 TargetEvaluatorOptions options, EvaluationJournal* journal)
+    : space_(space),
+      groups_(std::move(groups)),
+      targets_(std::move(targets)),
+      options_(options),
+      journal_(journal) {}
+
+std::vector<CandidateResult> TargetEvaluator::EvaluateBatch(
+    const std::vector<std::vector<double>>& si_parameters) {
+  const int n = static_cast<int>(si_parameters.size()), g = static_cast<int>(groups_.size());
+  const int replicates = options_.replicates;
+  std::vector<CandidateRuns> batch(n);
+  std::vector<std::string> infeasible(n);
+  std::vector<core::Scene> models(static_cast<size_t>(n) * g);
+  std::vector<Task> pending;
+  std::vector<int> reused(n, 0);
+  for (int c = 0; c < n; ++c) {
+    const std::vector<double>& p = si_parameters[c];
+    batch[c].parameters = p;
+    batch[c].runs.assign(g, std::vector<ReplicateRecord>(replicates));
+    if (!space_.Feasible(p, &infeasible[c])) continue;
+    for (int k = 0; k < g && infeasible[c].empty(); ++k) {  // every group's model first
+      core::Scene& model = models[static_cast<size_t>(c) * g + k];
+      model = groups_[k].model;
+      if (!groups_[k].space.Apply(p, groups_[k].condition, &model, &infeasible[c])) break;
+      if (groups_[k].prepare) groups_[k].prepare(&model);
+    }
+    if (!infeasible[c].empty()) continue;
+    for (int k = 0; k < g; ++k)
+      for (int r = 0; r < replicates; ++r) {
+        const uint64_t seed = objectives::ReplicateSeed(options_.seed, r);
+        ReplicateRecord& record = batch[c].runs[k][r];
+        const ReplicateRecord* done = journal_ ? journal_->Find(groups_[k].key, p, r, seed) : nullptr;
+        if (done) {
+          record = *done;
+          ++reused[c];
+        } else {
+          record.parameters = p, record.replicate = r, record.seed = seed;
+          record.group = groups_[k].key, record.status = "pending";
+          pending.push_back({c, k, r});
+        }
+      }
+  }
+  std::mutex error_mutex;
+  std::vector<std::string> journal_errors(n);
+  objectives::RunReplicates(static_cast<int>(pending.size()), 0, options_.workers, [&](int t, uint64_t) {
+    const Task& task = pending[t];
+    ReplicateRecord& record = batch[task.candidate].runs[task.group][task.replicate];
+    const ProbeOutcome o = groups_[task.group].probe->Run(
+        models[static_cast<size_t>(task.candidate) * g + task.group], record.seed);
+    record.status = o.status, record.values = o.values, record.wall_time_s = o.wall_time_s;
+    std::string error;
+    if (journal_ && !journal_->Append(record, &error)) {
+      std::lock_guard lock(error_mutex);
+      if (journal_errors[task.candidate].empty()) journal_errors[task.candidate] = error;
+    }
+  });
+  std::vector<CandidateResult> results;
+  for (int c = 0; c < n; ++c) {
+    CandidateResult result = Summarise(batch[c], infeasible[c]);
+    result.replicates_reused = reused[c];
+    int run = 0;
+    for (const Task& t : pending) run += t.candidate == c;
+    result.replicates_run = run;
+    result.journal_error = journal_errors[c];
+    results.push_back(std::move(result));
+    history_.push_back(std::move(batch[c]));
+  }
+  return results;
+}
+
+CandidateResult TargetEvaluator::Summarise(const CandidateRuns& runs,
+                                           const std::string& infeasible) const {
+  CandidateResult result;
+  if (!infeasible.empty()) {
+    result.status = "infeasible: " + infeasible;
+    result.targets.assign(targets_.size(), TargetValue{0, 0, 0, result.status});
+    return result;
+  }
+  for (const TargetBinding& target : targets_) {
+    std::vector<double> values;
+    std::string failure;
+    for (const ReplicateRecord& r : runs.runs[target.group]) {
+      const auto it = r.values.find(target.observable);
+      if (r.ok() && it != r.values.end()) values.push_back(it->second);
+      else if (failure.empty()) failure = r.ok() ? "no_" + target.observable : r.status;
+    }
+    const objectives::Summary s = objectives::Summarise(values);
+    TargetValue value{s.mean, s.sem, s.n, "ok"};
+    if (s.n < 1 || 2 * s.n < options_.replicates) value.status = failure.empty() ? "no_value" : failure;
+    if (result.status == "ok" && value.status != "ok") result.status = value.status;
+    result.targets.push_back(value);
+  }
+  return result;
+}
+
+}  // namespace demcal::calibrate

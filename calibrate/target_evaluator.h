@@ -1,0 +1,83 @@
+#pragma once
+// TargetEvaluator: the CandidateEvaluator of a multi-target study. Targets read observables of
+// experiment runs; a run group is one experiment (a probe with its full-scale model) under one
+// condition, so two targets of the same heap (its angle and its crest drop) share its runs.
+// For each candidate of a batch and each group: the parameters are written into the model under
+// the group's condition (ParameterSpace::Apply: per-condition parameters, curves), then
+// `prepare` turns it into the simulated model (the fidelity: coarse-graining, stiffness, Γ at
+// constant Cohesion number). Replicate r uses the same seed in every group and for every
+// candidate (common random numbers). All runs of a batch — candidates × groups × replicates —
+// go side by side, one per worker; each finished run goes to the journal at once (group key,
+// parameters, replicate, seed), and a run found there is not repeated.
+//
+// A candidate that breaks a declared constraint, or whose curve gives no valid property at a
+// group's condition, is infeasible without running. A target has a value when at least half of
+// its group's replicates (and at least one) gave one.
+//
+//   TargetEvaluator evaluator(space, groups, targets, {.replicates = 2, .seed = 7}, &journal);
+//   CalibrationSummary s = Calibrate(evaluator, space, targets_measured, options);
+//
+// Thread-safety: one EvaluateBatch at a time (it parallelises inside).
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "calibrate/candidate_evaluator.h"
+#include "calibrate/condition.h"
+#include "calibrate/evaluation_journal.h"
+#include "calibrate/experiment_probe.h"
+#include "calibrate/parameter_space.h"
+#include "core/scene.h"
+
+namespace demcal::calibrate {
+
+struct RunGroup {
+  std::string key;                        // journal group, unique: "aor_bp.json|coating=0.5"
+  const ExperimentProbe* probe = nullptr;  // not owned
+  core::Scene model;                       // full scale, before the parameters
+  ParameterSpace space;                    // the study's, resolved to this model's materials
+  Condition condition;
+  std::function<void(core::Scene*)> prepare;  // applied after the parameters (fidelity)
+};
+
+struct TargetBinding {
+  int group = 0;           // index into the groups
+  std::string observable;  // one the group's probe reports
+};
+
+struct TargetEvaluatorOptions {
+  int replicates = 2;  // runs per candidate and group, >= 1
+  uint64_t seed = 1;   // base seed of the replicates
+  int workers = 0;     // runs side by side (0: all cores)
+};
+
+// What one candidate gave, per group and replicate (for evaluations.csv and the plots).
+struct CandidateRuns {
+  std::vector<double> parameters;
+  std::vector<std::vector<ReplicateRecord>> runs;  // [group][replicate]
+};
+
+class TargetEvaluator final : public CandidateEvaluator {
+ public:
+  TargetEvaluator(const ParameterSpace& space, std::vector<RunGroup> groups,
+                  std::vector<TargetBinding> targets, TargetEvaluatorOptions options,
+                  EvaluationJournal* journal);
+  std::vector<CandidateResult> EvaluateBatch(
+      const std::vector<std::vector<double>>& si_parameters) override;
+  const std::vector<CandidateRuns>& history() const { return history_; }
+  const std::vector<RunGroup>& groups() const { return groups_; }
+
+ private:
+  struct Task;
+  CandidateResult Summarise(const CandidateRuns& runs, const std::string& infeasible) const;
+
+  const ParameterSpace& space_;
+  std::vector<RunGroup> groups_;
+  std::vector<TargetBinding> targets_;
+  TargetEvaluatorOptions options_;
+  EvaluationJournal* journal_;
+  std::vector<CandidateRuns> history_;
+};
+
+}  // namespace demcal::calibrate
