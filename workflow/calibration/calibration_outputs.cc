@@ -1,148 +1,176 @@
 #include "workflow/calibration/calibration_outputs.h"
 
-#include <algorithm>
+#include <cmath>
 #include <sstream>
 
-#include "workflow/experiments/experiment_runner.h"
-#include "workflow/files/json_document.h"
 #include "calibrate/liggghts_export.h"
 #include "core/version.h"
-#include "objectives/report/svg_plot.h"
 #include "objectives/report/text_file.h"
+#include "workflow/calibration/calibration_plots.h"
+#include "workflow/experiments/experiment_runner.h"
+#include "workflow/files/json_document.h"
 
 namespace demcal::workflow {
 namespace {
 
 using calibrate::CalibrationSummary;
-using calibrate::Evaluation;
 using Json = nlohmann::ordered_json;
+
+Json Finite(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
+
+Json MatrixJson(const Eigen::MatrixXd& m) {
+  Json rows = Json::array();
+  for (Eigen::Index i = 0; i < m.rows(); ++i) {
+    Json row = Json::array();
+    for (Eigen::Index j = 0; j < m.cols(); ++j) row.push_back(Finite(m(i, j)));
+    rows.push_back(row);
+  }
+  return rows;
+}
 
 Json Provenance(const CalibrationRunInfo& info, const CalibrationSummary& s) {
   const StudyFile& st = *info.study;
-  return {{"demcal_version", kVersion},
-          {"study_file", st.source},
-          {"experiment_file", st.experiment_path},
-          {"measurement", {{"observable", st.measurement.observable},
-                           {"value", st.measurement.value},
-                           {"uncertainty", st.measurement.uncertainty},
-                           {"source", st.measurement.source},
-                           {"note", st.measurement_note}}},
-          {"fidelity", FidelityJson(info.fidelity)},
-          {"seed", info.seed},
-          {"replicates", info.replicates},
-          {"optimiser", st.options.optimiser},
-          {"termination", s.termination}};
-}
-
-Json ParameterJson(const CalibrationRunInfo& info, const CalibrationSummary& s, size_t k) {
-  const calibrate::Parameter& p = info.study->space.parameters[k];
-  const auto& materials = info.study->experiment.model.materials;
-  Json j{{"name", p.name},
-         {"property", calibrate::PairPropertyKey(p.property)},
-         {"materials", {materials[p.material_i].name, materials[p.material_j].name}},
-         {"value", s.history[s.best].parameters[k]}};
-  j["uncertainty"] = k < s.uncertainty.size() && s.uncertainty[k] > 0 ? Json(s.uncertainty[k]) : Json(nullptr);
-  j["sensitivity_per_unit"] = k < s.sensitivity.size() ? Json(s.sensitivity[k]) : Json(nullptr);
+  Json targets = Json::array(), experiments = Json::array();
+  for (const StudyTarget& t : st.targets)
+    targets.push_back({{"name", t.target.name}, {"observable", t.target.observable},
+                       {"value", t.target.value}, {"uncertainty", t.target.uncertainty},
+                       {"condition", t.condition}, {"provenance", t.provenance},
+                       {"source", t.target.source}, {"note", t.note}});
+  for (const StudyExperiment& e : st.experiments)
+    experiments.push_back({{"file", e.path}, {"experiment", e.file.experiment}});
+  Json j{{"demcal_version", kVersion}, {"study_file", st.source}, {"experiments", experiments},
+         {"targets", targets}, {"fidelity", FidelityJson(info.fidelity)}, {"seed", info.seed},
+         {"replicates", info.replicates}, {"optimiser", st.options.optimiser},
+         {"termination", s.termination}};
+  if (info.clump_count > 0)
+    j["clump_count"] = {{"species", st.clump_count.species}, {"count", info.clump_count}};
   return j;
 }
 
+Json ParameterJson(const StudyFile& st, const CalibrationSummary& s, size_t k) {
+  const calibrate::Parameter& p = st.space.parameters[k];
+  Json j{{"name", p.name}, {"property", calibrate::PairPropertyKey(p.property)},
+         {"materials", {st.parameter_materials[k].first, st.parameter_materials[k].second}}};
+  if (!p.when.empty()) j["when"] = p.when;
+  if (p.curve >= 0) j["curve"] = st.space.curves[p.curve].name;
+  j["value"] = s.best >= 0 ? Json(s.candidates[s.best].parameters[k]) : Json(nullptr);
+  const bool estimated = k < s.estimates.size();
+  j["sigma"] = estimated ? Finite(s.estimates[k].sigma) : Json(nullptr);
+  j["identifiable"] = estimated && s.estimates[k].identifiable;
+  return j;
+}
+
+Json IdentifiabilityJson(const calibrate::IdentifiabilityReport& r) {
+  Json undetermined = Json::array();
+  for (const calibrate::UndeterminedDirection& d : r.undetermined)
+    undetermined.push_back({{"description", d.description}, {"direction_si", d.si_direction}, {"singular_value", d.singular_value}});
+  return {{"singular_values", r.singular_values}, {"condition_number", Finite(r.condition_number)},
+          {"undetermined", undetermined}, {"summary", r.summary}};
+}
+
+Json GainsJson(const std::vector<calibrate::TargetGain>& gains) {
+  Json list = Json::array();
+  for (const calibrate::TargetGain& g : gains) {
+    Json before = Json::array(), after = Json::array();
+    for (double v : g.sigma_before) before.push_back(Finite(v));
+    for (double v : g.sigma_after) after.push_back(Finite(v));
+    list.push_back({{"name", g.name}, {"sigma_before", before}, {"sigma_after", after},
+                    {"lifts_valley", g.lifts_valley}, {"description", g.description}});
+  }
+  return list;
+}
+
 Json ResultJson(const CalibrationRunInfo& info, const CalibrationSummary& s) {
-  Json j{{"format", "demcal-calibration/1"}, {"termination", s.termination}, {"message", s.message}};
+  const StudyFile& st = *info.study;
+  Json j{{"format", "demcal-calibration/2"}, {"termination", s.termination}, {"message", s.message}};
   j["provenance"] = Provenance(info, s);
-  j["candidates"] = s.history.size();
+  j["candidates"] = s.candidates.size();
+  j["batches"] = s.batches;
   j["replicates_run"] = s.replicates_run;
   j["replicates_reused"] = s.replicates_reused;
   j["wall_time_s"] = info.wall_time_s;
-  if (s.best >= 0) {
-    const Evaluation& e = s.history[s.best];
-    Json params = Json::array();
-    for (size_t k = 0; k < e.parameters.size(); ++k) params.push_back(ParameterJson(info, s, k));
-    j["parameters"] = params;
-    j["simulated"] = {{"mean", e.summary.mean}, {"sem", e.summary.sem}, {"n", e.summary.n}};
-    j["standardised_residual"] = s.best_residual;
-  }
-  j["uncertainty_note"] = s.uncertainty_note;
+  Json params = Json::array(), residuals = Json::array();
+  for (size_t k = 0; k < st.space.Size(); ++k) params.push_back(ParameterJson(st, s, k));
+  for (const calibrate::TargetResidual& r : s.residuals)
+    residuals.push_back({{"name", r.name}, {"observable", r.observable}, {"measured", r.measured},
+                         {"uncertainty", r.uncertainty}, {"simulated", r.simulated}, {"sem", r.sem},
+                         {"standardised_residual", r.residual}, {"within_noise", r.within_noise}});
+  j["parameters"] = params;
+  j["targets"] = residuals;
+  j["correlation"] = MatrixJson(s.correlation);
+  j["covariance_si"] = MatrixJson(s.covariance);
+  j["covariance_note"] = s.covariance_note;
+  j["sensitivity_matrix"] = {{"rows", "targets, standardised (residual / sqrt(u^2 + sem^2))"},
+                             {"columns", "parameters, per unit of the unit cube"},
+                             {"values", MatrixJson(s.jacobian)}, {"sigma", MatrixJson(s.jacobian_sigma)},
+                             {"note", s.jacobian_note}};
+  j["identifiability"] = IdentifiabilityJson(s.identifiability);
+  j["candidate_targets"] = GainsJson(info.gains);
   j["journal_error"] = s.journal_error.empty() ? Json(nullptr) : Json(s.journal_error);
   return j;
 }
 
-// The calibrated values as entries of an experiment or scene file's "interactions.pairs".
 Json ParamsJson(const CalibrationRunInfo& info, const CalibrationSummary& s) {
+  const StudyFile& st = *info.study;
   Json j{{"format", "demcal-params/1"}, {"provenance", Provenance(info, s)}};
-  Json pairs = Json::array(), values = Json::array();
-  if (s.best >= 0)
-    for (size_t k = 0; k < s.history[s.best].parameters.size(); ++k) {
-      const Json p = ParameterJson(info, s, k);
-      values.push_back(p);
+  Json values = Json::array(), pairs = Json::array();
+  for (size_t k = 0; k < st.space.Size(); ++k) {
+    const Json p = ParameterJson(st, s, k);
+    values.push_back(p);
+    if (st.space.parameters[k].curve < 0 && st.space.parameters[k].when.empty() && s.best >= 0)
       pairs.push_back({{"materials", p["materials"]}, {p["property"].get<std::string>(), p["value"]}});
-    }
+  }
   j["parameters"] = values;
-  j["interactions_pairs"] = pairs;
+  j["interactions_pairs"] = pairs;  // the global values, ready for an experiment or scene file
+  j["covariance_si"] = MatrixJson(s.covariance);
+  j["correlation"] = MatrixJson(s.correlation);
   return j;
 }
 
-bool WriteEvaluationsCsv(const std::string& path, const StudyFile& st, const CalibrationSummary& s,
+bool WriteEvaluationsCsv(const std::string& path, const CalibrationRunInfo& info, const CalibrationSummary& s,
                          std::string* error) {
+  const StudyFile& st = *info.study;
   return objectives::WriteTextFile(
       path,
       [&](std::ostream& out) {
         out.precision(10);
         out << "candidate";
-        for (const auto& p : st.space.parameters)
-          out << "," << p.name << (*calibrate::PairPropertyUnit(p.property) ? "_J_m2" : "");
-        const std::string obs = st.measurement.observable;
-        out << "," << obs << "_mean," << obs << "_sem,replicates_ok,replicates,reused,status\n";
-        for (const Evaluation& e : s.history) {
-          out << e.index;
-          for (double v : e.parameters) out << "," << v;
-          out << "," << e.summary.mean << "," << e.summary.sem << "," << e.summary.n << ","
-              << e.runs.size() << "," << e.reused << "," << e.status << "\n";
+        for (const calibrate::Parameter& p : st.space.parameters)
+          out << "," << p.name << (*calibrate::PairPropertyUnit(p.property) && p.curve < 0 ? "_J_m2" : "");
+        for (size_t t = 0; t < st.targets.size(); ++t)
+          out << ",target" << t << "_" << st.targets[t].target.observable << "_mean,target" << t << "_"
+              << st.targets[t].target.observable << "_sem,target" << t << "_replicates_ok";
+        out << ",cost,replicates_run,replicates_reused,status\n";
+        for (const calibrate::Candidate& c : s.candidates) {
+          out << c.index;
+          for (double v : c.parameters) out << "," << v;
+          for (const calibrate::TargetValue& v : c.result.targets)
+            out << "," << v.mean << "," << v.sem << "," << v.replicates;
+          out << "," << (c.trial.ok ? c.trial.Cost() : NAN) << "," << c.result.replicates_run << ","
+              << c.result.replicates_reused << "," << c.result.status << "\n";
         }
       },
       error);
 }
 
-objectives::SvgPlot CalibrationPlot(const StudyFile& st, const CalibrationSummary& s) {
-  const calibrate::Parameter& p = st.space.parameters[0];
-  const auto& materials = st.experiment.model.materials;
-  objectives::SvgPlot plot{.title = "calibration: " + st.measurement.observable + " vs " + p.name,
-                           .x_label = p.name + " (" + calibrate::PairPropertyKey(p.property) + ", " +
-                                      materials[p.material_i].name + "-" + materials[p.material_j].name + ")",
-                           .y_label = st.measurement.observable};
-  objectives::PlotSeries sim{.label = "simulated (mean)", .dots = true, .width_px = 4};
-  objectives::PlotSeries up{.label = "mean +- sem", .color = "#7f7f7f", .dots = true, .width_px = 2};
-  objectives::PlotSeries down{.label = "", .color = "#7f7f7f", .dots = true, .width_px = 2};
-  for (const Evaluation& e : s.history) {
-    if (!e.ok()) continue;
-    sim.x.push_back(e.parameters[0]), sim.y.push_back(e.summary.mean);
-    up.x.push_back(e.parameters[0]), up.y.push_back(e.summary.mean + e.summary.sem);
-    down.x.push_back(e.parameters[0]), down.y.push_back(e.summary.mean - e.summary.sem);
-  }
-  const double m = st.measurement.value, u = st.measurement.uncertainty;
-  const std::vector<double> xs{p.lower, p.upper};
-  plot.series.push_back({.label = "measured", .x = xs, .y = {m, m}, .color = "#d62728"});
-  plot.series.push_back({.label = "measured +- u", .x = xs, .y = {m + u, m + u}, .color = "#d62728", .dashed = true});
-  plot.series.push_back({.label = "", .x = xs, .y = {m - u, m - u}, .color = "#d62728", .dashed = true});
-  plot.series.push_back(sim);
-  plot.series.push_back(up);
-  plot.series.push_back(down);
-  return plot;
-}
-
-// The experiment's model with the best candidate's values, as a LIGGGHTS include file.
-bool WriteLiggghtsInclude(const std::string& path, const CalibrationRunInfo& info,
-                          const CalibrationSummary& s, std::string* error) {
+// The first experiment's model with the best candidate's values under the first target's
+// condition, as a LIGGGHTS include file.
+bool WriteLiggghtsInclude(const std::string& path, const CalibrationRunInfo& info, const CalibrationSummary& s,
+                          std::string* error) {
   const StudyFile& st = *info.study;
-  core::Scene model = st.experiment.model;
-  if (s.best >= 0) st.space.Apply(s.history[s.best].parameters, &model);
+  core::Scene model = st.experiment().model;
+  std::string why;
+  calibrate::ParameterSpace space;
+  if (s.best >= 0 && ResolveSpaceFor(st, model, &space, &why))
+    space.Apply(s.candidates[s.best].parameters, st.targets.front().condition, &model, &why);
   std::ostringstream fidelity;
   fidelity << "calibrated at fidelity '" << info.fidelity.name << "' (size x" << info.fidelity.size_scale
            << ", stiffness x" << info.fidelity.stiffness_scale
            << "); the values below are full scale (Young's moduli of the experiment file)";
   const std::vector<std::string> comments{
       "study: " + st.source + " (termination: " + s.termination + ")",
-      "measurement: " + st.measurement.source, fidelity.str(),
-      s.best >= 0 ? "calibrated: " + st.space.Describe(s.history[s.best].parameters)
+      "condition: " + calibrate::DescribeCondition(st.targets.front().condition), fidelity.str(),
+      s.best >= 0 ? "calibrated: " + st.space.Describe(s.candidates[s.best].parameters)
                   : "no calibrated value: the experiment file's values"};
   const std::string deck = calibrate::LiggghtsMaterialInclude(model, comments);
   return objectives::WriteTextFile(path, [&](std::ostream& out) { out << deck; }, error);
@@ -152,14 +180,47 @@ bool WriteLiggghtsInclude(const std::string& path, const CalibrationRunInfo& inf
 
 bool WriteCalibrationOutputs(const std::string& dir, const CalibrationRunInfo& info,
                              const CalibrationSummary& s, std::string* error) {
-  if (!WriteJsonFile(dir + "/result.json", ResultJson(info, s), error)) return false;
-  if (!WriteJsonFile(dir + "/calibrated_params.json", ParamsJson(info, s), error)) return false;
-  if (!WriteEvaluationsCsv(dir + "/evaluations.csv", *info.study, s, error)) return false;
-  if (!WriteLiggghtsInclude(dir + "/calibrated_params.liggghts", info, s, error)) return false;
-  if (info.study->space.Size() == 1 &&
-      !objectives::WriteSvg(dir + "/calibration.svg", CalibrationPlot(*info.study, s), error))
-    return false;
-  return true;
+  return WriteJsonFile(dir + "/result.json", ResultJson(info, s), error) &&
+         WriteJsonFile(dir + "/calibrated_params.json", ParamsJson(info, s), error) &&
+         WriteEvaluationsCsv(dir + "/evaluations.csv", info, s, error) &&
+         WriteLiggghtsInclude(dir + "/calibrated_params.liggghts", info, s, error) &&
+         WriteCalibrationPlots(dir, *info.study, s, error);
+}
+
+ClumpCountRow ClumpCountRowOf(int count, const CalibrationSummary& s, double wall_per_run_s) {
+  ClumpCountRow row{count, s.termination, NAN, false, wall_per_run_s, s.replicates_run};
+  if (s.best >= 0) row.cost = s.candidates[s.best].trial.Cost(), row.within_noise = s.ok();
+  return row;
+}
+
+bool WriteClumpCountOutputs(const std::string& dir, const StudyFile& study, const std::vector<ClumpCountRow>& rows,
+                            int chosen, std::string* error) {
+  Json list = Json::array();
+  std::vector<int> matching;
+  for (const ClumpCountRow& r : rows) {
+    list.push_back({{"count", r.count}, {"termination", r.termination}, {"cost", Finite(r.cost)},
+                    {"within_noise", r.within_noise}, {"replicate_runs", r.runs},
+                    {"wall_per_run_s", r.wall_per_run_s}});
+    if (r.within_noise) matching.push_back(r.count);
+  }
+  std::string note = chosen > 0 ? "chose the smallest count that matches every target within noise"
+                                : "no count matched every target within noise";
+  if (matching.size() > 1) note += "; counts that all match are not told apart by these targets";
+  const Json j{{"format", "demcal-clump-count/1"}, {"species", study.clump_count.species},
+               {"semi_axes", {study.clump_count.semi_axes.x, study.clump_count.semi_axes.y,
+                              study.clump_count.semi_axes.z}},
+               {"chosen", chosen > 0 ? Json(chosen) : Json(nullptr)}, {"matching", matching},
+               {"note", note}, {"counts", list}};
+  if (!WriteJsonFile(dir + "/clump_count.json", j, error)) return false;
+  return objectives::WriteTextFile(
+      dir + "/clump_count.csv",
+      [&](std::ostream& out) {
+        out << "count,termination,cost,within_noise,replicate_runs,wall_per_run_s\n";
+        for (const ClumpCountRow& r : rows)
+          out << r.count << "," << r.termination << "," << r.cost << "," << (r.within_noise ? 1 : 0) << ","
+              << r.runs << "," << r.wall_per_run_s << "\n";
+      },
+      error);
 }
 
 }  // namespace demcal::workflow

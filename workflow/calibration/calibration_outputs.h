@@ -1,32 +1,53 @@
 #pragma once
-// What `demcal calibrate` leaves in its output directory (README "Calibration" and
-// docs/calibration.md list every file and column):
-//   result.json            termination, best candidate, uncertainty, measurement, fidelity, provenance
-//   evaluations.csv        one row per candidate (parameters, mean, sem, replicates, status)
-//   calibrated_params.json "demcal-params/1": the calibrated pair properties as "interactions.pairs"
-//                          entries, with provenance (dataset, fidelity, seeds, optimiser, σ)
-//   calibrated_params.liggghts  the calibrated model's materials and pair table as LIGGGHTS
-//                          `fix property/global` lines (calibrate/liggghts_export.h)
-//   calibration.svg        the observable against the parameter (one parameter), target band
-// (journal.jsonl is written by the evaluation journal itself.)
+// What `demcal calibrate` leaves in its output directory (docs/calibration.md lists every file,
+// key and column):
+//   result.json            termination, per-target residuals, parameters with σ, correlation,
+//                          sensitivity matrix, identifiability report, which measurement would
+//                          help, fidelity, provenance
+//   evaluations.csv        one row per candidate: parameters, per target mean/sem, status
+//   calibrated_params.json "demcal-params/1": calibrated values with σ, covariance, provenance
+//   calibrated_params.liggghts  the calibrated model as LIGGGHTS `fix property/global` lines
+//   targets.svg, convergence.svg, profile_<parameter>.svg, parameter_plane.svg (two or more
+//                          parameters: the first two), calibration.svg (one parameter, one
+//                          target: observable against the parameter)
+// With a clump-count loop: clumps_<n>/ holds each count's files; clump_count.csv and
+// clump_count.json the table n -> best match. (journal.jsonl is the evaluation journal's.)
 #include <string>
+#include <vector>
 
-#include "workflow/files/study_file.h"
 #include "calibrate/calibration.h"
+#include "calibrate/target_evaluator.h"
+#include "calibrate/target_gain.h"
 #include "objectives/common/fidelity.h"
+#include "workflow/files/study_file.h"
 
 namespace demcal::workflow {
 
 struct CalibrationRunInfo {
   const StudyFile* study = nullptr;
-  objectives::Fidelity fidelity;
+  objectives::Fidelity fidelity;  // of the first experiment (each experiment's is in result.json)
   int replicates = 0;
   uint64_t seed = 0;
   double wall_time_s = 0;
+  int clump_count = 0;  // 0: the experiment files' shapes
+  const calibrate::TargetEvaluator* evaluator = nullptr;
+  std::vector<calibrate::TargetGain> gains;  // candidate targets, in the study's order
 };
 
-// Writes the five files into dir; false with the first error.
+// Writes every file above into dir; false with the first error.
 bool WriteCalibrationOutputs(const std::string& dir, const CalibrationRunInfo& info,
                              const calibrate::CalibrationSummary& summary, std::string* error);
+
+struct ClumpCountRow {
+  int count = 0;
+  std::string termination;
+  double cost = 0;            // Σ standardised residual² at the best candidate (NaN: none)
+  bool within_noise = false;
+  double wall_per_run_s = 0;  // mean wall time of one replicate run (cost per heap)
+  int runs = 0;
+};
+ClumpCountRow ClumpCountRowOf(int count, const calibrate::CalibrationSummary& s, double wall_per_run_s);
+bool WriteClumpCountOutputs(const std::string& dir, const StudyFile& study,
+                            const std::vector<ClumpCountRow>& rows, int chosen, std::string* error);
 
 }  // namespace demcal::workflow

@@ -3,41 +3,18 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <iomanip>
 #include <iostream>
-#include <memory>
 #include <sstream>
 
-#include "workflow/files/aor_json.h"
-#include "workflow/calibration/calibration_outputs.h"
-#include "workflow/exit_codes.h"
-#include "workflow/experiments/experiment_runner.h"
-#include "workflow/experiments/experiment_setup.h"
-#include "workflow/files/json_document.h"
-#include "workflow/files/study_file.h"
-#include "calibrate/aor_observable.h"
 #include "calibrate/evaluation_journal.h"
-#include "objectives/aor/aor_experiment.h"
+#include "calibrate/parameter_covariance.h"
+#include "calibrate/response_surface.h"
+#include "workflow/calibration/calibration_outputs.h"
+#include "workflow/calibration/study_runs.h"
+#include "workflow/exit_codes.h"
 
 namespace demcal::workflow {
 namespace {
-
-// What the journal's results depend on: the experiment file as read, the fidelity, the seed and
-// which pair properties the parameters set (not bounds or budgets: records are keyed by value).
-std::string Fingerprint(const StudyFile& study, const objectives::Fidelity& fidelity, uint64_t seed) {
-  nlohmann::json experiment;
-  std::string ignored;
-  ReadJsonFile(study.experiment_path, "experiment file", &experiment, &ignored);
-  std::ostringstream text;
-  text << experiment.dump() << "|" << FidelityJson(fidelity).dump() << "|seed=" << seed;
-  for (const calibrate::Parameter& p : study.space.parameters)
-    text << "|" << calibrate::PairPropertyKey(p.property) << ":" << p.material_i << ":" << p.material_j;
-  uint64_t hash = 1469598103934665603ull;  // FNV-1a, 64 bit
-  for (unsigned char c : text.str()) hash = (hash ^ c) * 1099511628211ull;
-  std::ostringstream hex;
-  hex << std::hex << std::setw(16) << std::setfill('0') << hash;
-  return hex.str();
-}
 
 std::string Duration(double s) {
   std::ostringstream out;
@@ -46,21 +23,169 @@ std::string Duration(double s) {
   return out.str();
 }
 
-// One line per candidate: what was tried, what came out, and the time left at most.
-calibrate::CalibrationProgress ProgressLine(const StudyFile& st, int budget, std::ostream& log) {
-  return [&st, budget, &log](const calibrate::Evaluation& e, const calibrate::TrialResult& t, double elapsed) {
+// The driver sees the study's targets; the candidate targets' values (read from the same runs,
+// or from runs of their own) are kept aside for "which measurement would help".
+class StudyEvaluator final : public calibrate::CandidateEvaluator {
+ public:
+  StudyEvaluator(calibrate::TargetEvaluator* inner, size_t targets) : inner_(inner), targets_(targets) {}
+  std::vector<calibrate::CandidateResult> EvaluateBatch(const std::vector<std::vector<double>>& p) override {
+    std::vector<calibrate::CandidateResult> results = inner_->EvaluateBatch(p);
+    for (calibrate::CandidateResult& r : results) {
+      extra_.emplace_back(r.targets.begin() + targets_, r.targets.end());
+      r.targets.resize(targets_);
+      if (r.status != "ok" && r.status.rfind("infeasible", 0) != 0) {  // a failure of a candidate target only
+        r.status = "ok";
+        for (const calibrate::TargetValue& t : r.targets)
+          if (!t.ok()) r.status = t.status;
+      }
+    }
+    return results;
+  }
+  const std::vector<std::vector<calibrate::TargetValue>>& extra() const { return extra_; }
+
+ private:
+  calibrate::TargetEvaluator* inner_;
+  size_t targets_;
+  std::vector<std::vector<calibrate::TargetValue>> extra_;
+};
+
+// One line per candidate: what was tried, what came out per target, and the time left at most.
+calibrate::CandidateProgress ProgressLine(const StudyFile& st, int budget, std::ostream& log) {
+  return [&st, budget, &log](const calibrate::Candidate& c, double elapsed) {
     std::ostringstream line;
     line.precision(4);
-    line << "calibrate: candidate " << e.index + 1 << "/" << budget << "  " << st.space.Describe(e.parameters)
-         << " -> ";
-    if (t.ok) line << st.measurement.observable << " " << e.summary.mean << " +- " << e.summary.sem;
-    else line << "no value (" << e.status << ")";
-    line << " (measured " << st.measurement.value << " +- " << st.measurement.uncertainty << ")";
-    if (e.reused) line << " [" << e.reused << " from journal]";
-    const double per = elapsed / (e.index + 1);
-    line << "  elapsed " << Duration(elapsed) << ", ETA <= " << Duration(per * (budget - e.index - 1));
+    line << "calibrate: candidate " << c.index + 1 << "/" << budget << "  " << st.space.Describe(c.parameters) << " ->";
+    for (size_t k = 0; k < st.targets.size() && k < c.result.targets.size(); ++k) {
+      const calibrate::TargetValue& v = c.result.targets[k];
+      line << (k ? ";" : "") << " " << st.targets[k].target.name << " ";
+      if (v.ok()) line << v.mean << " +- " << v.sem;
+      else line << "no value (" << v.status << ")";
+      line << " (measured " << st.targets[k].target.value << ")";
+    }
+    if (c.result.replicates_reused) line << " [" << c.result.replicates_reused << " from journal]";
+    line << "  elapsed " << Duration(elapsed) << ", ETA <= " << Duration(elapsed / (c.index + 1) * (budget - c.index - 1));
     log << line.str() << "\n" << std::flush;
   };
+}
+
+// Sensitivities of the candidate targets at the best candidate, from their values at the
+// evaluated candidates (the same response surface as the fitted targets).
+std::vector<calibrate::TargetGain> CandidateGains(const StudyFile& st, const calibrate::CalibrationSummary& s,
+                                                  const StudyEvaluator& evaluator) {
+  std::vector<calibrate::TargetGain> gains;
+  if (st.candidate_targets.empty() || s.best < 0 || s.jacobian.size() == 0) return gains;
+  const std::vector<double> centre = s.candidates[s.best].unit;
+  std::vector<calibrate::CandidateTarget> rows;
+  for (size_t k = 0; k < st.candidate_targets.size(); ++k) {
+    std::vector<calibrate::Sample> samples;
+    const double u = st.candidate_targets[k].uncertainty;
+    for (size_t c = 0; c < s.candidates.size() && c < evaluator.extra().size(); ++c) {
+      const calibrate::TargetValue& v = evaluator.extra()[c][k];
+      if (v.ok()) samples.push_back({s.candidates[c].unit, {true, {v.mean / u}, {v.sem / u}}});
+    }
+    const calibrate::ResponseSurface surface = calibrate::FitResponseSurface(samples, centre);
+    if (!surface.ok) continue;
+    rows.push_back({st.candidate_targets[k].name, std::vector<double>(surface.jacobian.cols())});
+    for (Eigen::Index p = 0; p < surface.jacobian.cols(); ++p) rows.back().sensitivity[p] = surface.jacobian(0, p);
+  }
+  std::vector<std::string> names;
+  for (const calibrate::Parameter& p : st.space.parameters) names.push_back(p.name);
+  return calibrate::RankCandidateTargets(s.jacobian, rows, names, calibrate::SiPerUnit(st.space, centre));
+}
+
+struct Outcome {
+  int exit_code = kExitOk;
+  calibrate::CalibrationSummary summary;
+  double wall_per_run_s = 0;  // mean wall time of the replicate runs made now (cost per heap)
+};
+
+double WallPerRun(const calibrate::TargetEvaluator& evaluator) {
+  double wall = 0;
+  int runs = 0;
+  for (const calibrate::CandidateRuns& c : evaluator.history())
+    for (const auto& group : c.runs)
+      for (const calibrate::ReplicateRecord& r : group)
+        if (r.wall_time_s > 0) wall += r.wall_time_s, ++runs;
+  return runs > 0 ? wall / runs : 0;
+}
+
+// One calibration of the study's continuous parameters into dir (with its own journal).
+Outcome CalibrateInto(const StudyFile& st, const CalibrateOptions& o, int clumps, const std::string& dir,
+                      std::ostream& log) {
+  Outcome out;
+  std::string error;
+  StudyRuns runs;
+  if (!BuildStudyRuns(st, o.quick, clumps, &runs, &error)) {
+    log << "error: " << error << "\n";
+    return {kExitInvalidInput, {}};
+  }
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) {
+    log << "error: --out: cannot create '" << dir << "': " << ec.message() << "\n";
+    return {kExitOutputError, {}};
+  }
+  calibrate::EvaluationJournal journal;
+  if (!journal.Open(dir + "/journal.jsonl", runs.fingerprint, &error, st.space.Size())) {
+    log << "error: " << error << "\n";
+    return {kExitInvalidInput, {}};
+  }
+  if (!o.quiet && journal.LoadedRecords() > 0)
+    log << "calibrate: resuming: " << journal.LoadedRecords() << " replicate runs in " << journal.path() << "\n";
+  const uint64_t seed = st.has_seed ? st.seed : st.experiment().seed;
+  const int replicates = st.replicates > 0 ? st.replicates : st.experiment().replicates;
+  calibrate::TargetEvaluator inner(st.space, runs.groups, runs.bindings,
+                                   {.replicates = replicates, .seed = seed, .workers = o.threads}, &journal);
+  StudyEvaluator evaluator(&inner, st.targets.size());
+  calibrate::CalibrationOptions options = st.options;
+  if (o.max_evaluations > 0) options.optimiser_options.max_evaluations = o.max_evaluations;
+  std::vector<calibrate::Target> targets;
+  for (const StudyTarget& t : st.targets) targets.push_back(t.target);
+  const auto start = std::chrono::steady_clock::now();
+  const int budget = options.optimiser_options.max_evaluations;
+  out.summary = calibrate::Calibrate(evaluator, st.space, targets, options,
+                                     o.quiet ? calibrate::CandidateProgress{} : ProgressLine(st, budget, log));
+  if (out.summary.termination == "invalid") {
+    log << "error: " << st.source << ": " << out.summary.message << "\n";
+    return {kExitInvalidInput, out.summary};
+  }
+  CalibrationRunInfo info{&st, runs.fidelities.front(), replicates, seed,
+                          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                          clumps, &inner, CandidateGains(st, out.summary, evaluator)};
+  if (!o.quiet) log << out.summary.BriefReport(st.space);
+  if (!WriteCalibrationOutputs(dir, info, out.summary, &error)) {
+    log << "error: " << error << "\n";
+    return {kExitOutputError, out.summary};
+  }
+  if (!out.summary.journal_error.empty()) log << "warning: " << out.summary.journal_error << "\n";
+  out.exit_code = out.summary.ok() ? kExitOk : kExitRunFailed;
+  out.wall_per_run_s = WallPerRun(inner);
+  return out;
+}
+
+// The paper's section 2.4: calibrate at each clump count; keep the smallest count whose best
+// candidate matches every target within noise (counts that all match are not told apart by the
+// data: the table says so, and the smallest is the cheapest per heap).
+int RunClumpCountLoop(const StudyFile& st, const CalibrateOptions& o, std::ostream& log) {
+  std::vector<ClumpCountRow> rows;
+  int chosen = -1;
+  for (int n : st.clump_count.counts) {
+    if (!o.quiet) log << "calibrate: clump count " << n << " (" << st.clump_count.species << ")\n";
+    const Outcome r = CalibrateInto(st, o, n, o.out_dir + "/clumps_" + std::to_string(n), log);
+    if (r.exit_code == kExitInvalidInput || r.exit_code == kExitOutputError) return r.exit_code;
+    rows.push_back(ClumpCountRowOf(n, r.summary, r.wall_per_run_s));
+    if (r.summary.ok() && chosen < 0) chosen = n;  // the smallest count that matches
+
+  }
+  std::string error;
+  if (!WriteClumpCountOutputs(o.out_dir, st, rows, chosen, &error)) {
+    log << "error: " << error << "\n";
+    return kExitOutputError;
+  }
+  if (!o.quiet)
+    log << "calibrate: clump count: " << (chosen > 0 ? "chose " + std::to_string(chosen) : "no count matched")
+        << " (clump_count.csv)\n";
+  return chosen > 0 ? kExitOk : kExitRunFailed;
 }
 
 }  // namespace
@@ -72,60 +197,8 @@ int RunCalibrate(const CalibrateOptions& options, std::ostream& log) {
     log << "error: " << error << "\n";
     return kExitInvalidInput;
   }
-  const ExperimentFile& file = study.experiment;
-  const objectives::Fidelity fidelity = options.quick ? file.quick_fidelity : file.fidelity;
-  if (!fidelity.IsValid(&error)) {
-    log << "error: " << file.source << ": " << error << "\n";
-    return kExitInvalidInput;
-  }
-  // The aor section checked against the model at this fidelity, and one run's scene built and
-  // validated before anything runs (as `demcal experiment aor` does).
-  ExperimentContext context;
-  context.fidelity = fidelity;
-  PreparedExperiment<objectives::AorSettings> prepared;
-  auto build = [](const core::Scene& model, const objectives::AorSettings& settings, uint64_t seed) {
-    int64_t fixed = 0;
-    return objectives::BuildAorScene(model, settings, seed, &fixed);
-  };
-  if (!PrepareExperiment(file, context, ParseAorSection, build, &prepared, log)) return kExitInvalidInput;
-  if (options.max_evaluations > 0) study.options.optimiser_options.max_evaluations = options.max_evaluations;
-  const uint64_t seed = study.has_seed ? study.seed : file.seed;
-  const int replicates = study.replicates > 0 ? study.replicates : file.replicates;
-  std::error_code ec;
-  std::filesystem::create_directories(options.out_dir, ec);
-  if (ec) {
-    log << "error: --out: cannot create '" << options.out_dir << "': " << ec.message() << "\n";
-    return kExitOutputError;
-  }
-  calibrate::EvaluationJournal journal;
-  if (!journal.Open(options.out_dir + "/journal.jsonl", Fingerprint(study, fidelity, seed), &error)) {
-    log << "error: " << error << "\n";
-    return kExitInvalidInput;
-  }
-  if (!options.quiet && journal.LoadedRecords() > 0)
-    log << "calibrate: resuming: " << journal.LoadedRecords() << " replicate runs in " << journal.path() << "\n";
-  const calibrate::AorObservable observable(prepared.settings);
-  calibrate::EvaluatorOptions eo{.replicates = replicates, .seed = seed, .workers = options.threads};
-  eo.prepare = [fidelity](core::Scene* model) { objectives::ApplyFidelity(fidelity, model); };
-  calibrate::ReplicatedEvaluator evaluator(file.model, study.space, observable, eo, &journal);
-  const auto start = std::chrono::steady_clock::now();
-  const int budget = study.options.optimiser_options.max_evaluations;
-  const calibrate::CalibrationSummary summary =
-      calibrate::Calibrate(evaluator, study.space, study.measurement, study.options,
-                           options.quiet ? calibrate::CalibrationProgress{} : ProgressLine(study, budget, log));
-  if (summary.termination == "invalid") {
-    log << "error: " << study.source << ": " << summary.message << "\n";
-    return kExitInvalidInput;
-  }
-  CalibrationRunInfo info{&study, fidelity, replicates, seed,
-                          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
-  if (!options.quiet) log << summary.BriefReport(study.space, study.measurement);
-  if (!WriteCalibrationOutputs(options.out_dir, info, summary, &error)) {
-    log << "error: " << error << "\n";
-    return kExitOutputError;
-  }
-  if (!summary.journal_error.empty()) log << "warning: " << summary.journal_error << "\n";
-  return summary.ok() ? kExitOk : kExitRunFailed;
+  if (study.clump_count.enabled()) return RunClumpCountLoop(study, options, log);
+  return CalibrateInto(study, options, 0, options.out_dir, log).exit_code;
 }
 
 }  // namespace demcal::workflow

@@ -6,35 +6,14 @@
 
 #include "workflow/exit_codes.h"
 #include "workflow/files/experiment_file.h"
-#include "workflow/experiments/experiment_runner.h"
+#include "workflow/experiments/experiment_registry.h"
 
 namespace demcal::workflow {
 
-namespace {
-
-struct NamedRunner {
-  const char* name;
-  ExperimentRunner run;
-};
-
-// Adding an experiment: one runner file and one line here.
-constexpr NamedRunner kRunners[] = {
-    {"aor", &RunAorExperiment},
-    {"discharge", &RunDischargeExperiment},
-    {"segregation", &RunSegregationExperiment},
-};
-
-ExperimentRunner FindRunner(const std::string& kind) {
-  for (const NamedRunner& r : kRunners)
-    if (kind == r.name) return r.run;
-  return nullptr;
-}
-
-}  // namespace
 
 int RunExperiment(const ExperimentOptions& options, std::ostream& log) {
-  const ExperimentRunner runner = FindRunner(options.kind);
-  if (!runner) {
+  const ExperimentKind* kind = FindExperimentKind(options.kind);
+  if (!kind) {
     log << "error: unknown experiment '" << options.kind << "' (aor, discharge, segregation)\n";
     return kExitInvalidInput;
   }
@@ -65,7 +44,7 @@ int RunExperiment(const ExperimentOptions& options, std::ostream& log) {
     log << "error: --out: cannot create '" << options.out_dir << "': " << ec.message() << "\n";
     return kExitOutputError;
   }
-  return runner(file, context, log);
+  return kind->run(file, context, log);
 }
 
 }  // namespace demcal::workflow

@@ -46,13 +46,16 @@ TEST_CASE("calibrate writes its outputs and resumes from the journal", "[dem][ca
   CHECK(first["termination"] == "budget");
   CHECK(first["replicates_run"] == 2);
   CHECK(first["provenance"]["fidelity"]["name"] == "quick");
-  CHECK(first["provenance"]["measurement"]["value"] == 40.0);
+  CHECK(first["provenance"]["targets"][0]["value"] == 40.0);
+  CHECK(first["targets"][0]["measured"] == 40.0);
+  CHECK(first["parameters"][0]["name"] == "mu_r_BP_BP");
   CHECK(Lines(dir.str("out/journal.jsonl")) == 1 + 2);       // header + one line per heap
   CHECK(Lines(dir.str("out/evaluations.csv")) == 1 + 2);     // header + one row per candidate
   const nlohmann::json params = ReadJson(dir.str("out/calibrated_params.json"));
   CHECK(params["format"] == "demcal-params/1");
   CHECK(params["interactions_pairs"][0]["materials"] == nlohmann::json({"BP", "BP"}));
-  CHECK(ReadFile(dir.str("out/calibration.svg")).find("<svg") != std::string::npos);
+  for (const char* svg : {"calibration.svg", "targets.svg", "convergence.svg", "profile_mu_r_BP_BP.svg"})
+    CHECK(ReadFile(dir.str(std::string("out/") + svg)).find("<svg") != std::string::npos);
   const std::string deck = ReadFile(dir.str("out/calibrated_params.liggghts"));
   CHECK(deck.find("coefficientRollingFriction peratomtypepair 2") != std::string::npos);
   CHECK(deck.find("rolling_friction cdt") != std::string::npos);

@@ -38,12 +38,12 @@ TEST_CASE("the example study reads its measurement from the dataset", "[unit][ca
   StudyFile study;
   std::string error;
   REQUIRE(LoadStudyFile((RepoRoot() / "examples/calibrate_bp_rolling.json").string(), &study, &error));
-  CHECK(study.measurement.value == 40.0);  // Table 1, BP
-  CHECK(study.measurement.uncertainty == 1.0);
-  CHECK(study.measurement.source.find("Table 1") != std::string::npos);
+  CHECK(study.targets[0].target.value == 40.0);  // Table 1, BP
+  CHECK(study.targets[0].target.uncertainty == 1.0);
+  CHECK(study.targets[0].target.source.find("Table 1") != std::string::npos);
   REQUIRE(study.space.Size() == 1);
   CHECK(study.space.parameters[0].property == demcal::calibrate::PairProperty::kRollingFriction);
-  CHECK(study.experiment.experiment == "aor");
+  CHECK(study.experiment().experiment == "aor");
 }
 
 TEST_CASE("study file errors name the file and the field", "[unit][calibrate]") {
