@@ -104,11 +104,11 @@ bool NeighbourList::SearchOnce(const Grid& grid, const Settings& s, const std::v
                                const std::vector<double>& r, const std::vector<int>* body) {
   const size_t n = x.size();
   const uint32_t cap = row_capacity_;
-  if (static_cast<double>(n) * cap > 4e8) return false;  // scratch would exceed 1.6 GB
-  row_scratch_.resize(n * cap);
+  if (static_cast<double>(first_fixed_) * cap > 4e8) return false;  // scratch beyond 1.6 GB
+  row_scratch_.resize(static_cast<size_t>(first_fixed_) * cap);
   row_start_.assign(n + 1, 0);
   const bool fits = tbb::parallel_reduce(
-      tbb::blocked_range<size_t>(0, n), true,
+      tbb::blocked_range<size_t>(0, first_fixed_), true,
       [&](const auto& range, bool ok) {
         for (size_t i = range.begin(); ok && i != range.end(); ++i) {
           uint32_t* row = row_scratch_.data() + i * cap;
@@ -126,11 +126,11 @@ bool NeighbourList::SearchOnce(const Grid& grid, const Settings& s, const std::v
       [](bool a, bool b) { return a && b; });
   if (!fits) return false;
   uint32_t longest = 0;
-  for (size_t i = 0; i < n; ++i) longest = std::max(longest, row_start_[i + 1]);
+  for (size_t i = 0; i < first_fixed_; ++i) longest = std::max(longest, row_start_[i + 1]);
   if (longest + 8 < cap / 4) row_capacity_ = longest + longest / 2 + 8;  // shrink after a dense phase
   for (size_t i = 0; i < n; ++i) row_start_[i + 1] += row_start_[i];
   partner_.resize(row_start_[n]);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& range) {
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, first_fixed_), [&](const auto& range) {
     for (size_t i = range.begin(); i != range.end(); ++i)
       std::copy_n(row_scratch_.data() + i * cap, row_start_[i + 1] - row_start_[i],
                   partner_.begin() + row_start_[i]);
@@ -139,16 +139,18 @@ bool NeighbourList::SearchOnce(const Grid& grid, const Settings& s, const std::v
 }
 
 void NeighbourList::Build(const Settings& s, const std::vector<Vec3>& x,
-                          const std::vector<double>& r, const std::vector<int>* body) {
+                          const std::vector<double>& r, const std::vector<int>* body,
+                          size_t first_fixed) {
   const size_t n = x.size();
   periodic_ = s.periodic;
+  first_fixed_ = static_cast<uint32_t>(std::min(first_fixed, n));  // fixed rows stay empty
   const Grid grid = MakeGrid(s, x);
   BinParticles(grid, x);
 
   if (!SearchOnce(grid, s, x, r, body)) {
     // Pass 1: count partners per row; pass 2: fill and sort each row.
     row_start_.assign(n + 1, 0);
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& range) {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, first_fixed_), [&](const auto& range) {
       for (size_t i = range.begin(); i != range.end(); ++i) {
         uint32_t count = 0;
         ForEachCandidate(grid, i, x, r, body, s.skin_m, [&](uint32_t) { ++count; });
@@ -160,7 +162,7 @@ void NeighbourList::Build(const Settings& s, const std::vector<Vec3>& x,
     row_capacity_ = longest + longest / 2 + 8;  // the next build searches once
     for (size_t i = 0; i < n; ++i) row_start_[i + 1] += row_start_[i];
     partner_.resize(row_start_[n]);
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& range) {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, first_fixed_), [&](const auto& range) {
       for (size_t i = range.begin(); i != range.end(); ++i) {
         uint32_t k = row_start_[i];
         ForEachCandidate(grid, i, x, r, body, s.skin_m, [&](uint32_t j) { partner_[k++] = j; });
@@ -186,7 +188,7 @@ bool NeighbourList::NeedsRebuild(const std::vector<Vec3>& x) const {
   if (periodic_.Any()) return NeedsRebuild(x, periodic_);
   if (x.size() != reference_position_.size()) return true;
   return tbb::parallel_reduce(
-      tbb::blocked_range<size_t>(0, x.size()), false,
+      tbb::blocked_range<size_t>(0, first_fixed_), false,  // fixed spheres never move
       [&](const auto& range, bool found) {
         for (size_t i = range.begin(); i != range.end() && !found; ++i)
           found = Norm2(x[i] - reference_position_[i]) > half_skin2_;
@@ -198,7 +200,7 @@ bool NeighbourList::NeedsRebuild(const std::vector<Vec3>& x) const {
 bool NeighbourList::NeedsRebuild(const std::vector<Vec3>& x, const PeriodicBox& box) const {
   if (x.size() != reference_position_.size()) return true;
   return tbb::parallel_reduce(
-      tbb::blocked_range<size_t>(0, x.size()), false,
+      tbb::blocked_range<size_t>(0, first_fixed_), false,
       [&](const auto& range, bool found) {
         for (size_t i = range.begin(); i != range.end() && !found; ++i)
           found = Norm2(box.MinimumImage(x[i] - reference_position_[i])) > half_skin2_;

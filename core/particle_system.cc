@@ -3,6 +3,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -74,10 +75,11 @@ size_t ParticleSystem::BodyCount() const {
   return spheres.Size() - clumps.member_slot.size() + clumps.Size();
 }
 
-void ParticleSystem::KickDrift(double dt) {
+void ParticleSystem::KickDrift(double dt, size_t moving_spheres) {
   const double half = 0.5 * dt;
   Particles& p = spheres;
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, p.Size(), 1024), [&](const auto& range) {
+  const size_t n = std::min(moving_spheres, p.Size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1024), [&](const auto& range) {
     for (size_t i = range.begin(); i != range.end(); ++i) {
       if (p.body[i] >= 0) continue;  // clump members move with their clump
       p.velocity_m_s[i] += p.force_N[i] * (half * p.inv_mass[i]);
@@ -97,10 +99,11 @@ void ParticleSystem::KickDrift(double dt) {
   });
 }
 
-void ParticleSystem::ReduceAndKick(const Vec3& gravity, double dt) {
+void ParticleSystem::ReduceAndKick(const Vec3& gravity, double dt, size_t moving_spheres) {
   const double half = 0.5 * dt;
   Particles& p = spheres;
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, p.Size(), 1024), [&](const auto& range) {
+  const size_t n = std::min(moving_spheres, p.Size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1024), [&](const auto& range) {
     for (size_t i = range.begin(); i != range.end(); ++i) {
       if (p.body[i] >= 0) continue;
       p.velocity_m_s[i] += p.force_N[i] * (half * p.inv_mass[i]);

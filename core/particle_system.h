@@ -52,9 +52,10 @@ struct ParticleSystem {
   double KineticEnergySince(size_t first_sphere, size_t first_clump) const;
 
   // Velocity Verlet: first half kick and drift (members follow their clumps) ...
-  void KickDrift(double dt);
+  // Only sphere slots [0, moving_spheres) are visited: the engine keeps fixed spheres after them.
+  void KickDrift(double dt, size_t moving_spheres);
   // ... and, after forces, the second half kick (clump forces reduced from their members).
-  void ReduceAndKick(const Vec3& gravity, double dt);
+  void ReduceAndKick(const Vec3& gravity, double dt, size_t moving_spheres);
   // Clump forces and torques from their members' (needed once before the first step).
   void ReduceClumpForces(const Vec3& gravity);
   // Wraps free spheres and clump centres back into the periodic box (members follow).
