@@ -69,10 +69,13 @@ class NeighbourList {
     Vec3 inv_cell;  // per axis: cells are at least the cut-off and tile the spanned box
     int nx, ny, nz;
     bool wrap[3];   // periodic axis: neighbour cells wrap around
+    Vec3 reach_lo, reach_hi;  // moving particles' box grown by a cut-off: fixed partners inside
     int CellOf(const Vec3& x) const;
   };
-  Grid MakeGrid(const Settings& s, const std::vector<Vec3>& positions) const;
-  void BinParticles(const Grid& grid, const std::vector<Vec3>& positions);
+  // Over the first `moving` slots (the rest are fixed spheres).
+  Grid MakeGrid(const Settings& s, const std::vector<Vec3>& positions, size_t moving) const;
+  // Fixed spheres out of reach of every moving particle are not binned (cell −1).
+  void BinParticles(const Grid& grid, const std::vector<Vec3>& positions, size_t moving);
   template <class Visit>
   void ForEachCandidate(const Grid& grid, size_t i, const std::vector<Vec3>& x,
                         const std::vector<double>& r, const std::vector<int>* body, double skin,

@@ -62,11 +62,13 @@ double ParticleSystem::GravitationalPotential(const Vec3& g) const {
   return ReleasableGravitationalEnergy(g, {});  // −Σ m g·x = Σ m g·(0 − x)
 }
 
-double ParticleSystem::ReleasableGravitationalEnergy(const Vec3& g, const Vec3& lowest) const {
+double ParticleSystem::ReleasableGravitationalEnergy(const Vec3& g, const Vec3& lowest,
+                                                     size_t first_sphere,
+                                                     size_t first_clump) const {
   double e = 0;
-  for (size_t i = 0; i < spheres.Size(); ++i)
+  for (size_t i = first_sphere; i < spheres.Size(); ++i)
     if (spheres.body[i] < 0) e += spheres.mass_kg[i] * Dot(g, lowest - spheres.position_m[i]);
-  for (size_t c = 0; c < clumps.Size(); ++c)
+  for (size_t c = first_clump; c < clumps.Size(); ++c)
     e += clumps.mass_kg[c] * Dot(g, lowest - clumps.position_m[c]);
   return e;
 }

@@ -46,8 +46,10 @@ struct ParticleSystem {
   double KineticEnergy() const;
   // −Σ m g·x over bodies (clumps at their centre of mass), J.
   double GravitationalPotential(const Vec3& gravity) const;
-  // Σ m g·(x_low − x): energy released if every body dropped to the point x_low, J.
-  double ReleasableGravitationalEnergy(const Vec3& gravity, const Vec3& lowest) const;
+  // Σ m g·(x_low − x): energy released if every body dropped to the point x_low, J; over the
+  // bodies from sphere slot `first_sphere` and clump `first_clump` on (newcomers).
+  double ReleasableGravitationalEnergy(const Vec3& gravity, const Vec3& lowest,
+                                       size_t first_sphere = 0, size_t first_clump = 0) const;
   // Bodies (free spheres + clumps) from sphere slot `first_sphere` and clump `first_clump` on.
   double KineticEnergySince(size_t first_sphere, size_t first_clump) const;
 

@@ -147,18 +147,17 @@ void Simulation::CreateFactories() {
 
 bool Simulation::InsertFromFactories() {
   const size_t first_sphere = system_.spheres.Size(), first_clump = system_.clumps.Size();
-  const double potential_before = system_.GravitationalPotential(scene_.gravity_m_s2);
-  const double releasable_before =
-      system_.ReleasableGravitationalEnergy(scene_.gravity_m_s2, lowest_point_);
   for (ParticleFactory& factory : factories_) factory.Update(time_s_, system_);
   if (system_.spheres.Size() == first_sphere) return false;
-  // The newcomers bring kinetic and potential energy (and adhesion) into the budget.
+  // The newcomers bring kinetic and potential energy (and adhesion) into the budget; summed
+  // over them only (a sum over the whole bed before and after cost a pass per step).
+  const Vec3 g = scene_.gravity_m_s2;
   const double kinetic = system_.KineticEnergySince(first_sphere, first_clump);
-  energy_budget_J_ += kinetic + system_.GravitationalPotential(scene_.gravity_m_s2) - potential_before;
+  energy_budget_J_ +=
+      kinetic + system_.ReleasableGravitationalEnergy(g, {}, first_sphere, first_clump);
   energy_scale_J_ += kinetic +
                      (system_.spheres.Size() - first_sphere) * AdhesiveEnergyBoundPerParticle(scene_, table_) +
-                     system_.ReleasableGravitationalEnergy(scene_.gravity_m_s2, lowest_point_) -
-                     releasable_before;
+                     system_.ReleasableGravitationalEnergy(g, lowest_point_, first_sphere, first_clump);
   return true;
 }
 

@@ -196,6 +196,15 @@ TEST_CASE("cell list leaves out fixed-fixed pairs and only those", "[unit]") {
     INFO("first fixed slot " << first_fixed);
     CheckAgainstBruteForce(settings, x, r, first_fixed);
   }
+  // A small moving cluster over a wide fixed bed (a stream on a base): the grid spans only the
+  // cluster and a cut-off around it; fixed spheres beyond are not binned, those within are.
+  std::uniform_real_distribution<double> cluster(0.02, 0.026), wide(-0.01, 0.06);
+  for (size_t i = 0; i < x.size(); ++i)
+    x[i] = i < 40 ? Vec3{cluster(rng), cluster(rng), cluster(rng)} : Vec3{wide(rng), wide(rng), wide(rng)};
+  const double cutoff = 2 * settings.max_radius_m + settings.skin_m;
+  for (int k = 0; k < 40; ++k)  // fixed spheres just inside and outside the cluster's reach
+    x[40 + k] = x[k] + Vec3{(k % 2 ? 0.999 : 1.001) * cutoff, 0, 0}, r[40 + k] = 0.003, r[k] = 0.003;
+  CheckAgainstBruteForce(settings, x, r, 40);
 }
 
 TEST_CASE("a rebuild is due when a moving sphere moves half the skin, never for a fixed one",
