@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "bench/pour.h"
 #include "core/clump_template.h"
 #include "core/simulation.h"
 
@@ -136,7 +137,10 @@ int main(int argc, char** argv) {
                  "settled bed (a demcal checkpoint of this case without adhesion): loaded if "
                  "present, else written after settling");
   tp->add_option("--seed", c.seed, "random seed of the pour");
+  demcal::bench::PourOptions pour;
+  CLI::App* pour_command = demcal::bench::AddPourCommand(app, &pour);
   CLI11_PARSE(app, argc, argv);
+  if (pour_command->parsed()) return demcal::bench::RunPour(pour);
 
   const Scene scene = BenchScene(c);
   Simulation sim(scene, {.threads = 0});

@@ -1,4 +1,4 @@
-// Simulation checkpoints: one binary file, "demcal-checkpoint/1", holding the whole dynamic
+// Simulation checkpoints: one binary file, "demcal-checkpoint/N", holding the whole dynamic
 // state in the order SerializeState lists it, behind a header that identifies the scene.
 #include <fstream>
 #include <sstream>
@@ -8,7 +8,8 @@
 
 namespace demcal::core {
 namespace {
-constexpr char kMagic[] = "demcal-checkpoint/3";  // 2: mesh wall histories, wall loads; 3: JKR radius
+// 2: mesh wall histories, wall loads; 3: JKR radius; 4: fixed spheres last, out of the list
+constexpr char kMagic[] = "demcal-checkpoint/4";
 }  // namespace
 
 template <class A>

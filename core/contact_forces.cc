@@ -73,6 +73,7 @@ void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
     EvaluatePair(p, table, model, dt, i, k, list.Partner(k), pair_result_[k]);
   };
   const uint32_t begin = chunks_.Begin(c), end = chunks_.End(c);
+  const uint32_t moving = list.FirstFixed();  // partners from here on are fixed spheres
   const uint32_t first_own_entry = list.RowBegin(begin);
   if (c > 0) chunks_.Ensure(c, evaluate_cross);
   for (uint32_t i = begin; i < end; ++i) {
@@ -103,7 +104,7 @@ void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
     for (uint32_t k = list.RowBegin(i); k < list.RowEnd(i); ++k) {
       const uint32_t j = list.Partner(k);
       touching[n] = k;
-      if (j >= end) {  // a cross pair, evaluated by SweepChunks::Ensure
+      if (j >= end && j < moving) {  // a cross pair, evaluated by SweepChunks::Ensure
         while (j >= chunks_.End(ready)) chunks_.Ensure(++ready, evaluate_cross);
         n += pair_active_[k];
         continue;
@@ -116,7 +117,7 @@ void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
     for (uint32_t m = 0; m < n; ++m) {
       const uint32_t k = touching[m];
       const uint32_t j = list.Partner(k);
-      if (j >= end) {
+      if (j >= end && j < moving) {
         fi += pair_result_[k].force_i;
         ti += pair_result_[k].torque_i;
         continue;
@@ -125,6 +126,7 @@ void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
       if (!EvaluatePair(p, table, model, dt, i, k, j, r)) continue;
       fi += r.force_i;
       ti += r.torque_i;
+      if (j >= moving) continue;  // a fixed sphere needs no force (and other chunks touch it)
       p.force_N[j] -= r.force_i;
       p.torque_N_m[j] += r.torque_j;
     }
@@ -136,14 +138,14 @@ void ContactForces::PlanChunks(const NeighbourList& list) {
   // One chunk per worker: the fewest cross pairs. Chunks of fewer than ~256 particles would
   // cost more in cross pairs than they gain.
   const size_t workers = tbb::this_task_arena::max_concurrency();
-  const size_t chunks = std::min(workers, list.RowsCount() / 256 + 1);
+  const size_t chunks = std::min<size_t>(workers, list.FirstFixed() / 256 + 1);
   if (!plan_stale_ && planned_list_ == &list && chunks_.Count() == chunks) {
     chunks_.Rebalance(list, kRebalancePasses, kRebalanceTolerance);
     return;
   }
   chunks_.Plan(list, chunks);
   uint32_t longest_row = 0;
-  for (size_t i = 0; i < list.RowsCount(); ++i)
+  for (size_t i = 0; i < list.FirstFixed(); ++i)
     longest_row = std::max(longest_row, list.RowEnd(i) - list.RowBegin(i));
   touching_scratch_.resize(chunks);
   for (std::vector<uint32_t>& s : touching_scratch_) s.resize(longest_row + 1);
@@ -190,7 +192,7 @@ void ContactForces::Rebuild(const Particles& p, const NeighbourList& old_list,
                             const std::vector<Wall>& walls, double skin_m) {
   RemapPairs(old_list, new_list, order);
   plan_stale_ = true;
-  walls_.Rebuild(p, order, walls, skin_m);
+  walls_.Rebuild(p, order, walls, skin_m, new_list.FirstFixed());
 }
 
 void ContactForces::RemapPairs(const NeighbourList& old_list, const NeighbourList& new_list,

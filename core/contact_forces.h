@@ -8,6 +8,9 @@
 // once, and every particle's force is summed in the order of a serial sweep (see SumChunk), so
 // floating-point results do not depend on the number of threads. A serial run pays no extra
 // cost: it is the plain Newton's-third-law sweep over the half list.
+//
+// Fixed spheres (slots from NeighbourList::FirstFixed() on) are not swept: their force, torque
+// and wall contacts are not computed, and a moving–fixed pair adds to the moving sphere only.
 #include <vector>
 
 #include "core/contact/contact_state.h"
@@ -32,8 +35,8 @@ class ContactForces {
                bool adhesive, const Vec3& gravity, double dt);
 
   // Called after every neighbour-list rebuild: carries pair histories over to the new list and
-  // lists, per particle, the walls within its radius + skin (moving walls always), keeping their
-  // histories. `order[new_slot] = old_slot` describes a particle permutation applied together
+  // lists, per moving particle, the walls within its radius + skin (moving walls always), keeping
+  // their histories. `order[new_slot] = old_slot` describes a particle permutation applied together
   // with the rebuild (identity if empty).
   void Rebuild(const Particles& p, const NeighbourList& old_list, const NeighbourList& new_list,
                const std::vector<uint32_t>& order, const std::vector<Wall>& walls,

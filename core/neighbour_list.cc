@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace demcal::core {
 
@@ -22,23 +23,28 @@ int NeighbourList::Grid::CellOf(const Vec3& x) const {
   return (iz * ny + iy) * nx + ix;
 }
 
-NeighbourList::Grid NeighbourList::MakeGrid(const Settings& s, const std::vector<Vec3>& x) const {
+NeighbourList::Grid NeighbourList::MakeGrid(const Settings& s, const std::vector<Vec3>& x,
+                                            size_t moving) const {
   // A cell is at least the largest possible cut-off, so partners lie in the 27 nearest cells.
   const double cutoff = 2.0 * s.max_radius_m + s.skin_m;
-  // The grid spans the particles' bounding box (within the domain), so a few particles in a
-  // large domain do not pay for millions of empty cells.
+  // The grid spans the moving particles' bounding box (within the domain), so a few particles
+  // in a large domain, or a stream over a wide frozen base, do not pay for millions of empty
+  // cells. Fixed spheres more than a cut-off outside that box can be no one's partner.
   Vec3 lo = s.domain_max_m, hi = s.domain_min_m;
-  for (const Vec3& p : x)
-    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
+  for (size_t i = 0; i < moving; ++i)
+    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], x[i][a]), hi[a] = std::max(hi[a], x[i][a]);
   Grid g;
+  const double margin = moving < x.size() ? cutoff : 0;
   for (int a = 0; a < 3; ++a) {
-    lo[a] = std::max(lo[a], s.domain_min_m[a]);
-    hi[a] = std::min(hi[a], s.domain_max_m[a]);
+    const bool periodic = s.periodic.IsPeriodic(a);
+    g.reach_lo[a] = periodic ? -std::numeric_limits<double>::infinity() : lo[a] - cutoff;
+    g.reach_hi[a] = periodic ? std::numeric_limits<double>::infinity() : hi[a] + cutoff;
+    lo[a] = std::max(lo[a] - margin, s.domain_min_m[a]);
+    hi[a] = std::min(hi[a] + margin, s.domain_max_m[a]);
     if (!(hi[a] - lo[a] >= cutoff)) hi[a] = lo[a] + cutoff;  // also catches NaN and empty sets
     // A periodic axis spans the whole period; wrapping needs at least 3 cells (else whole axis).
-    g.wrap[a] = s.periodic.IsPeriodic(a) &&
-                static_cast<int>(s.periodic.length_m[a] / cutoff) >= 3;
-    if (s.periodic.IsPeriodic(a)) lo[a] = s.domain_min_m[a], hi[a] = s.domain_max_m[a];
+    g.wrap[a] = periodic && static_cast<int>(s.periodic.length_m[a] / cutoff) >= 3;
+    if (periodic) lo[a] = s.domain_min_m[a], hi[a] = s.domain_max_m[a];
   }
   const Vec3 extent = hi - lo;
   g.origin = lo;
@@ -50,19 +56,25 @@ NeighbourList::Grid NeighbourList::MakeGrid(const Settings& s, const std::vector
   return g;
 }
 
-void NeighbourList::BinParticles(const Grid& grid, const std::vector<Vec3>& x) {
+void NeighbourList::BinParticles(const Grid& grid, const std::vector<Vec3>& x, size_t moving) {
   const size_t n = x.size();
   const size_t cells = static_cast<size_t>(grid.nx) * grid.ny * grid.nz;
   cell_of_particle_.resize(n);
+  auto within_reach = [&](const Vec3& p) {
+    return p.x >= grid.reach_lo.x && p.y >= grid.reach_lo.y && p.z >= grid.reach_lo.z &&
+           p.x <= grid.reach_hi.x && p.y <= grid.reach_hi.y && p.z <= grid.reach_hi.z;
+  };
   tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& range) {
-    for (size_t i = range.begin(); i != range.end(); ++i) cell_of_particle_[i] = grid.CellOf(x[i]);
+    for (size_t i = range.begin(); i != range.end(); ++i)
+      cell_of_particle_[i] = i < moving || within_reach(x[i]) ? grid.CellOf(x[i]) : -1;
   });
   cell_start_.assign(cells + 1, 0);
-  for (size_t i = 0; i < n; ++i) ++cell_start_[cell_of_particle_[i] + 1];
+  for (size_t i = 0; i < n; ++i) cell_start_[cell_of_particle_[i] + 1] += cell_of_particle_[i] >= 0;
   for (size_t c = 0; c < cells; ++c) cell_start_[c + 1] += cell_start_[c];
-  cell_particles_.resize(n);
+  cell_particles_.resize(cell_start_[cells]);
   std::vector<uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
-  for (size_t i = 0; i < n; ++i) cell_particles_[fill[cell_of_particle_[i]]++] = i;
+  for (size_t i = 0; i < n; ++i)
+    if (cell_of_particle_[i] >= 0) cell_particles_[fill[cell_of_particle_[i]]++] = i;
 }
 
 template <class Visit>
@@ -75,20 +87,25 @@ void NeighbourList::ForEachCandidate(const Grid& grid, size_t i, const std::vect
   const int c = cell_of_particle_[i];
   const int home[3] = {c % grid.nx, (c / grid.nx) % grid.ny, c / (grid.nx * grid.ny)};
   const int dims[3] = {grid.nx, grid.ny, grid.nz};
-  // Neighbour cell ranges per axis (wrapped on periodic axes; a periodic axis with fewer than
-  // three cells is searched whole, once).
-  int lo[3], hi[3];
+  // Neighbour cells per axis, wrapped once here (not per cell: integer division is slow) on
+  // periodic axes; a periodic axis with fewer than three cells is searched whole, once.
+  int cells[3][3], count[3];
   for (int a = 0; a < 3; ++a) {
-    const bool whole = box.IsPeriodic(a) && !grid.wrap[a];
-    lo[a] = whole ? 0 : home[a] - 1;
-    hi[a] = whole ? dims[a] - 1 : home[a] + 1;
-    if (!grid.wrap[a] && !whole) lo[a] = std::max(lo[a], 0), hi[a] = std::min(hi[a], dims[a] - 1);
+    count[a] = 0;
+    if (box.IsPeriodic(a) && !grid.wrap[a]) {
+      for (int k = 0; k < dims[a]; ++k) cells[a][count[a]++] = k;
+      continue;
+    }
+    for (int k = home[a] - 1; k <= home[a] + 1; ++k) {
+      if (grid.wrap[a]) cells[a][count[a]++] = (k + dims[a]) % dims[a];
+      else if (k >= 0 && k < dims[a]) cells[a][count[a]++] = k;
+    }
   }
-  auto wrap = [](int k, int n) { return ((k % n) + n) % n; };
-  for (int z = lo[2]; z <= hi[2]; ++z) {
-    for (int y = lo[1]; y <= hi[1]; ++y) {
-      for (int xx = lo[0]; xx <= hi[0]; ++xx) {
-        const int cell = (wrap(z, grid.nz) * grid.ny + wrap(y, grid.ny)) * grid.nx + wrap(xx, grid.nx);
+  for (int cz = 0; cz < count[2]; ++cz) {
+    for (int cy = 0; cy < count[1]; ++cy) {
+      const int row = (cells[2][cz] * grid.ny + cells[1][cy]) * grid.nx;
+      for (int cx = 0; cx < count[0]; ++cx) {
+        const int cell = row + cells[0][cx];
         for (uint32_t s = cell_start_[cell]; s < cell_start_[cell + 1]; ++s) {
           const uint32_t j = cell_particles_[s];
           if (j <= i || (own_body >= 0 && (*body)[j] == own_body)) continue;
@@ -104,11 +121,11 @@ bool NeighbourList::SearchOnce(const Grid& grid, const Settings& s, const std::v
                                const std::vector<double>& r, const std::vector<int>* body) {
   const size_t n = x.size();
   const uint32_t cap = row_capacity_;
-  if (static_cast<double>(n) * cap > 4e8) return false;  // scratch would exceed 1.6 GB
-  row_scratch_.resize(n * cap);
+  if (static_cast<double>(first_fixed_) * cap > 4e8) return false;  // scratch beyond 1.6 GB
+  row_scratch_.resize(static_cast<size_t>(first_fixed_) * cap);
   row_start_.assign(n + 1, 0);
   const bool fits = tbb::parallel_reduce(
-      tbb::blocked_range<size_t>(0, n), true,
+      tbb::blocked_range<size_t>(0, first_fixed_), true,
       [&](const auto& range, bool ok) {
         for (size_t i = range.begin(); ok && i != range.end(); ++i) {
           uint32_t* row = row_scratch_.data() + i * cap;
@@ -126,11 +143,11 @@ bool NeighbourList::SearchOnce(const Grid& grid, const Settings& s, const std::v
       [](bool a, bool b) { return a && b; });
   if (!fits) return false;
   uint32_t longest = 0;
-  for (size_t i = 0; i < n; ++i) longest = std::max(longest, row_start_[i + 1]);
+  for (size_t i = 0; i < first_fixed_; ++i) longest = std::max(longest, row_start_[i + 1]);
   if (longest + 8 < cap / 4) row_capacity_ = longest + longest / 2 + 8;  // shrink after a dense phase
   for (size_t i = 0; i < n; ++i) row_start_[i + 1] += row_start_[i];
   partner_.resize(row_start_[n]);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& range) {
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, first_fixed_), [&](const auto& range) {
     for (size_t i = range.begin(); i != range.end(); ++i)
       std::copy_n(row_scratch_.data() + i * cap, row_start_[i + 1] - row_start_[i],
                   partner_.begin() + row_start_[i]);
@@ -139,16 +156,18 @@ bool NeighbourList::SearchOnce(const Grid& grid, const Settings& s, const std::v
 }
 
 void NeighbourList::Build(const Settings& s, const std::vector<Vec3>& x,
-                          const std::vector<double>& r, const std::vector<int>* body) {
+                          const std::vector<double>& r, const std::vector<int>* body,
+                          size_t first_fixed) {
   const size_t n = x.size();
   periodic_ = s.periodic;
-  const Grid grid = MakeGrid(s, x);
-  BinParticles(grid, x);
+  first_fixed_ = static_cast<uint32_t>(std::min(first_fixed, n));  // fixed rows stay empty
+  const Grid grid = MakeGrid(s, x, first_fixed_);
+  BinParticles(grid, x, first_fixed_);
 
   if (!SearchOnce(grid, s, x, r, body)) {
     // Pass 1: count partners per row; pass 2: fill and sort each row.
     row_start_.assign(n + 1, 0);
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& range) {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, first_fixed_), [&](const auto& range) {
       for (size_t i = range.begin(); i != range.end(); ++i) {
         uint32_t count = 0;
         ForEachCandidate(grid, i, x, r, body, s.skin_m, [&](uint32_t) { ++count; });
@@ -160,7 +179,7 @@ void NeighbourList::Build(const Settings& s, const std::vector<Vec3>& x,
     row_capacity_ = longest + longest / 2 + 8;  // the next build searches once
     for (size_t i = 0; i < n; ++i) row_start_[i + 1] += row_start_[i];
     partner_.resize(row_start_[n]);
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& range) {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, first_fixed_), [&](const auto& range) {
       for (size_t i = range.begin(); i != range.end(); ++i) {
         uint32_t k = row_start_[i];
         ForEachCandidate(grid, i, x, r, body, s.skin_m, [&](uint32_t j) { partner_[k++] = j; });
@@ -186,7 +205,7 @@ bool NeighbourList::NeedsRebuild(const std::vector<Vec3>& x) const {
   if (periodic_.Any()) return NeedsRebuild(x, periodic_);
   if (x.size() != reference_position_.size()) return true;
   return tbb::parallel_reduce(
-      tbb::blocked_range<size_t>(0, x.size()), false,
+      tbb::blocked_range<size_t>(0, first_fixed_), false,  // fixed spheres never move
       [&](const auto& range, bool found) {
         for (size_t i = range.begin(); i != range.end() && !found; ++i)
           found = Norm2(x[i] - reference_position_[i]) > half_skin2_;
@@ -198,7 +217,7 @@ bool NeighbourList::NeedsRebuild(const std::vector<Vec3>& x) const {
 bool NeighbourList::NeedsRebuild(const std::vector<Vec3>& x, const PeriodicBox& box) const {
   if (x.size() != reference_position_.size()) return true;
   return tbb::parallel_reduce(
-      tbb::blocked_range<size_t>(0, x.size()), false,
+      tbb::blocked_range<size_t>(0, first_fixed_), false,
       [&](const auto& range, bool found) {
         for (size_t i = range.begin(); i != range.end() && !found; ++i)
           found = Norm2(box.MinimumImage(x[i] - reference_position_[i])) > half_skin2_;
@@ -217,7 +236,7 @@ int64_t NeighbourList::Find(uint32_t i, uint32_t j) const {
 
 std::vector<uint32_t> NeighbourList::CellOrder(const Settings& s,
                                                const std::vector<Vec3>& x) const {
-  const Grid grid = MakeGrid(s, x);
+  const Grid grid = MakeGrid(s, x, x.size());
   std::vector<std::pair<int, uint32_t>> keyed(x.size());
   for (uint32_t i = 0; i < x.size(); ++i) keyed[i] = {grid.CellOf(x[i]), i};
   std::sort(keyed.begin(), keyed.end());

@@ -5,8 +5,13 @@
 // entries that name it) so forces can be gathered per particle in a fixed order: the result is
 // then bit-identical for any thread count.
 //
-// The list stays valid until some particle has moved more than skin/2 since the build
+// Fixed spheres (glued, never moving) occupy the slots from `first_fixed` on: pairs among them
+// are left out (LIGGGHTS: neigh_modify exclude type), so their rows are empty and only moving
+// particles are searched; a moving–fixed pair is listed in the moving particle's row.
+//
+// The list stays valid until some moving particle has moved more than skin/2 since the build
 // (NeedsRebuild). Thread-safety: Build() uses TBB internally; const methods are thread-safe.
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -25,14 +30,17 @@ class NeighbourList {
   };
 
   // `body` (optional): spheres with the same non-negative body index (members of one clump)
-  // are never paired.
+  // are never paired. Slots from `first_fixed` on are fixed spheres (clamped to the count).
   void Build(const Settings& settings, const std::vector<Vec3>& positions,
-             const std::vector<double>& radii, const std::vector<int>* body = nullptr);
+             const std::vector<double>& radii, const std::vector<int>* body = nullptr,
+             size_t first_fixed = SIZE_MAX);
   bool NeedsRebuild(const std::vector<Vec3>& positions) const;
   // NeedsRebuild for periodic boxes: displacements by minimum image (a wrap is not a move).
   bool NeedsRebuild(const std::vector<Vec3>& positions, const PeriodicBox& box) const;
 
   size_t RowsCount() const { return row_start_.size() - 1; }
+  // First fixed slot of the last build (RowsCount() if none): rows from here on are empty.
+  uint32_t FirstFixed() const { return first_fixed_; }
   size_t PairCount() const { return partner_.size(); }
   uint32_t RowBegin(size_t i) const { return row_start_[i]; }
   uint32_t RowEnd(size_t i) const { return row_start_[i + 1]; }
@@ -52,7 +60,7 @@ class NeighbourList {
   template <class A>
   void Serialize(A& a) {
     a.Vector(row_start_), a.Vector(partner_), a.Vector(reverse_start_), a.Vector(reverse_entry_);
-    a.Vector(reference_position_), a.Value(half_skin2_), a.Value(builds_);
+    a.Vector(reference_position_), a.Value(half_skin2_), a.Value(builds_), a.Value(first_fixed_);
   }
 
  private:
@@ -61,10 +69,13 @@ class NeighbourList {
     Vec3 inv_cell;  // per axis: cells are at least the cut-off and tile the spanned box
     int nx, ny, nz;
     bool wrap[3];   // periodic axis: neighbour cells wrap around
+    Vec3 reach_lo, reach_hi;  // moving particles' box grown by a cut-off: fixed partners inside
     int CellOf(const Vec3& x) const;
   };
-  Grid MakeGrid(const Settings& s, const std::vector<Vec3>& positions) const;
-  void BinParticles(const Grid& grid, const std::vector<Vec3>& positions);
+  // Over the first `moving` slots (the rest are fixed spheres).
+  Grid MakeGrid(const Settings& s, const std::vector<Vec3>& positions, size_t moving) const;
+  // Fixed spheres out of reach of every moving particle are not binned (cell −1).
+  void BinParticles(const Grid& grid, const std::vector<Vec3>& positions, size_t moving);
   template <class Visit>
   void ForEachCandidate(const Grid& grid, size_t i, const std::vector<Vec3>& x,
                         const std::vector<double>& r, const std::vector<int>* body, double skin,
@@ -78,6 +89,7 @@ class NeighbourList {
   PeriodicBox periodic_;
   double half_skin2_ = 0;
   uint64_t builds_ = 0;
+  uint32_t first_fixed_ = 0;
   // cell binning scratch (reused between builds)
   std::vector<int> cell_of_particle_;
   std::vector<uint32_t> cell_start_;

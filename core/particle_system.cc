@@ -3,6 +3,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -61,11 +62,13 @@ double ParticleSystem::GravitationalPotential(const Vec3& g) const {
   return ReleasableGravitationalEnergy(g, {});  // −Σ m g·x = Σ m g·(0 − x)
 }
 
-double ParticleSystem::ReleasableGravitationalEnergy(const Vec3& g, const Vec3& lowest) const {
+double ParticleSystem::ReleasableGravitationalEnergy(const Vec3& g, const Vec3& lowest,
+                                                     size_t first_sphere,
+                                                     size_t first_clump) const {
   double e = 0;
-  for (size_t i = 0; i < spheres.Size(); ++i)
+  for (size_t i = first_sphere; i < spheres.Size(); ++i)
     if (spheres.body[i] < 0) e += spheres.mass_kg[i] * Dot(g, lowest - spheres.position_m[i]);
-  for (size_t c = 0; c < clumps.Size(); ++c)
+  for (size_t c = first_clump; c < clumps.Size(); ++c)
     e += clumps.mass_kg[c] * Dot(g, lowest - clumps.position_m[c]);
   return e;
 }
@@ -74,10 +77,11 @@ size_t ParticleSystem::BodyCount() const {
   return spheres.Size() - clumps.member_slot.size() + clumps.Size();
 }
 
-void ParticleSystem::KickDrift(double dt) {
+void ParticleSystem::KickDrift(double dt, size_t moving_spheres) {
   const double half = 0.5 * dt;
   Particles& p = spheres;
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, p.Size(), 1024), [&](const auto& range) {
+  const size_t n = std::min(moving_spheres, p.Size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1024), [&](const auto& range) {
     for (size_t i = range.begin(); i != range.end(); ++i) {
       if (p.body[i] >= 0) continue;  // clump members move with their clump
       p.velocity_m_s[i] += p.force_N[i] * (half * p.inv_mass[i]);
@@ -97,10 +101,11 @@ void ParticleSystem::KickDrift(double dt) {
   });
 }
 
-void ParticleSystem::ReduceAndKick(const Vec3& gravity, double dt) {
+void ParticleSystem::ReduceAndKick(const Vec3& gravity, double dt, size_t moving_spheres) {
   const double half = 0.5 * dt;
   Particles& p = spheres;
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, p.Size(), 1024), [&](const auto& range) {
+  const size_t n = std::min(moving_spheres, p.Size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1024), [&](const auto& range) {
     for (size_t i = range.begin(); i != range.end(); ++i) {
       if (p.body[i] >= 0) continue;
       p.velocity_m_s[i] += p.force_N[i] * (half * p.inv_mass[i]);

@@ -46,15 +46,18 @@ struct ParticleSystem {
   double KineticEnergy() const;
   // −Σ m g·x over bodies (clumps at their centre of mass), J.
   double GravitationalPotential(const Vec3& gravity) const;
-  // Σ m g·(x_low − x): energy released if every body dropped to the point x_low, J.
-  double ReleasableGravitationalEnergy(const Vec3& gravity, const Vec3& lowest) const;
+  // Σ m g·(x_low − x): energy released if every body dropped to the point x_low, J; over the
+  // bodies from sphere slot `first_sphere` and clump `first_clump` on (newcomers).
+  double ReleasableGravitationalEnergy(const Vec3& gravity, const Vec3& lowest,
+                                       size_t first_sphere = 0, size_t first_clump = 0) const;
   // Bodies (free spheres + clumps) from sphere slot `first_sphere` and clump `first_clump` on.
   double KineticEnergySince(size_t first_sphere, size_t first_clump) const;
 
   // Velocity Verlet: first half kick and drift (members follow their clumps) ...
-  void KickDrift(double dt);
+  // Only sphere slots [0, moving_spheres) are visited: the engine keeps fixed spheres after them.
+  void KickDrift(double dt, size_t moving_spheres);
   // ... and, after forces, the second half kick (clump forces reduced from their members).
-  void ReduceAndKick(const Vec3& gravity, double dt);
+  void ReduceAndKick(const Vec3& gravity, double dt, size_t moving_spheres);
   // Clump forces and torques from their members' (needed once before the first step).
   void ReduceClumpForces(const Vec3& gravity);
   // Wraps free spheres and clump centres back into the periodic box (members follow).

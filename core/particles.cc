@@ -66,6 +66,8 @@ void Particles::Fix(size_t i) {
   angular_velocity_rad_s[i] = {};
   inv_mass[i] = 0;
   inv_inertia[i] = 0;
+  force_N[i] = {};
+  torque_N_m[i] = {};
 }
 
 }  // namespace demcal::core

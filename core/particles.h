@@ -27,6 +27,8 @@ struct Particles {
   std::vector<int64_t> id;
 
   size_t Size() const { return position_m.size(); }
+  // A glued sphere (Fix): no inverse mass and not a clump member (members have none either).
+  bool IsFixed(size_t i) const { return inv_mass[i] == 0 && body[i] < 0; }
 
   template <class A>
   void Serialize(A& a) {
@@ -42,7 +44,8 @@ struct Particles {
 
   // Glues slot i in place: zero velocity, infinite mass and inertia (inv_mass = inv_inertia = 0),
   // so contacts push on it but it never moves (a rough base layer of fixed spheres). Contact
-  // damping still uses its real mass in m*, so restitution against it is approximate.
+  // damping still uses its real mass in m*, so restitution against it is approximate. Its force
+  // and torque are zeroed: the engine no longer computes them (Simulation::Options).
   void Fix(size_t i);
   // Reorders every per-particle array so that new slot k holds old slot order[k].
   void Permute(const std::vector<uint32_t>& order);

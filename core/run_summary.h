@@ -18,6 +18,21 @@ enum class Termination {
 // Stable lower-case names used in summary.json: ok, invalid_scene, non_finite, ...
 const char* TerminationName(Termination t);
 
+// Wall time of a run by phase of the time step, s (steady clock, a few ns per reading).
+struct PhaseTimes {
+  double integrate_s = 0;      // both half kicks and the drift (clumps and periodic wrap too)
+  double insert_s = 0;         // factories
+  double rebuild_check_s = 0;  // has any particle moved half the skin?
+  double rebuild_s = 0;        // re-sort, neighbour search, history and wall-candidate transfer
+  double forces_s = 0;         // contact force sweep (pairs and walls), wall work
+  double checks_s = 0;         // NaN / domain / energy checks and the observer
+
+  PhaseTimes& operator-=(const PhaseTimes& o);
+  double Total() const;
+  // "integrate 0.31 s (12 %), ... " in the order above.
+  std::string Report() const;
+};
+
 struct RunSummary {
   Termination termination = Termination::kInvalidScene;
   std::string message = "Run was not called";
@@ -28,6 +43,7 @@ struct RunSummary {
   double timestep_s = 0;
   double final_kinetic_energy_J = 0;
   uint64_t neighbour_rebuilds = 0;  // during this Run() call
+  PhaseTimes phases;                // during this Run() call
 
   bool ok() const { return termination == Termination::kOk; }
   std::string BriefReport() const;

@@ -4,7 +4,9 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 
+#include <algorithm>
 #include <chrono>
+#include <numeric>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -145,18 +147,17 @@ void Simulation::CreateFactories() {
 
 bool Simulation::InsertFromFactories() {
   const size_t first_sphere = system_.spheres.Size(), first_clump = system_.clumps.Size();
-  const double potential_before = system_.GravitationalPotential(scene_.gravity_m_s2);
-  const double releasable_before =
-      system_.ReleasableGravitationalEnergy(scene_.gravity_m_s2, lowest_point_);
   for (ParticleFactory& factory : factories_) factory.Update(time_s_, system_);
   if (system_.spheres.Size() == first_sphere) return false;
-  // The newcomers bring kinetic and potential energy (and adhesion) into the budget.
+  // The newcomers bring kinetic and potential energy (and adhesion) into the budget; summed
+  // over them only (a sum over the whole bed before and after cost a pass per step).
+  const Vec3 g = scene_.gravity_m_s2;
   const double kinetic = system_.KineticEnergySince(first_sphere, first_clump);
-  energy_budget_J_ += kinetic + system_.GravitationalPotential(scene_.gravity_m_s2) - potential_before;
+  energy_budget_J_ +=
+      kinetic + system_.ReleasableGravitationalEnergy(g, {}, first_sphere, first_clump);
   energy_scale_J_ += kinetic +
                      (system_.spheres.Size() - first_sphere) * AdhesiveEnergyBoundPerParticle(scene_, table_) +
-                     system_.ReleasableGravitationalEnergy(scene_.gravity_m_s2, lowest_point_) -
-                     releasable_before;
+                     system_.ReleasableGravitationalEnergy(g, lowest_point_, first_sphere, first_clump);
   return true;
 }
 
@@ -172,12 +173,33 @@ void Simulation::RebuildNeighbours(bool allow_reorder) {
   const bool reorder = allow_reorder && options_.reorder_every_rebuilds > 0 &&
                        rebuilds_since_reorder_ % options_.reorder_every_rebuilds == 0;
   Particles& p = system_.spheres;
-  if (reorder) {
-    order = spare_list_.CellOrder(list_settings_, p.position_m);
+  const size_t n = p.Size();
+  size_t moving = n;
+  bool fixed_last = true;  // every fixed sphere after every moving one
+  if (options_.exclude_fixed_pairs) {
+    moving = 0;
+    for (size_t i = 0; i < n; ++i) {
+      const bool fixed = p.IsFixed(i);
+      fixed_last = fixed_last && (fixed || moving == i);
+      moving += !fixed;
+    }
+  }
+  if (reorder || !fixed_last) {
+    if (reorder) {
+      order = spare_list_.CellOrder(list_settings_, p.position_m);
+    } else {
+      order.resize(n);
+      std::iota(order.begin(), order.end(), 0u);
+    }
+    // Moving spheres first (each part in cell order): the integration and force loops then
+    // stream over moving particles only; newcomers from factories join the moving part.
+    if (options_.exclude_fixed_pairs)
+      std::stable_partition(order.begin(), order.end(), [&](uint32_t s) { return !p.IsFixed(s); });
     system_.Permute(order);
   }
   ++rebuilds_since_reorder_;
-  list_.Build(list_settings_, p.position_m, p.radius_m, system_.clumps.Size() ? &p.body : nullptr);
+  list_.Build(list_settings_, p.position_m, p.radius_m, system_.clumps.Size() ? &p.body : nullptr,
+              moving);
   forces_.Rebuild(p, spare_list_, list_, order, walls_, list_settings_.skin_m);
 }
 
@@ -208,15 +230,30 @@ void Simulation::ComputeForces(double time_s) {
 }
 
 void Simulation::Step() {
-  system_.KickDrift(dt_);
+  auto last = std::chrono::steady_clock::now();
+  auto lap = [&](double& phase_s) {
+    const auto now = std::chrono::steady_clock::now();
+    phase_s += std::chrono::duration<double>(now - last).count();
+    last = now;
+  };
+  system_.KickDrift(dt_, list_.FirstFixed());
   if (list_settings_.periodic.Any()) system_.WrapPeriodic(list_settings_.periodic);
+  lap(phases_.integrate_s);
   const double t = time_s_ + dt_;  // the time of the drifted positions
   PlaceWalls(t);
   const bool inserted = !factories_.empty() && InsertFromFactories();
-  if (inserted || list_.NeedsRebuild(system_.spheres.position_m)) RebuildNeighbours(true);
+  lap(phases_.insert_s);
+  const bool rebuild = inserted || list_.NeedsRebuild(system_.spheres.position_m);
+  lap(phases_.rebuild_check_s);
+  if (rebuild) {
+    RebuildNeighbours(true);
+    lap(phases_.rebuild_s);
+  }
   ComputeForces(t);
   AddWallWork(t);
-  system_.ReduceAndKick(scene_.gravity_m_s2, dt_);
+  lap(phases_.forces_s);
+  system_.ReduceAndKick(scene_.gravity_m_s2, dt_, list_.FirstFixed());
+  lap(phases_.integrate_s);
   time_s_ += dt_;
   ++steps_;
 }
@@ -235,11 +272,17 @@ RunSummary Simulation::Run(double duration_s, const Observer& observer) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
   const int64_t n_steps = std::max<int64_t>(0, std::llround(duration_s / dt_));
+  const PhaseTimes phases_before = phases_;
   s.termination = Termination::kOk;
   s.message = "completed";
   arena_->execute([&] {
     for (int64_t k = 0; k < n_steps; ++k) {
       Step();
+      const auto checks_start = std::chrono::steady_clock::now();
+      const auto add_check_time = [&] {
+        phases_.checks_s += std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                                          checks_start).count();
+      };
       const bool last = k + 1 == n_steps;
       if ((k + 1) % options_.check_every_steps == 0 || last) {
         s.termination = Check(&s.message);
@@ -256,6 +299,7 @@ RunSummary Simulation::Run(double duration_s, const Observer& observer) {
         s.message = "stopped by observer";
         break;
       }
+      add_check_time();
     }
   });
   s.steps = steps_;
@@ -265,6 +309,8 @@ RunSummary Simulation::Run(double duration_s, const Observer& observer) {
   s.timestep_s = dt_;
   s.final_kinetic_energy_J = system_.KineticEnergy();
   s.neighbour_rebuilds = list_.Builds() + spare_list_.Builds() - builds_before;
+  s.phases = phases_;
+  s.phases -= phases_before;
   return s;
 }
 

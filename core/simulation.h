@@ -34,6 +34,10 @@ class Simulation {
     int threads = 0;                  // 0: all available cores
     int check_every_steps = 100;      // cadence of the NaN / energy / domain checks
     int reorder_every_rebuilds = 20;  // spatial re-sort of particles for cache locality (0: never)
+    // Fixed spheres are kept in the slots after the moving ones, out of the pair search among
+    // themselves, of the integration and of the force sweep (moving–fixed contacts unchanged).
+    // false: they are swept like moving spheres with zero inverse mass (for comparisons).
+    bool exclude_fixed_pairs = true;
   };
   // Called during Run() after every step whose step count (steps(), counted from the start of
   // the simulation, so a restarted run keeps the cadence) is a multiple of `every_steps`;
@@ -78,6 +82,8 @@ class Simulation {
   // pass (the last step, or Initialize). Summed in particle order: identical for any thread count.
   std::vector<WallLoad> WallLoads() const { return forces_.WallLoads(system_.spheres, walls_); }
   const NeighbourList& neighbours() const { return list_; }
+  // Wall time per phase of the step since Initialize (RunSummary::phases has one Run's).
+  const PhaseTimes& phases() const { return phases_; }
   std::vector<FactoryReport> FactoryReports() const;
 
  private:
@@ -114,6 +120,7 @@ class Simulation {
   double time_s_ = 0;
   int64_t steps_ = 0;
   uint64_t rebuilds_since_reorder_ = 0;
+  PhaseTimes phases_;
   double energy_budget_J_ = 0;   // initial KE + PE (+ inserted energy)
   double energy_scale_J_ = 0;    // energy that gravity and the initial state can release
   Vec3 lowest_point_;            // of the domain along gravity

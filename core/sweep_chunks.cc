@@ -6,7 +6,7 @@
 namespace demcal::core {
 
 void SweepChunks::Plan(const NeighbourList& list, size_t count) {
-  const size_t rows = list.RowsCount();
+  const size_t rows = list.FirstFixed();
   count = std::clamp<size_t>(count, 1, std::max<size_t>(rows, 1));
   const double per_chunk = WorkBefore(list, rows) / count;
   std::vector<double> targets(count - 1);
@@ -42,7 +42,7 @@ bool SweepChunks::Rebalance(const NeighbourList& list, int min_passes, double to
 }
 
 void SweepChunks::SplitRows(const NeighbourList& list, const std::vector<double>& targets) {
-  const size_t n = list.RowsCount();
+  const size_t n = list.FirstFixed();
   boundary_.assign(targets.size() + 2, static_cast<uint32_t>(n));
   boundary_[0] = 0;
   // WorkBefore grows with the row: binary-search each boundary.
@@ -67,6 +67,7 @@ void SweepChunks::CollectCrossPairs(const NeighbourList& list) {
   incoming_.clear();
   // Rows are swept in order, so each chunk's set comes out in ascending entry order; counted
   // first so the sets can be laid out contiguously.
+  const uint32_t first_fixed = list.FirstFixed();
   auto for_each_cross = [&](auto&& visit) {
     for (size_t c = 0; c + 1 < count; ++c) {
       for (uint32_t i = Begin(c); i < End(c); ++i) {
@@ -76,6 +77,7 @@ void SweepChunks::CollectCrossPairs(const NeighbourList& list) {
         for (uint32_t k = list.RowBegin(i); k < row_end; ++k) {
           const uint32_t j = list.Partner(k);
           if (j < End(c)) continue;
+          if (j >= first_fixed) break;  // fixed partners (ascending, last): not cross pairs
           while (j >= End(d)) ++d;  // partners ascend, so d only moves forward
           visit(d, CrossPair{i, k});
         }

@@ -10,6 +10,9 @@
 // evaluation of cross pairs from the sums, and no chunk waits unless another is evaluating
 // exactly the pairs it needs.
 //
+// Only the moving rows [0, list.FirstFixed()) are split: fixed spheres need no force, and a pair
+// with a fixed partner is evaluated by its row's chunk alone (never a cross pair).
+//
 // Balance: Plan() gives every chunk the same modelled work (rows + listed pairs). The sweep also
 // reports how long each chunk took (AddTime); Rebalance() then moves the boundaries so that the
 // measured times even out, which catches what the model misses (contacts vs mere neighbours,
@@ -39,8 +42,8 @@ class SweepChunks {
     uint32_t entry;  // neighbour-list entry of (i, j)
   };
 
-  // Splits `list`'s rows into `count` chunks of about equal work (rows + listed pairs) and
-  // collects the cross pairs. `count` is clamped to [1, rows].
+  // Splits `list`'s moving rows into `count` chunks of about equal work (rows + listed pairs)
+  // and collects the cross pairs. `count` is clamped to [1, rows].
   void Plan(const NeighbourList& list, size_t count);
 
   size_t Count() const { return boundary_.size() - 1; }

@@ -1,5 +1,6 @@
 #include "core/wall_contacts.h"
 
+#include <algorithm>
 #include <numeric>
 
 namespace demcal::core {
@@ -27,8 +28,9 @@ void WallContacts::SetVelocities(const std::vector<Wall>& walls, double time_s) 
 }
 
 void WallContacts::Rebuild(const Particles& p, const std::vector<uint32_t>& order,
-                           const std::vector<Wall>& walls, double skin_m) {
+                           const std::vector<Wall>& walls, double skin_m, size_t first_fixed) {
   const size_t n = p.Size();
+  const size_t moving = std::min(n, first_fixed);
   auto old_slot = [&](size_t s) { return order.empty() ? s : order[s]; };
   const size_t old_n = start_.size() - 1;  // particles appended since keep no history
   std::vector<uint32_t> start(n + 1, 0), index, mesh_slots;
@@ -37,7 +39,7 @@ void WallContacts::Rebuild(const Particles& p, const std::vector<uint32_t>& orde
   std::vector<MeshHistory> mesh_history;
   std::vector<int32_t> triangles;
   for (size_t i = 0; i < n; ++i) {
-    for (uint32_t w = 0; w < walls.size(); ++w) {
+    for (uint32_t w = 0; i < moving && w < walls.size(); ++w) {
       const Wall& wall = walls[w];
       if (!wall.Moves() && !WithinSkin(wall, p.position_m[i], p.radius_m[i], skin_m, triangles))
         continue;

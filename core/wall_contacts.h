@@ -44,8 +44,9 @@ class WallContacts {
 
   // Lists per particle the walls within its radius + skin (moving walls always), keeping the
   // histories of candidates that persist. `order[new_slot] = old_slot` (identity if empty).
+  // Slots from `first_fixed` on (fixed spheres) get no candidates: they are not swept.
   void Rebuild(const Particles& p, const std::vector<uint32_t>& order,
-               const std::vector<Wall>& walls, double skin_m);
+               const std::vector<Wall>& walls, double skin_m, size_t first_fixed = SIZE_MAX);
 
   // Force and torque on each wall in the last force pass (about each wall's load point).
   std::vector<WallLoad> Loads(const Particles& p, const std::vector<Wall>& walls) const;

@@ -20,9 +20,11 @@ using PairSet = std::set<std::pair<uint32_t, uint32_t>>;
 
 // The definition of the list, evaluated over all pairs with the same floating-point
 // expression as the contract in neighbour_list.h.
-PairSet BruteForce(const std::vector<Vec3>& x, const std::vector<double>& r, double skin) {
+// Slots from `first_fixed` on are fixed spheres: pairs among them are not listed.
+PairSet BruteForce(const std::vector<Vec3>& x, const std::vector<double>& r, double skin,
+                   size_t first_fixed = SIZE_MAX) {
   PairSet pairs;
-  for (uint32_t i = 0; i < x.size(); ++i) {
+  for (uint32_t i = 0; i < x.size() && i < first_fixed; ++i) {  // row of a fixed i: all fixed
     for (uint32_t j = i + 1; j < x.size(); ++j) {
       const double reach = r[i] + r[j] + skin;
       if (Norm2(x[i] - x[j]) < reach * reach) pairs.insert({i, j});
@@ -66,10 +68,11 @@ void CheckStructure(const NeighbourList& list, size_t n) {
 }
 
 void CheckAgainstBruteForce(const NeighbourList::Settings& settings, const std::vector<Vec3>& x,
-                            const std::vector<double>& r) {
+                            const std::vector<double>& r, size_t first_fixed = SIZE_MAX) {
   NeighbourList list;
-  list.Build(settings, x, r);
-  const PairSet expected = BruteForce(x, r, settings.skin_m);
+  list.Build(settings, x, r, nullptr, first_fixed);
+  CHECK(list.FirstFixed() == std::min(first_fixed, x.size()));
+  const PairSet expected = BruteForce(x, r, settings.skin_m, first_fixed);
   const PairSet listed = Listed(list);
   PairSet missing, extra;
   std::set_difference(expected.begin(), expected.end(), listed.begin(), listed.end(),
@@ -179,4 +182,42 @@ TEST_CASE("cell list handles a domain smaller than one cut-off", "[unit]") {
   std::vector<double> r(300, 0.004);
   for (Vec3& p : x) p = {u(rng), u(rng), u(rng)};
   CheckAgainstBruteForce(tiny, x, r);
+}
+
+TEST_CASE("cell list leaves out fixed-fixed pairs and only those", "[unit]") {
+  // Fixed spheres in the slots from first_fixed on: the oracle drops pairs with both there.
+  const NeighbourList::Settings settings{{0, 0, 0}, {0.05, 0.05, 0.05}, 0.001, 0.003};
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> u(0.0, 0.05), radius(0.001, 0.003);
+  std::vector<Vec3> x(3000);
+  std::vector<double> r(3000);
+  for (size_t i = 0; i < x.size(); ++i) x[i] = {u(rng), u(rng), u(rng)}, r[i] = radius(rng);
+  for (const size_t first_fixed : {size_t{0}, size_t{1}, size_t{1000}, size_t{2999}, size_t{3000}}) {
+    INFO("first fixed slot " << first_fixed);
+    CheckAgainstBruteForce(settings, x, r, first_fixed);
+  }
+  // A small moving cluster over a wide fixed bed (a stream on a base): the grid spans only the
+  // cluster and a cut-off around it; fixed spheres beyond are not binned, those within are.
+  std::uniform_real_distribution<double> cluster(0.02, 0.026), wide(-0.01, 0.06);
+  for (size_t i = 0; i < x.size(); ++i)
+    x[i] = i < 40 ? Vec3{cluster(rng), cluster(rng), cluster(rng)} : Vec3{wide(rng), wide(rng), wide(rng)};
+  const double cutoff = 2 * settings.max_radius_m + settings.skin_m;
+  for (int k = 0; k < 40; ++k)  // fixed spheres just inside and outside the cluster's reach
+    x[40 + k] = x[k] + Vec3{(k % 2 ? 0.999 : 1.001) * cutoff, 0, 0}, r[40 + k] = 0.003, r[k] = 0.003;
+  CheckAgainstBruteForce(settings, x, r, 40);
+}
+
+TEST_CASE("a rebuild is due when a moving sphere moves half the skin, never for a fixed one",
+          "[unit]") {
+  const NeighbourList::Settings settings{{0, 0, 0}, {0.05, 0.05, 0.05}, 0.002, 0.003};
+  std::vector<Vec3> x = {{0.01, 0.01, 0.01}, {0.02, 0.01, 0.01}, {0.03, 0.01, 0.01}};
+  const std::vector<double> r(3, 0.002);
+  NeighbourList list;
+  list.Build(settings, x, r, nullptr, 2);  // slot 2 is fixed
+  x[2].x += 0.01;  // a fixed sphere is never displaced by the engine: not checked
+  CHECK_FALSE(list.NeedsRebuild(x));
+  x[1].x += 0.00099;
+  CHECK_FALSE(list.NeedsRebuild(x));
+  x[1].x += 0.00002;
+  CHECK(list.NeedsRebuild(x));
 }
