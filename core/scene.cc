@@ -145,7 +145,8 @@ void CheckWall(const Scene& s, size_t i, Checker& c) {
   if (const auto* plane = std::get_if<PlaneSurface>(&w.shape)) {
     // docs/scene_format.md: no wall across a periodic axis (particles would wrap through it).
     for (int a = 0; a < 3; ++a)
-      if (s.periodic[a] && std::abs(plane->normal[a]) > 1e-12)
+      // (A periodic axis along gravity is reported below, as the more basic mistake.)
+      if (s.periodic[a] && s.gravity_m_s2[a] == 0 && std::abs(plane->normal[a]) > 1e-12)
         c.Fail("field '" + f + "' (plane '" + w.name + "') crosses the periodic axis " +
                axes[a] + ": walls across a periodic axis are not allowed; drop the wall (a " +
                "box: its " + axes[a] + " faces) or the periodic." + axes[a]);

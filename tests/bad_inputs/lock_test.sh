@@ -6,8 +6,7 @@ demcal=$1
 files=$2
 work=$(mktemp -d "${TMPDIR:-/tmp}/demcal_lock.XXXXXX")
 trap 'kill "$first" 2>/dev/null; rm -rf "$work"' EXIT
-# A long-enough run: the base scene for 5 s of simulated time.
-sed 's/"duration_s": 0.01/"duration_s": 5/' "$files/cli_restart_missing.json" >"$work/long.json"
+cp "$files/long_run.json" "$work/long.json"  # a valid scene that runs for a while
 "$demcal" simulate "$work/long.json" --out "$work/run" --quiet &
 first=$!
 for _ in $(seq 100); do
