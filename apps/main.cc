@@ -32,6 +32,22 @@ int main(int argc, char** argv) {
   app.footer("Run 'demcal <command> --help' for a command's options. Docs: docs/cli.md");
   std::vector<Command> commands;
   for (CommandFactory add : kCommands) commands.push_back(add(app));
+  // CLI11 takes an unknown first word for a stray argument and answers "A subcommand is
+  // required"; name the word and the commands instead.
+  if (argc > 1 && argv[1][0] != '-') {
+    const std::string word = argv[1];
+    bool known = false;
+    std::string names;
+    for (const Command& c : commands) {
+      known = known || c.app->get_name() == word;
+      names += (names.empty() ? "" : ", ") + c.app->get_name();
+    }
+    if (!known) {
+      std::cerr << "error: unknown command '" << word << "'; commands: " << names
+                << " (demcal --help)\n";
+      return kExitInvalidInput;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -41,6 +57,11 @@ int main(int argc, char** argv) {
   try {
     for (const Command& c : commands)
       if (c.app->parsed()) return c.run();
+  } catch (const std::bad_alloc&) {
+    // Input validation bounds what a scene may ask for; running out anyway is the machine's
+    // limit, not a bug.
+    std::cerr << "error: out of memory; reduce the particle count or the outputs\n";
+    return kExitRunFailed;
   } catch (const std::exception& e) {
     std::cerr << "internal error: " << e.what() << "\n";
     return kExitInternalError;

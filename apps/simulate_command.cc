@@ -3,6 +3,7 @@
 #include <iostream>
 #include <memory>
 
+#include "apps/cli_checks.h"
 #include "workflow/simulation/simulate.h"
 
 namespace demcal::apps {
@@ -23,14 +24,14 @@ Command AddSimulateCommand(CLI::App& parent) {
       ->capture_default_str();
   sub->add_option("--checkpoint-every-s", options->checkpoint_every_s,
                   "write DIR/checkpoint.bin every S simulated seconds and at the end (0: never)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(Seconds(/*allow_zero=*/true, 1e6))
       ->capture_default_str();
   sub->add_option("--restart", options->restart_path,
                   "continue from a checkpoint.bin written for this scene, up to its duration");
   sub->add_flag("--quiet,-q", options->quiet, "print only errors (no progress, no report)");
   sub->add_option("--progress-interval-s", options->progress_interval_s,
                   "wall time between progress lines on stderr")
-      ->check(CLI::PositiveNumber)
+      ->check(Seconds(/*allow_zero=*/false, 1e6))
       ->capture_default_str();
   sub->footer(
       "Exit codes: 0 ok, 2 invalid input (nothing ran; also a checkpoint that does not fit the "

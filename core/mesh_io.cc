@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <cstdio>
 #include <limits>
 
 #include "core/stl_ascii_parser.h"
@@ -16,6 +17,15 @@ namespace demcal::core {
 namespace {
 
 constexpr size_t kHeaderBytes = 80;
+// 1000 km: far beyond any DEM geometry, and small enough that products of coordinates (areas,
+// cross products, squared distances) stay finite.
+constexpr double kMaxCoordinateM = 1e6;
+
+std::string FormatG(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
 constexpr size_t kBinaryPreamble = 84;  // header + uint32 triangle count
 constexpr size_t kBinaryFacetBytes = 50;
 
@@ -125,8 +135,16 @@ StlReadResult Finish(StlReadResult r, const StlReadOptions& options, const std::
     if (!IsFinite(t.v[0]) || !IsFinite(t.v[1]) || !IsFinite(t.v[2])) {
       return Failure(MeshIoStatus::kNonFinite, source,
                      "triangle " + std::to_string(i) + " overflows after scaling by " +
-                         std::to_string(options.scale));
+                         FormatG(options.scale));
     }
+    for (const Vec3& v : t.v)
+      if (std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}) > kMaxCoordinateM)
+        return Failure(MeshIoStatus::kNonFinite, source,
+                       "triangle " + std::to_string(i) + " has a vertex at " +
+                           FormatG(std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)})) +
+                           " m (after scaling by " + FormatG(options.scale) +
+                           "); allowed: |coordinate| <= " + FormatG(kMaxCoordinateM) +
+                           " m (check the STL's units and scale)");
     if (IsDegenerateTriangle(t, options.degenerate_tolerance)) {
       if (++r.degenerate_dropped <= 5) {
         first_dropped += (first_dropped.empty() ? "" : ", ") + std::to_string(i);
@@ -285,6 +303,13 @@ StlReadResult ReadStl(const std::string& path, const StlReadOptions& options) {
     if (!std::filesystem::is_regular_file(status)) {
       return Failure(MeshIoStatus::kMissingFile, path, "not a regular file");
     }
+    // 1 GiB: about 20 million binary triangles, far beyond a wall mesh; refused before reading.
+    constexpr uintmax_t kMaxStlBytes = uintmax_t{1} << 30;
+    const uintmax_t size = std::filesystem::file_size(path, ec);
+    if (!ec && size > kMaxStlBytes)
+      return Failure(MeshIoStatus::kNotStl, path,
+                     "the file holds " + std::to_string(size) +
+                         " bytes; allowed: at most 1 GiB for a wall mesh");
     std::ifstream in(path, std::ios::binary);
     if (!in) return Failure(MeshIoStatus::kMissingFile, path, "cannot open the file for reading");
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

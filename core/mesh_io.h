@@ -10,8 +10,8 @@
 //
 // Errors: no exceptions escape and nothing aborts. A failed read returns a status other than kOk
 // and a message that starts with the file name: missing or unreadable file, empty file, truncated
-// binary or ASCII data, not STL, malformed ASCII (with the line number), non-finite coordinates
-// (with the triangle number), no triangles, or every triangle degenerate. Degenerate (zero-area)
+// binary or ASCII data (with the facet count read), not STL, malformed ASCII (with the line
+// number), non-finite coordinates or coordinates beyond 1e6 m (with the triangle number), no triangles, or every triangle degenerate. Degenerate (zero-area)
 // triangles are dropped from a good read; their count is in degenerate_dropped and a warning.
 //
 // Thread-safety: free functions, no shared state.
@@ -42,7 +42,7 @@ enum class MeshIoStatus {
   kInvalidOptions,  // StlReadOptions::IsValid failed; nothing was read
   kMissingFile,     // does not exist, is not a regular file, or cannot be opened
   kEmptyFile,       // zero bytes
-  kTruncated,       // binary shorter than its header promises, or ASCII ending inside a facet
+  kTruncated,       // binary shorter than its header promises, ASCII without its 'endsolid'
   kNotStl,          // neither ASCII STL ("solid" ...) nor a binary STL of consistent size
   kMalformed,       // ASCII STL with a syntax error
   kNonFinite,       // a NaN or infinite coordinate

@@ -1,7 +1,9 @@
 #include "core/scene.h"
 
 #include "core/contact/jkr.h"
+#include "core/triangle_mesh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -24,10 +26,15 @@ class Checker {
              bool hi_open, const std::string& unit = "") {
     const bool good = std::isfinite(v) && (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
     if (good) return;
+    // Readable bounds: "(0, 1e+06] s", "> 0 Pa"; never "inf" or a 300-digit number.
     std::ostringstream os;
     os << "field '" << field << "' = " << v << (unit.empty() ? "" : " " + unit)
-       << " is outside the allowed range " << (lo_open ? "(" : "[") << lo << ", "
-       << (std::isinf(hi) ? "inf" : std::to_string(hi)) << (hi_open ? ")" : "]");
+       << " is outside the allowed range ";
+    if (std::isinf(hi))
+      os << (lo_open ? "> " : ">= ") << lo;
+    else
+      os << (lo_open ? "(" : "[") << lo << ", " << hi << (hi_open ? ")" : "]");
+    if (!unit.empty()) os << " " << unit;
     Fail(os.str());
   }
   void Positive(const std::string& field, double v, const std::string& unit) {
@@ -132,6 +139,41 @@ void CheckWall(const Scene& s, size_t i, Checker& c) {
       c.Fail("field '" + f + "." + message.substr(colon + 2, space - colon - 2) + "'" +
              message.substr(space) + " (" + ShapeName(w.shape) + " '" + w.name + "')");
     }
+  }
+  if (!c.ok()) return;
+  const char* axes = "xyz";
+  if (const auto* plane = std::get_if<PlaneSurface>(&w.shape)) {
+    // docs/scene_format.md: no wall across a periodic axis (particles would wrap through it).
+    for (int a = 0; a < 3; ++a)
+      // (A periodic axis along gravity is reported below, as the more basic mistake.)
+      if (s.periodic[a] && s.gravity_m_s2[a] == 0 && std::abs(plane->normal[a]) > 1e-12)
+        c.Fail("field '" + f + "' (plane '" + w.name + "') crosses the periodic axis " +
+               axes[a] + ": walls across a periodic axis are not allowed; drop the wall (a " +
+               "box: its " + axes[a] + " faces) or the periodic." + axes[a]);
+  }
+  if (const auto* ref = std::get_if<MeshRef>(&w.shape);
+      ref && ref->mesh && ref->mesh->NumVertices() > 0 && c.ok()) {
+    // A mesh that never meets the domain is a unit or offset mistake (mm read as m).
+    Vec3 lo = ref->mesh->Vertex(0) + ref->offset_m, hi = lo;
+    for (size_t v = 0; v < ref->mesh->NumVertices(); ++v)
+      for (int a = 0; a < 3; ++a) {
+        const double x = ref->mesh->Vertex(static_cast<int32_t>(v))[a] + ref->offset_m[a];
+        lo[a] = std::min(lo[a], x);
+        hi[a] = std::max(hi[a], x);
+      }
+    const double travel =
+        Norm(w.velocity_m_s) *
+        (std::isinf(w.motion_end_s) ? s.time.duration_s : w.motion_end_s - w.motion_start_s);
+    for (int a = 0; a < 3; ++a)
+      if (hi[a] + travel < s.domain_min_m[a] || lo[a] - travel > s.domain_max_m[a]) {
+        std::ostringstream os;
+        os << "field '" << f << "' (mesh '" << w.name << "' from " << ref->source
+           << ") lies entirely outside the domain along " << axes[a] << ": the mesh spans ["
+           << lo[a] << ", " << hi[a] << "] m, the domain [" << s.domain_min_m[a] << ", "
+           << s.domain_max_m[a] << "] m; check the STL's units (scale) and offset_m";
+        c.Fail(os.str());
+        break;
+      }
   }
   if (!IsFinite(w.velocity_m_s)) c.Fail("field '" + f + ".velocity_m_s' must be finite");
   if (!IsFinite(w.load_point_m)) c.Fail("field '" + f + ".load_point_m' must be finite");

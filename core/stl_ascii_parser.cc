@@ -77,8 +77,13 @@ class Parser {
     while (true) {
       const std::string_view token = cursor_.Next();
       if (token.empty()) {
-        if (in_solid) warnings->push_back("ASCII STL has no final 'endsolid'");
-        return MeshIoStatus::kOk;
+        // A file cut short after a whole facet parses cleanly; only the missing 'endsolid'
+        // tells, and half a mesh must not run silently.
+        if (in_solid)
+          Fail(MeshIoStatus::kTruncated,
+               "ASCII STL has no final 'endsolid' after " + std::to_string(triangles->size()) +
+                   " facets: the file is truncated (a complete file ends with 'endsolid')");
+        return status_;
       }
       if (!in_solid) {
         if (!IEquals(token, "solid")) {

@@ -1,8 +1,8 @@
 #pragma once
 // The ASCII STL grammar, used by ReadStl/ParseStl (core/mesh_io.h); not meant to be called
 // directly. Accepts one or more "solid ... endsolid" blocks, keywords in any letter case, numbers
-// in any C locale form (including a leading '+'), CR/LF line ends and a missing final "endsolid"
-// (with a warning). Coordinates come back in file units, unscaled and unfiltered.
+// in any C locale form (including a leading '+'), CR/LF line ends. A missing final "endsolid" is an error (kTruncated):
+// a file cut after a whole facet is otherwise indistinguishable from a complete one. Coordinates come back in file units, unscaled and unfiltered.
 //
 // Thread-safety: free functions, no shared state.
 #include <string>

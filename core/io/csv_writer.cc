@@ -5,6 +5,7 @@
 #include <fstream>
 #include <numeric>
 
+#include "core/io/atomic_file.h"
 #include "core/io/id_order.h"
 
 namespace demcal::core::io {
@@ -41,21 +42,13 @@ class Row {
 template <typename WriteRows>
 bool WriteTable(const std::string& path, const std::vector<std::string>& columns,
                 WriteRows write_rows, std::string* error) {
-  std::ofstream out(path, std::ios::trunc);
-  if (!out) {
-    if (error) *error = "cannot open '" + path + "' for writing";
-    return false;
-  }
+  AtomicFile file(path);  // a kill mid-write leaves the previous table whole
+  std::ostream& out = file.stream();
   Row header;
   for (const std::string& c : columns) header.Put(c);
   out << header.line() << '\n';
   write_rows(out);
-  out.flush();
-  if (!out) {
-    if (error) *error = "write to '" + path + "' failed (disk full?)";
-    return false;
-  }
-  return true;
+  return file.Commit(error);
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "core/io/vtk_writer.h"
 
+#include "core/io/atomic_file.h"
+
 #include <bit>
 #include <charconv>
 #include <cstdint>
@@ -106,11 +108,9 @@ bool ParseVtkEncoding(const std::string& name, VtkOptions::Encoding* encoding) {
 
 bool WriteParticlesVtk(const std::string& path, const Particles& p, double time_s,
                        const VtkOptions& options, std::string* error, const Clumps* clumps) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) {
-    if (error) *error = "cannot open '" + path + "' for writing";
-    return false;
-  }
+  AtomicFile file(path, /*binary=*/true);
+  if (!file.is_open()) return file.Commit(error);  // reports why
+  std::ostream& out = file.stream();
   const bool binary = options.encoding == VtkOptions::Encoding::kBinary;
   const std::vector<size_t> order = OrderById(p);
   const size_t n = order.size();
@@ -170,12 +170,7 @@ bool WriteParticlesVtk(const std::string& path, const Particles& p, double time_
   };
   write_ids("id", [&](size_t s) { return p.id[s]; });
   write_ids("body_id", [&](size_t s) { return BodyId(p, clumps, s); });
-  out.flush();
-  if (!out) {
-    if (error) *error = "write to '" + path + "' failed (disk full?)";
-    return false;
-  }
-  return true;
+  return file.Commit(error);
 }
 
 VtkSeries::VtkSeries(std::string directory, std::string prefix, VtkOptions options)
@@ -199,7 +194,8 @@ bool VtkSeries::Resume(std::vector<Entry> earlier, std::string* error) {
 
 bool VtkSeries::WriteIndex(std::string* error) const {
   const std::string path = SeriesPath();
-  std::ofstream out(path, std::ios::trunc);
+  AtomicFile file(path);
+  std::ostream& out = file.stream();
   out << "{\n  \"file-series-version\": \"1.0\",\n  \"files\": [\n";
   for (size_t k = 0; k < entries_.size(); ++k) {
     char time[32];
@@ -209,12 +205,7 @@ bool VtkSeries::WriteIndex(std::string* error) const {
         << (k + 1 < entries_.size() ? "," : "") << "\n";
   }
   out << "  ]\n}\n";
-  out.flush();
-  if (!out) {
-    if (error) *error = "cannot write '" + path + "'";
-    return false;
-  }
-  return true;
+  return file.Commit(error);
 }
 
 }  // namespace demcal::core::io

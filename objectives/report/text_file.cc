@@ -1,17 +1,12 @@
 #include "objectives/report/text_file.h"
 
-#include <fstream>
+#include "core/io/atomic_file.h"
 
 namespace demcal::objectives {
 
 bool WriteTextFile(const std::string& path, const std::function<void(std::ostream&)>& write,
                    std::string* error) {
-  std::ofstream out(path, std::ios::trunc);
-  if (out) write(out);
-  out.flush();
-  if (out) return true;
-  if (error) *error = "cannot write '" + path + "'";
-  return false;
+  return core::io::WriteFileAtomically(path, write, error);
 }
 
 }  // namespace demcal::objectives

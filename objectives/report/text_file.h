@@ -9,8 +9,9 @@
 
 namespace demcal::objectives {
 
-// Truncates `path`, lets `write` fill it and flushes; false with "cannot write '<path>'" in
-// *error (if given) when the file could not be opened or written.
+// Lets `write` fill a temporary beside `path`, fsyncs it and renames it over `path`
+// (core/io/atomic_file.h): a kill at any byte leaves the old or the new complete file. False
+// with "cannot write '<path>': reason" in *error (if given); `path` is then unchanged.
 bool WriteTextFile(const std::string& path, const std::function<void(std::ostream&)>& write,
                    std::string* error);
 

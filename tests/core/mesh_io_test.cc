@@ -152,14 +152,15 @@ TEST_CASE("the writer refuses coordinates that are not finite in float32", "[uni
   CHECK_FALSE(WriteBinaryStl((dir.path / "no_such_dir" / "x.stl").string(), {}, &error));
 }
 
-TEST_CASE("ASCII STL variants: letter case, CRLF, '+' signs, several solids, no endsolid",
+TEST_CASE("ASCII STL variants: letter case, CRLF, '+' signs, several solids",
           "[unit][geometry]") {
   ScratchDir dir;
   const std::string facet =
       "FACET NORMAL 0 0 1\r\n OUTER LOOP\r\n  VERTEX 0 0 0\r\n"
       "  VERTEX +1.0e+0 0 0\r\n  VERTEX 0 1 -0\r\n ENDLOOP\r\nENDFACET\r\n";
   const std::string text = "SOLID first part\r\n" + facet + "ENDSOLID first part\r\n" +
-                           "solid second\n" + AsciiFacet("0 0 1", "1 0 1", "0 1 1");
+                           "solid second\n" + AsciiFacet("0 0 1", "1 0 1", "0 1 1") +
+                           "endsolid second\n";
   const std::string path = dir.Write("variants.stl", text);
   const StlReadResult r = ReadStl(path);
   INFO(r.message);
@@ -167,8 +168,33 @@ TEST_CASE("ASCII STL variants: letter case, CRLF, '+' signs, several solids, no 
   CHECK(r.name == "first part");
   CHECK(r.triangles.size() == 2);
   CHECK(r.triangles[0].v[1] == Vec3{1, 0, 0});
-  REQUIRE(r.warnings.size() == 1);
-  CHECK_THAT(r.warnings[0], Catch::Contains("endsolid") && Catch::StartsWith(path));
+  CHECK(r.warnings.empty());
+}
+
+TEST_CASE("ASCII STL cut after a facet (no endsolid) is refused as truncated, with the count",
+          "[unit][geometry]") {
+  ScratchDir dir;
+  const std::string path = dir.Write(
+      "cut.stl", "solid cut\n" + AsciiFacet("0 0 0", "1 0 0", "0 1 0") +
+                     AsciiFacet("0 0 1", "1 0 1", "0 1 1"));
+  const StlReadResult r = ReadStl(path);
+  CHECK(r.status == MeshIoStatus::kTruncated);
+  CHECK_THAT(r.message, Catch::StartsWith(path) && Catch::Contains("no final 'endsolid'") &&
+                            Catch::Contains("after 2 facets"));
+}
+
+TEST_CASE("STL vertices beyond 1e6 m are refused; so are those that overflow scaling",
+          "[unit][geometry]") {
+  ScratchDir dir;
+  const std::string far = dir.Write(
+      "far.stl", "solid f\n" + AsciiFacet("0 0 0", "1e305 0 0", "0 1 0") + "endsolid f\n");
+  const StlReadResult r = ReadStl(far);
+  CHECK(r.status == MeshIoStatus::kNonFinite);
+  CHECK_THAT(r.message, Catch::Contains("triangle 0") && Catch::Contains("1e+06 m"));
+  const std::string near = dir.Write(
+      "near.stl", "solid n\n" + AsciiFacet("0 0 0", "1000 0 0", "0 1000 0") + "endsolid n\n");
+  CHECK(ReadStl(near, {.scale = 1e-3}).ok());
+  CHECK_FALSE(ReadStl(near, {.scale = 1e4}).ok());
 }
 
 TEST_CASE("ASCII STL padded with NULs after endsolid is still ASCII", "[unit][geometry]") {

@@ -17,7 +17,10 @@ void ParseAngleOptions(const json& value, objectives::ReposeAngleOptions* a, Jso
   f.Number("cell_m", &a->cell_m, kOptional, Range::Closed(0, 1, "m"));
   int64_t sectors = a->sectors, points = a->min_flank_points;
   f.Integer("sectors", &sectors, kOptional, Range::Closed(1, 360));
-  f.Integer("min_flank_points", &points, kOptional, Range::Closed(2, 1000));
+  f.Integer("min_flank_points", &points, kOptional, Range::Closed(3, 1000));
+  if (status->ok() && !(a->window_low < a->window_high))
+    f.Fail("window_high", "= " + FormatNumber(a->window_high) + " must exceed window_low = " +
+                              FormatNumber(a->window_low));
   a->sectors = static_cast<int>(sectors);
   a->min_flank_points = static_cast<int>(points);
 }

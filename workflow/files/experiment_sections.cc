@@ -2,6 +2,9 @@
 
 #include "workflow/files/scene_json_sections.h"
 
+#include <cstring>
+#include <utility>
+
 namespace demcal::workflow {
 
 using nlohmann::json;
@@ -42,6 +45,19 @@ void ParseSettle(const json& value, const std::string& path, objectives::SettleC
            Range::LeftOpen(0, 10, "s"));
   f.Number("max_time_s", &settle->max_time_s, kOptional, Range::LeftOpen(0, 1e4, "s"));
 }
+
+namespace internal {
+std::string UserFacing(const std::string& problem) {
+  static const std::pair<const char*, const char*> kPaths[] = {
+      {"ReposeAngleOptions: ", "field 'aor.angle': "},
+      {"DischargeOptions: ", "field 'discharge.analysis': "},
+      {"CoV: ", "field 'segregation.bins': "},
+  };
+  for (const auto& [prefix, path] : kPaths)
+    if (problem.rfind(prefix, 0) == 0) return path + problem.substr(std::strlen(prefix));
+  return problem;
+}
+}  // namespace internal
 
 int ReadMaterial(JsonFields& fields, const std::string& key, const core::Scene& model,
                  JsonStatus* status) {

@@ -24,13 +24,19 @@ void ParseSettle(const nlohmann::json& value, const std::string& path,
 int ReadMaterial(JsonFields& fields, const std::string& key, const core::Scene& model,
                  JsonStatus* status);
 
+namespace internal {
+// An options struct's IsValid message names the struct ("ReposeAngleOptions: ..."); the user
+// knows the JSON path ("aor.angle: ..."). Unknown prefixes pass unchanged.
+std::string UserFacing(const std::string& problem);
+}  // namespace internal
+
 // The end of every section parser: the settings' own cross-field checks (IsValid(model, &problem)),
 // then either *out = parsed, or *error = "<source>: <first problem>".
 template <class Settings>
 bool FinishSection(JsonStatus& status, const std::string& source, const core::Scene& model,
                    const Settings& parsed, Settings* out, std::string* error) {
   std::string problem;
-  if (status.ok() && !parsed.IsValid(model, &problem)) status.Fail(problem);
+  if (status.ok() && !parsed.IsValid(model, &problem)) status.Fail(internal::UserFacing(problem));
   if (!status.ok()) {
     if (error) *error = source + ": " + status.message();
     return false;

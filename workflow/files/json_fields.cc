@@ -23,12 +23,6 @@ size_t EditDistance(const std::string& a, const std::string& b) {
   return row[b.size()];
 }
 
-std::string FormatNumber(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
-
 // A short rendering of a JSON value for messages.
 std::string Brief(const nlohmann::json& v) {
   std::string s = v.dump();
@@ -45,16 +39,28 @@ bool IsIntegral(const nlohmann::json& v) {
 
 }  // namespace
 
+std::string FormatNumber(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
 bool Range::Contains(double v) const {
   return std::isfinite(v) && (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
 }
 
+// Readable bounds: "(0, 1]", "> 0", ">= 0 s", never "-inf" or a 300-digit number.
 std::string Range::Describe() const {
-  std::string s = lo_open ? "(" : "[";
-  s += lo <= -1e300 ? "-inf" : FormatNumber(lo);
-  s += ", ";
-  s += hi >= 1e300 ? "inf" : FormatNumber(hi);
-  s += hi_open ? ")" : "]";
+  const bool no_lo = lo <= -1e300, no_hi = hi >= 1e300;
+  std::string s;
+  if (no_lo && no_hi)
+    s = "any number of magnitude <= 1e300";
+  else if (no_hi)
+    s = (lo_open ? "> " : ">= ") + FormatNumber(lo);
+  else if (no_lo)
+    s = (hi_open ? "< " : "<= ") + FormatNumber(hi);
+  else
+    s = (lo_open ? "(" : "[") + FormatNumber(lo) + ", " + FormatNumber(hi) + (hi_open ? ")" : "]");
   if (*unit) s += std::string(" ") + unit;
   return s;
 }

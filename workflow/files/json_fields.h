@@ -62,6 +62,8 @@ enum Presence { kOptional, kRequired };
 // "array[3]"-style and "object.key"-style path pieces.
 std::string JoinPath(const std::string& parent, const std::string& key);
 std::string IndexPath(const std::string& parent, size_t index);
+// A number in messages: 6 significant digits ("1e+06", "0.25").
+std::string FormatNumber(double v);
 // "number", "string", "array", ... as a user would say it.
 std::string JsonTypeName(const nlohmann::json& value);
 

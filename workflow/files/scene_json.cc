@@ -6,6 +6,7 @@
 #include "workflow/files/json_document.h"
 #include "workflow/files/json_fields.h"
 #include "workflow/files/scene_json_sections.h"
+#include "workflow/files/scene_limits.h"
 
 namespace demcal::workflow {
 namespace {
@@ -102,6 +103,7 @@ bool ParseSceneJson(const json& document, const std::string& source, SceneFile* 
   ParseOutput(top, &file.output, &status);
   std::string core_error;
   if (status.ok() && !scene.IsValid(&core_error)) status.Fail(core_error);
+  if (status.ok() && !CheckSceneLimits(file, &core_error)) status.Fail(core_error);
   if (!status.ok()) {
     if (error) *error = source + ": " + status.message();
     return false;

@@ -1,5 +1,7 @@
 #include "workflow/outputs/summary_json.h"
 
+#include "workflow/outputs/earlier_outputs.h"
+
 #include <cmath>
 
 #include "workflow/files/json_document.h"
@@ -70,6 +72,10 @@ nlohmann::ordered_json RunRecordToJson(const RunRecord& r) {
   j["output_error"] =
       r.output_error.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.output_error);
   j["outputs"] = r.outputs;
+  if (!r.earlier_outputs_moved.empty()) {
+    j["earlier_outputs_moved_to"] = std::string(kPreviousRunDir) + "/";
+    j["earlier_outputs_moved"] = r.earlier_outputs_moved;
+  }
   return j;
 }
 

@@ -46,6 +46,8 @@ struct RunRecord {
   };
   std::optional<Restart> restarted_from;  // set if the run continued a checkpoint
   std::string output_error;                    // non-empty if an output file could not be written
+  // A rejected run: the earlier run's outputs it moved into previous_run/ (earlier_outputs.h).
+  std::vector<std::string> earlier_outputs_moved;
   nlohmann::ordered_json outputs = nlohmann::ordered_json::object();  // RunOutputs::Describe()
 };
 

@@ -9,6 +9,8 @@
 #include <numeric>
 
 #include "workflow/exit_codes.h"
+#include "workflow/outputs/earlier_outputs.h"
+#include "workflow/outputs/output_lock.h"
 #include "workflow/outputs/progress_reporter.h"
 #include "workflow/outputs/run_outputs.h"
 #include "workflow/files/scene_json.h"
@@ -81,6 +83,13 @@ int RunSimulate(const SimulateOptions& options, std::ostream& log) {
   record.threads_requested = options.threads;
   record.threads_used = ResolveThreads(options.threads);
 
+  // One process per output directory, before anything is written there.
+  OutputLock lock;
+  if (!LockOutputDirectory(options.out_dir, "demcal simulate " + options.scene_path, &lock,
+                           &error)) {
+    log << "error: " << error << "\n";
+    return kExitInvalidInput;
+  }
   SceneFile file;
   std::string scene_error;
   const bool loaded = LoadSceneFile(options.scene_path, &file, &scene_error);
@@ -93,7 +102,10 @@ int RunSimulate(const SimulateOptions& options, std::ostream& log) {
   }
   auto finish = [&](int code) {
     record.total_wall_time_s = SecondsSince(start);
-    record.outputs = outputs.Describe();
+    // A rejected run wrote nothing but this summary.
+    record.outputs = record.summary.termination == core::Termination::kInvalidScene
+                         ? nlohmann::ordered_json::object()
+                         : outputs.Describe();
     std::string write_error;
     if (!WriteRunSummaryJson(outputs.SummaryPath(), record, &write_error)) {
       log << "error: " << write_error << "\n";
@@ -103,6 +115,14 @@ int RunSimulate(const SimulateOptions& options, std::ostream& log) {
   };
   auto invalid = [&](const std::string& message) {
     log << "error: " << message << "\n";
+    // The folder must not look like a finished run of this input (earlier_outputs.h).
+    std::string move_error;
+    if (!SetAsideEarlierOutputs(options.out_dir, {options.scene_path, options.restart_path},
+                                &record.earlier_outputs_moved, &move_error))
+      log << "error: " << move_error << "\n";
+    else if (!record.earlier_outputs_moved.empty())
+      log << "note: the earlier outputs in " << options.out_dir << " were moved to "
+          << options.out_dir << "/" << kPreviousRunDir << "/\n";
     record.summary.termination = core::Termination::kInvalidScene;
     record.summary.message = message;
     return finish(kExitInvalidInput);

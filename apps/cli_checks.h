@@ -1,0 +1,33 @@
+#pragma once
+// CLI11 validators whose messages read like the rest of demcal's ("must be > 0 s") instead of
+// CLI11's, which print the largest double as a 300-digit number.
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace demcal::apps {
+
+// A finite number of seconds, > 0 (or >= 0 with allow_zero), at most `max_s`.
+inline CLI::Validator Seconds(bool allow_zero, double max_s) {
+  return CLI::Validator(
+      [allow_zero, max_s](std::string& text) -> std::string {
+        double v = 0;
+        size_t used = 0;
+        try {
+          v = std::stod(text, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        char max_text[32];
+        std::snprintf(max_text, sizeof max_text, "%g", max_s);
+        const std::string range = std::string(allow_zero ? "[0, " : "(0, ") + max_text + "] s";
+        if (used != text.size() || !std::isfinite(v) || v < 0 || (!allow_zero && v == 0) ||
+            v > max_s)
+          return "'" + text + "' is not a number of seconds in " + range;
+        return {};
+      },
+      allow_zero ? "SECONDS>=0" : "SECONDS>0");
+}
+
+}  // namespace demcal::apps

@@ -1,0 +1,276 @@
+#!/usr/bin/env python3
+"""Writes the hostile-input corpus: one input file per case into files/ and the manifest
+cases.txt (run by run_case.sh through ctest). Run it after editing a case:
+    python3 tests/bad_inputs/make_cases.py
+Each case: name, the files it needs, the demcal arguments ({files} = this folder's files/,
+{out} = a fresh output directory), the expected exit code, a fragment the message must contain
+and, optionally, one it must not contain."""
+import copy, json, os, random
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+FILES = os.path.join(HERE, "files")
+
+SCENE = {
+    "format": "demcal-scene/1",
+    "description": "bad_inputs base scene: 50 glass beads in a box",
+    "seed": 1,
+    "materials": [{"name": "glass", "youngs_modulus_Pa": 5.0e6, "poisson_ratio": 0.25,
+                   "density_kg_m3": 2500}],
+    "species": [{"name": "beads", "material": "glass", "diameter_m": 0.002}],
+    "domain": {"min_m": [0, 0, 0], "max_m": [0.02, 0.02, 0.04]},
+    "walls": [{"type": "plane", "point_m": [0, 0, 0], "normal": [0, 0, 1], "material": "glass"}],
+    "fills": [{"species": "beads", "count": 50,
+               "region": {"min_m": [0.001, 0.001, 0.001], "max_m": [0.019, 0.019, 0.03]}}],
+    "time": {"duration_s": 0.01},
+}
+AOR = json.load(open(os.path.join(HERE, "..", "..", "examples", "aor_bp.json")))
+STUDY = json.load(open(os.path.join(HERE, "..", "..", "examples", "calibrate_bp_rolling.json")))
+
+
+def scene(**changes):
+    s = copy.deepcopy(SCENE)
+    for path, value in changes.items():
+        node = s
+        keys = path.split("__")
+        for k in keys[:-1]:
+            node = node[int(k)] if isinstance(node, list) else node[k]
+        last = keys[-1]
+        if value is DELETE:
+            del node[last]
+        elif isinstance(node, list):
+            node[int(last)] = value
+        else:
+            node[last] = value
+    return json.dumps(s, indent=1)
+
+
+DELETE = object()
+FACET = ("facet normal 0 0 1\n outer loop\n  vertex {a}\n  vertex {b}\n  vertex {c}\n"
+         " endloop\nendfacet\n")
+
+
+def facet(a, b, c):
+    return FACET.format(a=a, b=b, c=c)
+
+
+def mesh_scene(stl, offset=None):
+    wall = {"type": "mesh", "file": stl, "material": "glass"}
+    if offset:
+        wall["offset_m"] = offset
+    return scene(walls=SCENE["walls"] + [wall])
+
+
+CASES = []  # (name, {file: content}, args, exit, fragment, absent)
+
+
+def case(name, files, args, code, fragment, absent=""):
+    CASES.append((name, files, args, code, fragment, absent))
+
+
+S = "simulate {files}/%s --out {out}"
+# --- scene files: size, depth, number syntax, file kind -------------------------------------
+case("scene_deep_nesting", {"scene_deep_nesting.json": scene(description="@")
+                            .replace('"@"', "[" * 100000 + "]" * 100000)},
+     S % "scene_deep_nesting.json", 2, "description[0][0]", "internal error")
+case("scene_depth_65", {"scene_depth_65.json": scene(description="@")
+                        .replace('"@"', "[" * 64 + "]" * 64)},
+     S % "scene_depth_65.json", 2, "nesting deeper than 64 levels")
+case("scene_number_overflow", {"scene_number_overflow.json": scene(seed=1).replace(
+    '"density_kg_m3": 2500', '"density_kg_m3": 1e999')},
+     S % "scene_number_overflow.json", 2,
+     "materials[0].density_kg_m3: number '1e999' is out of range", "internal error")
+case("scene_huge_integer", {"scene_huge_integer.json": scene().replace(
+    '"seed": 1', '"seed": 123456789012345678901234567890')},
+     S % "scene_huge_integer.json", 2, "field 'seed' must be a non-negative integer")
+case("scene_directory", {}, "simulate {files} --out {out}", 2, "it is a directory")
+case("scene_dev_zero", {}, "simulate /dev/zero --out {out}", 2, "not a regular file")
+case("scene_missing", {}, "simulate {files}/no_such_scene.json --out {out}", 2,
+     "no_such_scene.json: cannot read the scene file: No such file or directory")
+case("scene_empty", {"scene_empty.json": ""}, S % "scene_empty.json", 2, "invalid JSON")
+case("scene_binary_junk", {"scene_binary_junk.json": bytes(random.Random(12).randrange(256)
+                                                            for _ in range(3000))},
+     S % "scene_binary_junk.json", 2, "invalid JSON")
+case("scene_nan_literal", {"scene_nan_literal.json": scene().replace("0.25", "NaN")},
+     S % "scene_nan_literal.json", 2, "invalid JSON")
+case("scene_top_array", {"scene_top_array.json": "[1, 2, 3]"}, S % "scene_top_array.json", 2,
+     "must be an object, got array")
+case("scene_duplicate_key", {"scene_duplicate_key.json": scene().replace(
+    '"seed": 1', '"seed": 1, "seed": 2')}, S % "scene_duplicate_key.json", 2,
+     "key 'seed' appears twice")
+case("scene_truncated_json", {"scene_truncated_json.json": scene()[:200]},
+     S % "scene_truncated_json.json", 2, "invalid JSON: parse error")
+case("scene_unknown_key", {"scene_unknown_key.json": scene(tiem={"duration_s": 1})},
+     S % "scene_unknown_key.json", 2, "unknown key 'tiem'")
+case("scene_string_number", {"scene_string_number.json": scene(
+    materials__0__poisson_ratio="0.25")}, S % "scene_string_number.json", 2,
+     "'materials[0].poisson_ratio' must be a number, got string")
+case("scene_negative_density", {"scene_negative_density.json": scene(
+    materials__0__density_kg_m3=-1)}, S % "scene_negative_density.json", 2,
+     "'materials[0].density_kg_m3' is required (> 0)", "inf")
+case("scene_youngs_zero", {"scene_youngs_zero.json": scene(materials__0__youngs_modulus_Pa=0)},
+     S % "scene_youngs_zero.json", 2, "allowed range > 0 Pa", "inf")
+case("scene_huge_count", {"scene_huge_count.json": scene(fills__0__count=10**12)},
+     S % "scene_huge_count.json", 2, "fills[0].count", "e+299")
+# --- cross-field checks ---------------------------------------------------------------------
+FACTORY = {"species": [{"name": "beads", "mass_fraction": 1}], "mass_rate_kg_s": 0.001,
+           "region": {"min_m": [0.001, 0.001, 0.03], "max_m": [0.019, 0.019, 0.039]}}
+case("scene_batch_interval_tiny", {"scene_batch_interval_tiny.json": scene(
+    factories=[dict(FACTORY, batch_interval_s=1e-30)])}, S % "scene_batch_interval_tiny.json", 2,
+     "'factories[0].batch_interval_s' = 1e-30 s is shorter than the time step")
+case("scene_too_many_steps", {"scene_too_many_steps.json": scene(
+    time={"duration_s": 1e5, "timestep_s": 1e-6})}, S % "scene_too_many_steps.json", 2,
+     "at most 1e+09 steps per run")
+case("scene_too_many_snapshots", {"scene_too_many_snapshots.json": scene(
+    time={"duration_s": 100}, output={"vtk_interval_s": 1e-6})},
+     S % "scene_too_many_snapshots.json", 2, "at most 100000 snapshots per run")
+case("scene_memory", {"scene_memory.json": scene(fills=[dict(SCENE["fills"][0], count=10**8)
+                                                        for _ in range(40)])},
+     S % "scene_memory.json", 2, "of memory (1024 bytes a sphere)")
+case("scene_factory_mass_memory", {"scene_factory_mass_memory.json": scene(
+    factories=[dict(FACTORY, mass_rate_kg_s=1e4, region={"min_m": [0, 0, 0.02],
+                                                         "max_m": [0.02, 0.02, 0.04]})],
+    domain={"min_m": [0, 0, 0], "max_m": [0.02, 0.02, 0.04]}, time={"duration_s": 1e3})},
+     S % "scene_factory_mass_memory.json", 2, "factories")
+case("scene_box_across_periodic", {"scene_box_across_periodic.json": scene(
+    periodic={"x": True}, walls=[{"type": "box", "min_m": [0, 0, 0], "max_m": [0.02, 0.02, 0.04],
+                                  "material": "glass"}])},
+     S % "scene_box_across_periodic.json", 2, "crosses the periodic axis x")
+# --- STL meshes -------------------------------------------------------------------------------
+CUBE = "".join(facet(*f) for f in [("0 0 0", "0.01 0 0", "0 0.01 0"),
+                                   ("0.01 0 0", "0.01 0.01 0", "0 0.01 0")])
+case("stl_truncated", {"stl_truncated.stl": "solid cut\n" + facet("0 0 0", "0.01 0 0",
+                                                                   "0 0.01 0"),
+                       "stl_truncated.json": mesh_scene("stl_truncated.stl")},
+     S % "stl_truncated.json", 2, "no final 'endsolid' after 1 facets")
+case("stl_cut_mid_facet", {"stl_cut_mid_facet.stl": "solid cut\n" + CUBE[:120],
+                           "stl_cut_mid_facet.json": mesh_scene("stl_cut_mid_facet.stl")},
+     S % "stl_cut_mid_facet.json", 2, "truncated")
+case("stl_far_vertex", {"stl_far_vertex.stl": "solid far\n" + facet("0 0 0", "1e305 0 0",
+                                                                     "0 0.01 0") + "endsolid\n",
+                        "stl_far_vertex.json": mesh_scene("stl_far_vertex.stl")},
+     S % "stl_far_vertex.json", 2, "|coordinate| <= 1e+06 m")
+case("stl_nan_vertex", {"stl_nan_vertex.stl": "solid n\n" + facet("0 0 0", "nan 0 0",
+                                                                   "0 0.01 0") + "endsolid\n",
+                        "stl_nan_vertex.json": mesh_scene("stl_nan_vertex.stl")},
+     S % "stl_nan_vertex.json", 2, "non-finite")
+case("stl_outside_domain", {"stl_outside_domain.stl": "solid o\n" + CUBE + "endsolid o\n",
+                            "stl_outside_domain.json": mesh_scene("stl_outside_domain.stl",
+                                                                  [1000, 0, 0])},
+     S % "stl_outside_domain.json", 2, "lies entirely outside the domain along x")
+case("stl_binary_short", {"stl_binary_short.stl": b"\0" * 80 + (7).to_bytes(4, "little")
+                          + b"\1" * 120,
+                          "stl_binary_short.json": mesh_scene("stl_binary_short.stl")},
+     S % "stl_binary_short.json", 2, "stl_binary_short.stl")
+case("stl_not_stl", {"stl_not_stl.stl": "hello, I am not a mesh\n",
+                     "stl_not_stl.json": mesh_scene("stl_not_stl.stl")},
+     S % "stl_not_stl.json", 2, "not an STL file")
+case("stl_directory", {"stl_directory.json": mesh_scene(".")}, S % "stl_directory.json", 2,
+     "not a regular file")
+# --- experiment files ---------------------------------------------------------------------------
+def aor(**changes):
+    a = copy.deepcopy(AOR)
+    for path, value in changes.items():
+        node = a
+        keys = path.split("__")
+        for k in keys[:-1]:
+            node = node[k]
+        node[keys[-1]] = value
+    return json.dumps(a, indent=1)
+
+
+E = "experiment aor {files}/%s --out {out}"
+case("exp_window_order", {"exp_window_order.json": aor(aor__angle={"window_low": 0.8,
+                                                                    "window_high": 0.2})},
+     E % "exp_window_order.json", 2, "field 'aor.angle.window_high' = 0.2 must exceed window_low",
+     "ReposeAngleOptions")
+case("exp_deep_nesting", {"exp_deep_nesting.json": aor(description="@")
+                          .replace('"@"', "{\"a\":" * 50000 + "1" + "}" * 50000)},
+     E % "exp_deep_nesting.json", 2, "nesting deeper than 64 levels")
+case("exp_number_overflow", {"exp_number_overflow.json": aor().replace('"seed": 2018',
+                                                                        '"seed": -1e400')},
+     E % "exp_number_overflow.json", 2, "seed: number '-1e400' is out of range")
+case("exp_wrong_kind", {"exp_wrong_kind.json": aor()},
+     "experiment discharge {files}/exp_wrong_kind.json --out {out}", 2,
+     "field 'experiment' = 'aor' but the command asks for 'discharge'")
+case("exp_replicates_zero", {"exp_replicates_zero.json": aor(replicates=0)},
+     E % "exp_replicates_zero.json", 2, "'replicates' = 0 is outside the allowed range [1, 1000]")
+case("exp_dev_zero", {}, "experiment aor /dev/zero --out {out}", 2, "not a regular file")
+case("exp_feed_mass_nan", {"exp_feed_mass_nan.json": aor().replace('"mass_kg": 0.0025',
+                                                                    '"mass_kg": "NaN"')},
+     E % "exp_feed_mass_nan.json", 2, "'aor.feed.mass_kg' must be a number")
+# --- study files and measurement tables -------------------------------------------------------
+def study(**changes):
+    s = copy.deepcopy(STUDY)
+    s["experiment_file"] = "../../../examples/aor_bp.json"
+    s["measurement"]["dataset"] = "../../../datasets/alizadeh2018/measurements.csv"
+    for k, v in changes.items():
+        s[k] = v
+    return json.dumps(s, indent=1)
+
+
+C = "calibrate {files}/%s --out {out} --max-evaluations 1"
+case("study_deep_nesting", {"study_deep_nesting.json": study(description="@")
+                            .replace('"@"', "[" * 100000 + "]" * 100000)},
+     C % "study_deep_nesting.json", 2, "nesting deeper than 64 levels")
+case("study_overflow", {"study_overflow.json": study(replicates=2).replace(
+    '"replicates": 2', '"replicates": 1e999')}, C % "study_overflow.json", 2,
+     "replicates: number '1e999' is out of range")
+case("study_directory", {}, "calibrate {files} --out {out}", 2, "it is a directory")
+HEADER = "observable,unit,material,coating_PEG_wt_pct,test,value,uncertainty,repeats,provenance,source\n"
+ROW = "angle_deg,deg,BP,0,pseudo-2D heap,{v},,,measured,test\n"
+
+
+def table_case(name, text, fragment):
+    s = json.loads(study())
+    s["measurement"]["dataset"] = name + ".csv"
+    case(name, {name + ".csv": text, name + ".json": json.dumps(s, indent=1)},
+         C % (name + ".json"), 2, fragment)
+
+
+table_case("table_angle_400", HEADER + ROW.format(v=400), "400")
+table_case("table_duplicate_rows", HEADER + ROW.format(v=40) + ROW.format(v=41), "line")
+table_case("table_not_a_number", HEADER + ROW.format(v="forty"), "forty")
+table_case("table_overflow", HEADER + ROW.format(v="1e999"), "value")
+# --- command line -----------------------------------------------------------------------------
+case("cli_unknown_command", {}, "frobnicate", 2, "unknown command 'frobnicate'")
+case("cli_no_command", {}, "", 2, "subcommand")
+case("cli_progress_zero", {}, "simulate {files}/scene_empty.json --out {out} "
+     "--progress-interval-s 0", 2, "(0, 1e+06] s", "00000000000")
+case("cli_checkpoint_negative", {}, "simulate {files}/scene_empty.json --out {out} "
+     "--checkpoint-every-s -1", 2, "[0, 1e+06] s")
+case("cli_threads_huge", {}, "simulate {files}/scene_empty.json --out {out} --threads 99999999",
+     2, "threads")
+case("cli_restart_missing", {"cli_restart_missing.json": scene()},
+     "simulate {files}/cli_restart_missing.json --out {out} --restart {files}/no_such.bin", 2,
+     "no_such.bin")
+case("cli_out_is_file", {}, "simulate {files}/scene_top_array.json --out "
+     "{files}/scene_top_array.json", 2, "Not a directory")
+
+
+# Not a case: a valid scene in a closed box that runs for a while (lock_test.sh).
+LONG_RUN = scene(walls=[{"type": "box", "min_m": [0, 0, 0], "max_m": [0.02, 0.02, 0.04],
+                         "material": "glass"}], time={"duration_s": 20})
+
+
+def main():
+    os.makedirs(FILES, exist_ok=True)
+    for f in os.listdir(FILES):
+        os.remove(os.path.join(FILES, f))
+    with open(os.path.join(FILES, "long_run.json"), "w") as out:
+        out.write(LONG_RUN)
+    lines = ["# tab-separated: name, demcal arguments, exit code, message fragment, must not contain",
+             "# generated by make_cases.py; {files} = tests/bad_inputs/files, {out} = scratch dir"]
+    for name, files, args, code, fragment, absent in CASES:
+        for fname, content in files.items():
+            mode = "wb" if isinstance(content, bytes) else "w"
+            with open(os.path.join(FILES, fname), mode) as out:
+                out.write(content)
+        for field in (args, fragment, absent):
+            assert "\t" not in field, name
+        lines.append("\t".join([name, args, str(code), fragment, absent]))
+    with open(os.path.join(HERE, "cases.txt"), "w") as out:
+        out.write("\n".join(lines) + "\n")
+    print(len(CASES), "cases")
+
+
+main()
