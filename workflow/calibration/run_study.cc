@@ -12,6 +12,7 @@
 #include "workflow/calibration/calibration_outputs.h"
 #include "workflow/calibration/study_runs.h"
 #include "workflow/exit_codes.h"
+#include "workflow/outputs/output_lock.h"
 
 namespace demcal::workflow {
 namespace {
@@ -195,6 +196,11 @@ int RunCalibrate(const CalibrateOptions& options, std::ostream& log) {
   std::string error;
   if (!LoadStudyFile(options.study_path, &study, &error)) {
     log << "error: " << error << "\n";
+    return kExitInvalidInput;
+  }
+  OutputLock lock;  // one process per output directory (this also creates it)
+  if (!LockOutputDirectory(options.out_dir, "demcal calibrate " + options.study_path, &lock, &error)) {
+    log << "error: --out: " << error << "\n";
     return kExitInvalidInput;
   }
   if (study.clump_count.enabled()) return RunClumpCountLoop(study, options, log);
