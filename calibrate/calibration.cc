@@ -145,8 +145,14 @@ CalibrationSummary Calibrate(CandidateEvaluator& evaluator, const ParameterSpace
   const OptimiserResult r = optimise(batch, space.ToUnit(space.Start()), options.optimiser_options);
   s.termination = r.termination;
   s.message = r.message;
-  for (const Candidate& c : s.candidates)  // the best: the smallest Σ residual², first on ties
-    if (c.trial.ok && (s.best < 0 || c.trial.Cost() < s.candidates[s.best].trial.Cost()))
+  // The best: among the candidates within noise (if any, as the termination then says), the
+  // smallest Σ residual², first on ties. A lower cost outside noise does not beat a match: its
+  // residuals are not told apart from the match's by the data, and its own are not all within.
+  bool any_within = false;
+  for (const Candidate& c : s.candidates) any_within = any_within || (c.trial.ok && c.trial.WithinNoise());
+  for (const Candidate& c : s.candidates)
+    if (c.trial.ok && (!any_within || c.trial.WithinNoise()) &&
+        (s.best < 0 || c.trial.Cost() < s.candidates[s.best].trial.Cost()))
       s.best = c.index;
   if (s.best >= 0) Analyse(space, targets, options, r, &s);
   return s;

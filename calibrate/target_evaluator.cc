@@ -1,5 +1,6 @@
 #include "calibrate/target_evaluator.h"
 
+#include <cmath>
 #include <mutex>
 
 #include "objectives/common/replicates.h"
@@ -18,7 +19,8 @@ TargetEvaluator::TargetEvaluator(const ParameterSpace& space, std::vector<RunGro
       groups_(std::move(groups)),
       targets_(std::move(targets)),
       options_(options),
-      journal_(journal) {}
+      journal_(journal),
+      pool_(targets_.size()) {}
 
 std::vector<CandidateResult> TargetEvaluator::EvaluateBatch(
     const std::vector<std::vector<double>>& si_parameters) {
@@ -70,9 +72,16 @@ std::vector<CandidateResult> TargetEvaluator::EvaluateBatch(
       if (journal_errors[task.candidate].empty()) journal_errors[task.candidate] = error;
     }
   });
+  // Every target's replicate values first, so the pooled spread includes this batch.
+  std::vector<std::vector<TargetSample>> samples(n);
+  for (int c = 0; c < n; ++c) {
+    if (!infeasible[c].empty()) continue;
+    for (const TargetBinding& target : targets_) samples[c].push_back(Sample(batch[c], target));
+    for (size_t k = 0; k < targets_.size(); ++k) pool_[k].Add(samples[c][k].values);
+  }
   std::vector<CandidateResult> results;
   for (int c = 0; c < n; ++c) {
-    CandidateResult result = Summarise(batch[c], infeasible[c]);
+    CandidateResult result = Summarise(samples[c], infeasible[c]);
     result.replicates_reused = reused[c];
     int run = 0;
     for (const Task& t : pending) run += t.candidate == c;
@@ -84,7 +93,25 @@ std::vector<CandidateResult> TargetEvaluator::EvaluateBatch(
   return results;
 }
 
-CandidateResult TargetEvaluator::Summarise(const CandidateRuns& runs,
+TargetEvaluator::TargetSample TargetEvaluator::Sample(const CandidateRuns& runs,
+                                                      const TargetBinding& target) const {
+  TargetSample s;
+  for (const ReplicateRecord& r : runs.runs[target.group]) {
+    const auto it = r.values.find(target.observable);
+    if (r.ok() && it != r.values.end()) s.values.push_back(it->second);
+    else if (s.failure.empty()) s.failure = r.ok() ? "no_" + target.observable : r.status;
+  }
+  return s;
+}
+
+void TargetEvaluator::Pool::Add(const std::vector<double>& values) {
+  if (values.size() < 2) return;
+  const objectives::Summary s = objectives::Summarise(values);
+  squares += s.stddev * s.stddev * (s.n - 1);
+  dof += s.n - 1;
+}
+
+CandidateResult TargetEvaluator::Summarise(const std::vector<TargetSample>& samples,
                                            const std::string& infeasible) const {
   CandidateResult result;
   if (!infeasible.empty()) {
@@ -92,17 +119,13 @@ CandidateResult TargetEvaluator::Summarise(const CandidateRuns& runs,
     result.targets.assign(targets_.size(), TargetValue{0, 0, 0, result.status});
     return result;
   }
-  for (const TargetBinding& target : targets_) {
-    std::vector<double> values;
-    std::string failure;
-    for (const ReplicateRecord& r : runs.runs[target.group]) {
-      const auto it = r.values.find(target.observable);
-      if (r.ok() && it != r.values.end()) values.push_back(it->second);
-      else if (failure.empty()) failure = r.ok() ? "no_" + target.observable : r.status;
-    }
-    const objectives::Summary s = objectives::Summarise(values);
+  for (size_t k = 0; k < targets_.size(); ++k) {
+    const objectives::Summary s = objectives::Summarise(samples[k].values);
     TargetValue value{s.mean, s.sem, s.n, "ok"};
-    if (s.n < 1 || 2 * s.n < options_.replicates) value.status = failure.empty() ? "no_value" : failure;
+    if (options_.pool_spread && pool_[k].dof > 0 && s.n > 0)
+      value.sem = std::sqrt(pool_[k].squares / pool_[k].dof / s.n);
+    if (s.n < 1 || 2 * s.n < options_.replicates)
+      value.status = samples[k].failure.empty() ? "no_value" : samples[k].failure;
     if (result.status == "ok" && value.status != "ok") result.status = value.status;
     result.targets.push_back(value);
   }

@@ -50,6 +50,12 @@ struct TargetEvaluatorOptions {
   int replicates = 2;  // runs per candidate and group, >= 1
   uint64_t seed = 1;   // base seed of the replicates
   int workers = 0;     // runs side by side (0: all cores)
+  // sem of a target from the replicate spread pooled over every candidate evaluated so far
+  // (pooled variance, Σ(n_i − 1)s_i² / Σ(n_i − 1)), not from this candidate's replicates alone:
+  // with R = 2 one candidate's spread has one degree of freedom and swings by a factor 10 from
+  // candidate to candidate, which would make "within noise" a coin toss. Packing noise depends
+  // little on the parameters over a calibration's range, so pooling is the better estimate.
+  bool pool_spread = true;
 };
 
 // What one candidate gave, per group and replicate (for evaluations.csv and the plots).
@@ -70,7 +76,17 @@ class TargetEvaluator final : public CandidateEvaluator {
 
  private:
   struct Task;
-  CandidateResult Summarise(const CandidateRuns& runs, const std::string& infeasible) const;
+  struct TargetSample {
+    std::vector<double> values;  // of the replicates that gave one
+    std::string failure;         // the first replicate's reason for none
+  };
+  struct Pool {
+    double squares = 0;  // Σ (n_i − 1) s_i²
+    int dof = 0;         // Σ (n_i − 1)
+    void Add(const std::vector<double>& values);
+  };
+  TargetSample Sample(const CandidateRuns& runs, const TargetBinding& target) const;
+  CandidateResult Summarise(const std::vector<TargetSample>& samples, const std::string& infeasible) const;
 
   const ParameterSpace& space_;
   std::vector<RunGroup> groups_;
@@ -78,6 +94,7 @@ class TargetEvaluator final : public CandidateEvaluator {
   TargetEvaluatorOptions options_;
   EvaluationJournal* journal_;
   std::vector<CandidateRuns> history_;
+  std::vector<Pool> pool_;  // per target
 };
 
 }  // namespace demcal::calibrate

@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 #include <atomic>
+#include <cmath>
 
 #include "calibrate/synthetic_observable.h"
 #include "core/io/scratch_dir.h"
@@ -106,4 +107,39 @@ TEST_CASE("target evaluator: a second evaluator over the same journal repeats no
   CHECK(probe.runs == runs);
   CHECK(second[0].replicates_reused == 4);
   CHECK(second[0].targets[1].mean == first[0].targets[1].mean);  // bit-identical from the journal
+}
+
+namespace {
+
+// "angle" = 30 + a noise that depends on the seed and on μr (so spreads differ by candidate).
+class NoisyProbe final : public ExperimentProbe {
+ public:
+  std::string Kind() const override { return "noisy"; }
+  std::vector<std::string> Observables() const override { return {"angle_deg"}; }
+  ProbeOutcome Run(const demcal::core::Scene& model, uint64_t seed) const override {
+    const double mu = model.pair_parameters[0].rolling_friction;
+    return {"ok", {{"angle_deg", 30 + std::sin(1e3 * mu + static_cast<double>(seed % 1000))}}, 0};
+  }
+};
+
+}  // namespace
+
+TEST_CASE("target evaluator: the sem comes from the replicate spread pooled over candidates",
+          "[unit][calibrate]") {
+  ParameterSpace space;
+  space.parameters.push_back({"mu_r", PairProperty::kRollingFriction, 0, 0, 0, 1, 0.1});
+  NoisyProbe probe;
+  std::vector<RunGroup> groups{{"g", &probe, OneMaterialModel(), space, {}, {}}};
+  const std::vector<std::vector<double>> candidates{{0.1}, {0.2}, {0.3}};
+  TargetEvaluator pooled(space, groups, {{0, "angle_deg"}}, {.replicates = 2, .seed = 5}, nullptr);
+  TargetEvaluator single(space, groups, {{0, "angle_deg"}},
+                         {.replicates = 2, .seed = 5, .pool_spread = false}, nullptr);
+  const auto p = pooled.EvaluateBatch(candidates), s = single.EvaluateBatch(candidates);
+  double variance = 0;  // Σ s_i² / k with s_i² = 2·sem_i² for two replicates
+  for (const CandidateResult& r : s) variance += 2 * r.targets[0].sem * r.targets[0].sem / 3;
+  for (size_t c = 0; c < 3; ++c) {
+    CHECK(p[c].targets[0].mean == s[c].targets[0].mean);
+    CHECK(p[c].targets[0].sem == Approx(std::sqrt(variance / 2)));
+  }
+  CHECK(s[0].targets[0].sem != Approx(s[1].targets[0].sem));  // the single spreads do differ
 }

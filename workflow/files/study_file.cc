@@ -117,6 +117,7 @@ bool ResolveSpaceFor(const StudyFile& study, const core::Scene& model, calibrate
 bool LoadStudyFile(const std::string& path, StudyFile* out, std::string* error) {
   nlohmann::json doc;
   if (!ReadJsonFile(path, "study file", &doc, error)) return false;
+  *out = StudyFile{};
   out->source = path;
   JsonStatus status;
   JsonFields f(doc, "", {"format", "description", "experiment_file", "measurement", "measurements",
