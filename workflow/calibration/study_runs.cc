@@ -81,6 +81,15 @@ bool Bind(int group, const std::string& observable, StudyRuns* out, std::string*
   return true;
 }
 
+// A candidate target without a condition reads the runs of the first target of its experiment
+// (free: no runs of its own); with one, the runs of that condition.
+calibrate::Condition CandidateCondition(const StudyFile& study, const StudyCandidateTarget& t) {
+  if (!t.condition.empty()) return t.condition;
+  for (const StudyTarget& target : study.targets)
+    if (target.experiment == t.experiment) return target.condition;
+  return t.condition;
+}
+
 }  // namespace
 
 bool BuildStudyRuns(const StudyFile& study, bool quick, int clump_count, StudyRuns* out,
@@ -102,7 +111,8 @@ bool BuildStudyRuns(const StudyFile& study, bool quick, int clump_count, StudyRu
     if (!Bind(GroupIndex(study, t.experiment, t.condition, out, models, error), t.target.observable, out, error))
       return *error = study.source + ": target '" + t.target.name + "': " + *error, false;
   for (const StudyCandidateTarget& t : study.candidate_targets)
-    if (!Bind(GroupIndex(study, t.experiment, t.condition, out, models, error), t.observable, out, error))
+    if (!Bind(GroupIndex(study, t.experiment, CandidateCondition(study, t), out, models, error),
+              t.observable, out, error))
       return *error = study.source + ": candidate target '" + t.name + "': " + *error, false;
   const uint64_t seed = study.has_seed ? study.seed : study.experiment().seed;
   out->fingerprint = Fingerprint(study, *out, seed, clump_count);

@@ -20,7 +20,7 @@ inline constexpr double kMaxStepsPerRun = 1e9;
 // 10^5 VTK snapshots per run: 10^5 files in one folder is already beyond ParaView's comfort.
 inline constexpr double kMaxSnapshotsPerRun = 1e5;
 // Memory budgeted per sphere (state, neighbour pairs with contact history, cells, output
-// buffers), measured on pour_box at about 0.6 KiB and rounded up.
+// buffers), a generous upper estimate (not a measurement): a refusal is only for scenes far beyond the machine.
 inline constexpr double kBytesPerSphere = 1024;
 
 // The time step a scene will run with (time.timestep_s, or the Rayleigh fraction of the

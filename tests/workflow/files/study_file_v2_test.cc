@@ -96,3 +96,13 @@ TEST_CASE("study/2 errors name the target and the field", "[unit][calibrate]") {
   j["parameters"][0]["materials"] = {"BP", "sugar"};
   CHECK_THAT(Load(dir, j, &st), Catch::Contains("parameters[0].materials"));
 }
+
+TEST_CASE("the one-angle example: one target, a candidate target in another experiment", "[unit][calibrate]") {
+  StudyFile st;
+  std::string error;
+  REQUIRE(LoadStudyFile((RepoRoot() / "examples/calibrate_bp_one_angle.json").string(), &st, &error));
+  CHECK(st.targets.size() == 1);
+  REQUIRE(st.candidate_targets.size() == 3);
+  CHECK(st.candidate_targets[0].experiment == 1);  // the funnel: runs of its own
+  CHECK(st.space.Size() == 2);
+}
