@@ -24,9 +24,8 @@ inline int NeighbourList::Grid::CellOf(const Vec3& x) const {
 // j > i if kUpperOnly, else every j ≠ i; spheres of i's body are skipped.
 template <bool kUpperOnly, class Visit>
 void NeighbourList::ForEachCandidate(const Grid& grid, size_t i, const std::vector<Vec3>& x,
-                                     const std::vector<double>& r,
-                                     const std::vector<int>* body, double skin,
-                                     Visit&& visit) const {
+                                     const std::vector<double>& r, const std::vector<int>* body,
+                                     double skin, Visit&& visit) const {
   const int own_body = body ? (*body)[i] : -1;
   const PeriodicBox& box = periodic_;
   const int c = cell_of_particle_[i];
@@ -42,8 +41,10 @@ void NeighbourList::ForEachCandidate(const Grid& grid, size_t i, const std::vect
       continue;
     }
     for (int k = home[a] - 1; k <= home[a] + 1; ++k) {
-      if (grid.wrap[a]) cells[a][count[a]++] = (k + dims[a]) % dims[a];
-      else if (k >= 0 && k < dims[a]) cells[a][count[a]++] = k;
+      if (grid.wrap[a])
+        cells[a][count[a]++] = (k + dims[a]) % dims[a];
+      else if (k >= 0 && k < dims[a])
+        cells[a][count[a]++] = k;
     }
   }
   for (int cz = 0; cz < count[2]; ++cz) {

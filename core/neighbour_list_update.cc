@@ -25,12 +25,11 @@ void NeighbourList::Update(const Settings& s, const std::vector<Vec3>& x,
                            double refresh_fraction) {
   const size_t n = x.size();
   const uint32_t fixed_from = static_cast<uint32_t>(std::min(first_fixed, n));
-  const bool same_slots = previous.reference_position_.size() == n &&
-                          previous.row_start_.size() == n + 1 &&
-                          previous.first_fixed_ == fixed_from &&
-                          previous.half_skin2_ == 0.25 * s.skin_m * s.skin_m &&
-                          previous.periodic_.origin_m == s.periodic.origin_m &&
-                          previous.periodic_.length_m == s.periodic.length_m;
+  const bool same_slots =
+      previous.reference_position_.size() == n && previous.row_start_.size() == n + 1 &&
+      previous.first_fixed_ == fixed_from && previous.half_skin2_ == 0.25 * s.skin_m * s.skin_m &&
+      previous.periodic_.origin_m == s.periodic.origin_m &&
+      previous.periodic_.length_m == s.periodic.length_m;
   if (!same_slots || !(refresh_fraction > 0 && refresh_fraction <= 0.5)) {
     Build(s, x, r, body, first_fixed);
     return;
@@ -124,7 +123,8 @@ void NeighbourList::Update(const Settings& s, const std::vector<Vec3>& x,
     for (size_t i = range.begin(); i != range.end(); ++i) {
       if (mover_index[i]) {
         const size_t t = mover_index[i] - 1;
-        row_start_[i + 1] = static_cast<uint32_t>(found_.data() + t * cap + found_count_[t] - above(t));
+        row_start_[i + 1] =
+            static_cast<uint32_t>(found_.data() + t * cap + found_count_[t] - above(t));
         continue;
       }
       uint32_t kept = 0;
@@ -140,7 +140,8 @@ void NeighbourList::Update(const Settings& s, const std::vector<Vec3>& x,
       uint32_t* out = partner_.data() + row_start_[i];
       if (mover_index[i]) {
         const size_t t = mover_index[i] - 1;
-        std::copy(above(t), static_cast<const uint32_t*>(found_.data() + t * cap + found_count_[t]), out);
+        std::copy(above(t), static_cast<const uint32_t*>(found_.data() + t * cap + found_count_[t]),
+                  out);
         continue;
       }
       const uint32_t* in = incoming_.data() + incoming_start_[i];

@@ -46,10 +46,12 @@ PairSet Listed(const NeighbourList& list) {
 
 std::vector<uint32_t> Flat(const NeighbourList& list) {
   std::vector<uint32_t> out;
-  for (uint32_t i = 0; i <= list.RowsCount(); ++i) out.push_back(i < list.RowsCount() ? list.RowBegin(i) : list.RowEnd(i - 1));
+  for (uint32_t i = 0; i <= list.RowsCount(); ++i)
+    out.push_back(i < list.RowsCount() ? list.RowBegin(i) : list.RowEnd(i - 1));
   for (uint32_t k = 0; k < list.PairCount(); ++k) out.push_back(list.Partner(k));
   for (uint32_t j = 0; j < list.RowsCount(); ++j)
-    for (uint32_t e = list.ReverseBegin(j); e < list.ReverseEnd(j); ++e) out.push_back(list.ReverseEntry(e));
+    for (uint32_t e = list.ReverseBegin(j); e < list.ReverseEnd(j); ++e)
+      out.push_back(list.ReverseEntry(e));
   return out;
 }
 
@@ -63,7 +65,8 @@ Cloud MakeCloud(size_t n, uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0.0, 0.04), radius(0.001, 0.0015);
   Cloud c;
-  for (size_t i = 0; i < n; ++i) c.x.push_back({u(rng), u(rng), u(rng)}), c.r.push_back(radius(rng));
+  for (size_t i = 0; i < n; ++i)
+    c.x.push_back({u(rng), u(rng), u(rng)}), c.r.push_back(radius(rng));
   return c;
 }
 

@@ -14,7 +14,8 @@ using nlohmann::json;
 namespace {
 
 json PourBox() {
-  return json::parse(std::ifstream((demcal::testing::RepoRoot() / "examples" / "pour_box.json").string()));
+  return json::parse(
+      std::ifstream((demcal::testing::RepoRoot() / "examples" / "pour_box.json").string()));
 }
 
 std::string ErrorOf(const json& document) {
