@@ -15,6 +15,7 @@ struct PourOptions {
   double mass_rate_kg_s = 0.06;    // ≈ 5,700 spheres/s: 1,500 in the first 10,417 steps
   double stream_height_m = 0.06;   // top of the stream region above the base
   bool keep_fixed_pairs = false;   // the old treatment: fixed spheres swept like moving ones
+  double refresh_fraction = 0.25;  // Simulation::Options::neighbour_refresh_fraction
   uint64_t seed = 1;
 };
 

@@ -1,5 +1,7 @@
 #include "core/neighbour_list.h"
 
+#include "core/neighbour_list_search.h"
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
@@ -10,31 +12,23 @@
 
 namespace demcal::core {
 
-int NeighbourList::Grid::CellOf(const Vec3& x) const {
-  // Outliers are clamped into the edge cells, or wrapped on periodic axes.
-  auto index = [](double v, int n, bool wraps) {
-    const int k = static_cast<int>(std::floor(v));
-    if (wraps) return ((k % n) + n) % n;
-    return k < 0 ? 0 : (k >= n ? n - 1 : k);
-  };
-  const int ix = index((x.x - origin.x) * inv_cell.x, nx, wrap[0]);
-  const int iy = index((x.y - origin.y) * inv_cell.y, ny, wrap[1]);
-  const int iz = index((x.z - origin.z) * inv_cell.z, nz, wrap[2]);
-  return (iz * ny + iy) * nx + ix;
-}
-
 NeighbourList::Grid NeighbourList::MakeGrid(const Settings& s, const std::vector<Vec3>& x,
                                             size_t moving) const {
-  // A cell is at least the largest possible cut-off, so partners lie in the 27 nearest cells.
-  const double cutoff = 2.0 * s.max_radius_m + s.skin_m;
   // The grid spans the moving particles' bounding box (within the domain), so a few particles
   // in a large domain, or a stream over a wide frozen base, do not pay for millions of empty
   // cells. Fixed spheres more than a cut-off outside that box can be no one's partner.
   Vec3 lo = s.domain_max_m, hi = s.domain_min_m;
   for (size_t i = 0; i < moving; ++i)
     for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], x[i][a]), hi[a] = std::max(hi[a], x[i][a]);
+  return MakeGrid(s, lo, hi, moving < x.size());
+}
+
+NeighbourList::Grid NeighbourList::MakeGrid(const Settings& s, Vec3 lo, Vec3 hi,
+                                            bool margin_for_others) const {
+  // A cell is at least the largest possible cut-off, so partners lie in the 27 nearest cells.
+  const double cutoff = 2.0 * s.max_radius_m + s.skin_m;
   Grid g;
-  const double margin = moving < x.size() ? cutoff : 0;
+  const double margin = margin_for_others ? cutoff : 0;
   for (int a = 0; a < 3; ++a) {
     const bool periodic = s.periodic.IsPeriodic(a);
     g.reach_lo[a] = periodic ? -std::numeric_limits<double>::infinity() : lo[a] - cutoff;
@@ -77,46 +71,6 @@ void NeighbourList::BinParticles(const Grid& grid, const std::vector<Vec3>& x, s
     if (cell_of_particle_[i] >= 0) cell_particles_[fill[cell_of_particle_[i]]++] = i;
 }
 
-template <class Visit>
-void NeighbourList::ForEachCandidate(const Grid& grid, size_t i, const std::vector<Vec3>& x,
-                                     const std::vector<double>& r,
-                                     const std::vector<int>* body, double skin,
-                                     Visit&& visit) const {
-  const int own_body = body ? (*body)[i] : -1;
-  const PeriodicBox& box = periodic_;
-  const int c = cell_of_particle_[i];
-  const int home[3] = {c % grid.nx, (c / grid.nx) % grid.ny, c / (grid.nx * grid.ny)};
-  const int dims[3] = {grid.nx, grid.ny, grid.nz};
-  // Neighbour cells per axis, wrapped once here (not per cell: integer division is slow) on
-  // periodic axes; a periodic axis with fewer than three cells is searched whole, once.
-  int cells[3][3], count[3];
-  for (int a = 0; a < 3; ++a) {
-    count[a] = 0;
-    if (box.IsPeriodic(a) && !grid.wrap[a]) {
-      for (int k = 0; k < dims[a]; ++k) cells[a][count[a]++] = k;
-      continue;
-    }
-    for (int k = home[a] - 1; k <= home[a] + 1; ++k) {
-      if (grid.wrap[a]) cells[a][count[a]++] = (k + dims[a]) % dims[a];
-      else if (k >= 0 && k < dims[a]) cells[a][count[a]++] = k;
-    }
-  }
-  for (int cz = 0; cz < count[2]; ++cz) {
-    for (int cy = 0; cy < count[1]; ++cy) {
-      const int row = (cells[2][cz] * grid.ny + cells[1][cy]) * grid.nx;
-      for (int cx = 0; cx < count[0]; ++cx) {
-        const int cell = row + cells[0][cx];
-        for (uint32_t s = cell_start_[cell]; s < cell_start_[cell + 1]; ++s) {
-          const uint32_t j = cell_particles_[s];
-          if (j <= i || (own_body >= 0 && (*body)[j] == own_body)) continue;
-          const double reach = r[i] + r[j] + skin;
-          if (Norm2(box.MinimumImage(x[i] - x[j])) < reach * reach) visit(j);
-        }
-      }
-    }
-  }
-}
-
 bool NeighbourList::SearchOnce(const Grid& grid, const Settings& s, const std::vector<Vec3>& x,
                                const std::vector<double>& r, const std::vector<int>* body) {
   const size_t n = x.size();
@@ -130,7 +84,7 @@ bool NeighbourList::SearchOnce(const Grid& grid, const Settings& s, const std::v
         for (size_t i = range.begin(); ok && i != range.end(); ++i) {
           uint32_t* row = row_scratch_.data() + i * cap;
           uint32_t count = 0;
-          ForEachCandidate(grid, i, x, r, body, s.skin_m, [&](uint32_t j) {
+          ForEachCandidate<true>(grid, i, x, r, body, s.skin_m, [&](uint32_t j) {
             if (count < cap) row[count] = j;
             ++count;
           });
@@ -161,6 +115,7 @@ void NeighbourList::Build(const Settings& s, const std::vector<Vec3>& x,
   const size_t n = x.size();
   periodic_ = s.periodic;
   first_fixed_ = static_cast<uint32_t>(std::min(first_fixed, n));  // fixed rows stay empty
+  last_movers_ = first_fixed_;
   const Grid grid = MakeGrid(s, x, first_fixed_);
   BinParticles(grid, x, first_fixed_);
 
@@ -170,7 +125,7 @@ void NeighbourList::Build(const Settings& s, const std::vector<Vec3>& x,
     tbb::parallel_for(tbb::blocked_range<size_t>(0, first_fixed_), [&](const auto& range) {
       for (size_t i = range.begin(); i != range.end(); ++i) {
         uint32_t count = 0;
-        ForEachCandidate(grid, i, x, r, body, s.skin_m, [&](uint32_t) { ++count; });
+        ForEachCandidate<true>(grid, i, x, r, body, s.skin_m, [&](uint32_t) { ++count; });
         row_start_[i + 1] = count;
       }
     });
@@ -182,12 +137,18 @@ void NeighbourList::Build(const Settings& s, const std::vector<Vec3>& x,
     tbb::parallel_for(tbb::blocked_range<size_t>(0, first_fixed_), [&](const auto& range) {
       for (size_t i = range.begin(); i != range.end(); ++i) {
         uint32_t k = row_start_[i];
-        ForEachCandidate(grid, i, x, r, body, s.skin_m, [&](uint32_t j) { partner_[k++] = j; });
+        ForEachCandidate<true>(grid, i, x, r, body, s.skin_m, [&](uint32_t j) { partner_[k++] = j; });
         std::sort(partner_.begin() + row_start_[i], partner_.begin() + row_start_[i + 1]);
       }
     });
   }
 
+  reference_position_ = x;
+  Finish(s);
+}
+
+void NeighbourList::Finish(const Settings& s) {
+  const size_t n = row_start_.size() - 1;
   // Reverse index: for each j, the entries (in ascending order) whose partner is j.
   reverse_start_.assign(n + 1, 0);
   for (uint32_t j : partner_) ++reverse_start_[j + 1];
@@ -195,8 +156,6 @@ void NeighbourList::Build(const Settings& s, const std::vector<Vec3>& x,
   reverse_entry_.resize(partner_.size());
   std::vector<uint32_t> fill(reverse_start_.begin(), reverse_start_.end() - 1);
   for (uint32_t k = 0; k < partner_.size(); ++k) reverse_entry_[fill[partner_[k]]++] = k;
-
-  reference_position_ = x;
   half_skin2_ = 0.25 * s.skin_m * s.skin_m;
   ++builds_;
 }

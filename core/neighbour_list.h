@@ -9,8 +9,18 @@
 // are left out (LIGGGHTS: neigh_modify exclude type), so their rows are empty and only moving
 // particles are searched; a moving–fixed pair is listed in the moving particle's row.
 //
-// The list stays valid until some moving particle has moved more than skin/2 since the build
-// (NeedsRebuild). Thread-safety: Build() uses TBB internally; const methods are thread-safe.
+// Each particle has a reference position (where it was when its neighbourhood was last searched);
+// the list holds exactly the pairs with |p_i − p_j| < R_i + R_j + skin over reference positions
+// p, and it stays valid until some moving particle is more than skin/2 from its reference
+// (NeedsRebuild). Build() sets every reference to the current position and searches all moving
+// particles; Update() (the incremental rebuild) moves the references of the particles that
+// moved more than `refresh_fraction` × skin only ("movers"), searches around those, and keeps
+// the rows of the others: its cost follows what moved. The result depends on the positions
+// alone, never on the thread count. Thread-safety: Build()/Update() use TBB internally; const
+// methods are thread-safe.
+//
+// Usage (as Simulation does; `old` is the list of the previous build):
+//   if (old.NeedsRebuild(x)) list.Update(settings, x, r, nullptr, first_fixed, old, 0.25);
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -34,6 +44,17 @@ class NeighbourList {
   void Build(const Settings& settings, const std::vector<Vec3>& positions,
              const std::vector<double>& radii, const std::vector<int>* body = nullptr,
              size_t first_fixed = SIZE_MAX);
+  // Incremental rebuild from `previous` (the last build over the same slots): particles more
+  // than refresh_fraction × skin (in (0, 0.5]) from their reference are re-searched, the rows
+  // of the others are kept. Falls back to Build() when the slots changed (count, first fixed
+  // slot, settings) or more than half the moving particles moved. `previous` is not modified.
+  void Update(const Settings& settings, const std::vector<Vec3>& positions,
+              const std::vector<double>& radii, const std::vector<int>* body, size_t first_fixed,
+              const NeighbourList& previous, double refresh_fraction);
+  // Particles re-searched by the last build (all moving ones after Build()).
+  size_t LastMovers() const { return last_movers_; }
+  // Where particle i was when its neighbourhood was last searched.
+  const Vec3& ReferencePosition(size_t i) const { return reference_position_[i]; }
   bool NeedsRebuild(const std::vector<Vec3>& positions) const;
   // NeedsRebuild for periodic boxes: displacements by minimum image (a wrap is not a move).
   bool NeedsRebuild(const std::vector<Vec3>& positions, const PeriodicBox& box) const;
@@ -74,9 +95,13 @@ class NeighbourList {
   };
   // Over the first `moving` slots (the rest are fixed spheres).
   Grid MakeGrid(const Settings& s, const std::vector<Vec3>& positions, size_t moving) const;
+  // Over the box [lo, hi] (grown by a cut-off and binning others within reach if asked).
+  Grid MakeGrid(const Settings& s, Vec3 lo, Vec3 hi, bool margin_for_others) const;
+  // Reverse index, rebuild reference and count, after the rows are filled.
+  void Finish(const Settings& s);
   // Fixed spheres out of reach of every moving particle are not binned (cell −1).
   void BinParticles(const Grid& grid, const std::vector<Vec3>& positions, size_t moving);
-  template <class Visit>
+  template <bool kUpperOnly, class Visit>
   void ForEachCandidate(const Grid& grid, size_t i, const std::vector<Vec3>& x,
                         const std::vector<double>& r, const std::vector<int>* body, double skin,
                         Visit&& visit) const;
@@ -100,6 +125,11 @@ class NeighbourList {
                   const std::vector<double>& r, const std::vector<int>* body);
   std::vector<uint32_t> row_scratch_;
   uint32_t row_capacity_ = 32;
+  // Update() scratch: movers, their partners on both sides, partners gained by kept rows.
+  std::vector<uint8_t> is_mover_;
+  std::vector<uint32_t> movers_, found_, found_count_, incoming_start_, incoming_;
+  uint32_t found_capacity_ = 64;
+  size_t last_movers_ = 0;
 };
 
 }  // namespace demcal::core

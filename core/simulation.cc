@@ -198,8 +198,12 @@ void Simulation::RebuildNeighbours(bool allow_reorder) {
     system_.Permute(order);
   }
   ++rebuilds_since_reorder_;
-  list_.Build(list_settings_, p.position_m, p.radius_m, system_.clumps.Size() ? &p.body : nullptr,
-              moving);
+  const std::vector<int>* body = system_.clumps.Size() ? &p.body : nullptr;
+  if (order.empty() && options_.neighbour_refresh_fraction > 0)  // same slots: keep unmoved rows
+    list_.Update(list_settings_, p.position_m, p.radius_m, body, moving, spare_list_,
+                 options_.neighbour_refresh_fraction);
+  else
+    list_.Build(list_settings_, p.position_m, p.radius_m, body, moving);
   forces_.Rebuild(p, spare_list_, list_, order, walls_, list_settings_.skin_m);
 }
 

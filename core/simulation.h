@@ -38,6 +38,10 @@ class Simulation {
     // themselves, of the integration and of the force sweep (moving–fixed contacts unchanged).
     // false: they are swept like moving spheres with zero inverse mass (for comparisons).
     bool exclude_fixed_pairs = true;
+    // Incremental neighbour rebuilds (NeighbourList::Update): at a rebuild only the particles
+    // more than this fraction of the skin from their reference position are re-searched, the
+    // rows of the others are kept. Range (0, 0.5]; 0: every rebuild searches all particles.
+    double neighbour_refresh_fraction = 0.25;
   };
   // Called during Run() after every step whose step count (steps(), counted from the start of
   // the simulation, so a restarted run keeps the cadence) is a multiple of `every_steps`;

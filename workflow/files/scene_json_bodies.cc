@@ -203,7 +203,7 @@ void ParseParticles(JsonFields& top, core::Scene* scene, JsonStatus* status) {
   for (size_t i = 0; i < list->size() && status->ok(); ++i) {
     JsonFields f((*list)[i], IndexPath("particles", i),
                  {"species", "position_m", "velocity_m_s", "angular_velocity_rad_s", "diameter_m",
-                  "orientation"},
+                  "orientation", "fixed"},
                  status);
     core::ParticleSpec p;
     p.species = ReadNameReference(f, "species", "species", species, status);
@@ -213,6 +213,7 @@ void ParseParticles(JsonFields& top, core::Scene* scene, JsonStatus* status) {
     // Absent: drawn from the species' size distribution (core's diameter_m = 0).
     f.Number("diameter_m", &p.diameter_m, kOptional, Range::LeftOpen(0, 10, "m"));
     ReadOrientation(f, *scene, &p);
+    f.Bool("fixed", &p.fixed, kOptional);  // glued in place (a frozen base); spheres only
     scene->particles.push_back(p);
   }
 }

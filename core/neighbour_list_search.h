@@ -1,0 +1,66 @@
+#pragma once
+// Internal to the neighbour list (neighbour_list.cc, neighbour_list_update.cc): the cell of a
+// point and the candidate search over the 27 cells around a particle.
+#include <cmath>
+
+#include "core/neighbour_list.h"
+
+namespace demcal::core {
+
+inline int NeighbourList::Grid::CellOf(const Vec3& x) const {
+  // Outliers are clamped into the edge cells, or wrapped on periodic axes.
+  auto index = [](double v, int n, bool wraps) {
+    const int k = static_cast<int>(std::floor(v));
+    if (wraps) return ((k % n) + n) % n;
+    return k < 0 ? 0 : (k >= n ? n - 1 : k);
+  };
+  const int ix = index((x.x - origin.x) * inv_cell.x, nx, wrap[0]);
+  const int iy = index((x.y - origin.y) * inv_cell.y, ny, wrap[1]);
+  const int iz = index((x.z - origin.z) * inv_cell.z, nz, wrap[2]);
+  return (iz * ny + iy) * nx + ix;
+}
+
+// Visits every j in the cells around i with |x_i − x_j| < r_i + r_j + skin (minimum image),
+// j > i if kUpperOnly, else every j ≠ i; spheres of i's body are skipped.
+template <bool kUpperOnly, class Visit>
+void NeighbourList::ForEachCandidate(const Grid& grid, size_t i, const std::vector<Vec3>& x,
+                                     const std::vector<double>& r, const std::vector<int>* body,
+                                     double skin, Visit&& visit) const {
+  const int own_body = body ? (*body)[i] : -1;
+  const PeriodicBox& box = periodic_;
+  const int c = cell_of_particle_[i];
+  const int home[3] = {c % grid.nx, (c / grid.nx) % grid.ny, c / (grid.nx * grid.ny)};
+  const int dims[3] = {grid.nx, grid.ny, grid.nz};
+  // Neighbour cells per axis, wrapped once here (not per cell: integer division is slow) on
+  // periodic axes; a periodic axis with fewer than three cells is searched whole, once.
+  int cells[3][3], count[3];
+  for (int a = 0; a < 3; ++a) {
+    count[a] = 0;
+    if (box.IsPeriodic(a) && !grid.wrap[a]) {
+      for (int k = 0; k < dims[a]; ++k) cells[a][count[a]++] = k;
+      continue;
+    }
+    for (int k = home[a] - 1; k <= home[a] + 1; ++k) {
+      if (grid.wrap[a])
+        cells[a][count[a]++] = (k + dims[a]) % dims[a];
+      else if (k >= 0 && k < dims[a])
+        cells[a][count[a]++] = k;
+    }
+  }
+  for (int cz = 0; cz < count[2]; ++cz) {
+    for (int cy = 0; cy < count[1]; ++cy) {
+      const int row = (cells[2][cz] * grid.ny + cells[1][cy]) * grid.nx;
+      for (int cx = 0; cx < count[0]; ++cx) {
+        const int cell = row + cells[0][cx];
+        for (uint32_t s = cell_start_[cell]; s < cell_start_[cell + 1]; ++s) {
+          const uint32_t j = cell_particles_[s];
+          if ((kUpperOnly ? j <= i : j == i) || (own_body >= 0 && (*body)[j] == own_body)) continue;
+          const double reach = r[i] + r[j] + skin;
+          if (Norm2(box.MinimumImage(x[i] - x[j])) < reach * reach) visit(j);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace demcal::core
