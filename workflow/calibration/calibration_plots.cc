@@ -17,7 +17,6 @@ objectives::SvgPlot TargetsPlot(const CalibrationSummary& s) {
   SvgPlot plot{.title = "targets at the best candidate (standardised: (value - measured) / u)",
                .x_label = "target number (result.json targets, from 1)",
                .y_label = "standardised residual"};
-  PlotSeries measured{.label = "measured +- u", .color = "#d62728", .width_px = 3};
   for (size_t k = 0; k < s.residuals.size(); ++k) {
     const calibrate::TargetResidual& r = s.residuals[k];
     const double x = static_cast<double>(k + 1), noise = r.uncertainty > 0 ? r.sem / r.uncertainty : 0;
