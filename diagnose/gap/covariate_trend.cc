@@ -1,0 +1,66 @@
+#include "diagnose/gap/covariate_trend.h"
+
+#include <cmath>
+#include <set>
+
+#include "diagnose/gap/chi_square.h"
+
+namespace demcal::diagnose {
+namespace {
+
+// Slope of r on x with unit-variance r: var(slope) = 1 / Σ(x − x̄)².
+bool Slope(const std::vector<double>& x, const std::vector<double>& r, CovariateTrend* out) {
+  const double n = static_cast<double>(x.size());
+  double mx = 0, mr = 0;
+  for (size_t i = 0; i < x.size(); ++i) mx += x[i] / n, mr += r[i] / n;
+  double sxx = 0, sxr = 0;
+  for (size_t i = 0; i < x.size(); ++i) sxx += (x[i] - mx) * (x[i] - mx), sxr += (x[i] - mx) * (r[i] - mr);
+  if (!(sxx > 0)) return false;
+  out->points = static_cast<int>(x.size());
+  out->slope = sxr / sxx;
+  out->slope_sigma = 1 / std::sqrt(sxx);
+  const double z = out->slope / out->slope_sigma;
+  out->p_value = ChiSquareSurvival(z * z, 1);
+  return true;
+}
+
+void AddTrend(const std::vector<Observation>& obs, const std::string& column, const std::string& observable,
+              double significance, std::vector<CovariateTrend>* out) {
+  std::vector<double> x, r;
+  std::set<double> distinct;
+  for (const Observation& o : obs) {
+    double value = 0;
+    if (observable != "all" && o.observable != observable) continue;
+    if (!calibrate::ConditionNumber(o.condition, column, &value)) continue;
+    x.push_back(value);
+    r.push_back(o.Residual());
+    distinct.insert(value);
+  }
+  if (x.size() < 3 || distinct.size() < 2) return;
+  CovariateTrend t{column, observable};
+  if (!Slope(x, r, &t)) return;
+  t.significant = t.p_value < significance;
+  out->push_back(t);
+}
+
+}  // namespace
+
+std::vector<CovariateTrend> FindTrends(const std::vector<Observation>& observations, double significance) {
+  std::set<std::string> columns, observables;
+  for (const Observation& o : observations) {
+    observables.insert(o.observable);
+    for (const auto& [column, cell] : o.condition) {
+      double ignored = 0;
+      if (calibrate::ParseConditionNumber(cell, &ignored)) columns.insert(column);
+    }
+  }
+  std::vector<CovariateTrend> trends;
+  for (const std::string& column : columns) {
+    AddTrend(observations, column, "all", significance, &trends);
+    for (const std::string& observable : observables)
+      AddTrend(observations, column, observable, significance, &trends);
+  }
+  return trends;
+}
+
+}  // namespace demcal::diagnose
