@@ -8,6 +8,7 @@
 
 #include "apps/calibrate_command.h"
 #include "apps/command.h"
+#include "apps/diagnose_command.h"
 #include "apps/experiment_command.h"
 #include "apps/simulate_command.h"
 #include "core/version.h"
@@ -19,6 +20,7 @@ constexpr demcal::apps::CommandFactory kCommands[] = {
     &demcal::apps::AddSimulateCommand,
     &demcal::apps::AddExperimentCommand,
     &demcal::apps::AddCalibrateCommand,
+    &demcal::apps::AddDiagnoseCommand,
 };
 
 }  // namespace
