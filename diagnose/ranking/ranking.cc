@@ -1,6 +1,7 @@
 #include "diagnose/ranking/ranking.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <sstream>
 
@@ -29,7 +30,8 @@ Ranking RankCandidates(const std::vector<RankingEntry>& entries) {
     << entries[r.winner].evidence.lr_p_value << ")";
   for (int i : r.order) {
     if (i == r.winner) continue;
-    if (entries[i].evidence.delta_bic - entries[r.winner].evidence.delta_bic < kBicIndistinct) {
+    if (entries[i].simulated &&
+        std::fabs(entries[i].evidence.delta_bic - entries[r.winner].evidence.delta_bic) < kBicIndistinct) {
       r.distinguished = false;
       m << "; not told apart from " << entries[i].key << " (delta BIC " << entries[i].evidence.delta_bic << ")";
     }

@@ -5,7 +5,8 @@
 // real one (simulated at the refitted point) when it was made, else the linearised one; only a
 // refit that was simulated can win (a linear prediction is a shortlist, not evidence). When the
 // runner-up is within kBicIndistinct of the winner the two are not told apart and the ranking
-// says so (`distinguished` false); the winner is still the lower ΔBIC.
+// says so (`distinguished` false; only simulated refits are compared); the winner is still the
+// lower ΔBIC.
 //
 //   Ranking r = RankCandidates(entries, 0.01);
 //   if (r.winner >= 0) entries[r.winner].key ...
