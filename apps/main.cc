@@ -9,6 +9,7 @@
 #include "apps/calibrate_command.h"
 #include "apps/cohesion_command.h"
 #include "apps/command.h"
+#include "apps/diagnose_command.h"
 #include "apps/experiment_command.h"
 #include "apps/reproduce_command.h"
 #include "apps/simulate_command.h"
@@ -23,6 +24,7 @@ constexpr demcal::apps::CommandFactory kCommands[] = {
     &demcal::apps::AddCalibrateCommand,
     &demcal::apps::AddReproduceCommand,
     &demcal::apps::AddCohesionCommand,
+    &demcal::apps::AddDiagnoseCommand,
 };
 
 }  // namespace
