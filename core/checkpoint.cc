@@ -34,7 +34,7 @@ std::vector<FingerprintPart> Simulation::Fingerprint() const {
 }
 
 template <class A>
-void Simulation::SerializeState(A& a) {
+void Simulation::SerializeState(A& a, const std::vector<std::string>& may_differ) {
   std::vector<FingerprintPart> parts;
   if (a.writing()) parts = Fingerprint();
   uint64_t count = parts.size();
@@ -51,7 +51,7 @@ void Simulation::SerializeState(A& a) {
     if (dt != dt_)
       throw CheckpointRefusal("written for another time step: " + Number(dt) +
                               " s in the checkpoint, " + Number(dt_) + " s in this scene");
-    const std::string differ = DifferingParts(parts, Fingerprint());
+    const std::string differ = DifferingParts(parts, Fingerprint(), may_differ);
     if (!differ.empty())
       throw CheckpointRefusal("written for another scene: " + differ +
                               (differ.find(',') == std::string::npos ? " differs" : " differ"));
@@ -71,31 +71,33 @@ void Simulation::SerializeState(A& a) {
 
 bool Simulation::SaveCheckpoint(const std::string& path, std::string* error) const {
   Archive a = Archive::ForWriting();
-  const_cast<Simulation*>(this)->SerializeState(a);  // writing leaves the state unchanged
+  const_cast<Simulation*>(this)->SerializeState(a, {});  // writing leaves the state unchanged
   return WriteCheckpointFile(path, a.bytes(), error);
 }
 
-bool Simulation::LoadCheckpoint(const std::string& path, std::string* error) {
+bool Simulation::LoadCheckpoint(const std::string& path, std::string* error,
+                                const std::vector<std::string>& may_differ) {
   std::string payload, why;
   if (!ReadCheckpointFile(path, &payload, &why)) {
     if (error) *error = path + ": checkpoint: " + why;
     return false;  // the state is untouched
   }
-  return LoadCheckpointPayload(payload, path, error);
+  return LoadCheckpointPayload(payload, path, error, may_differ);
 }
 
 bool Simulation::LoadCheckpointBytes(const std::string& file_bytes, const std::string& name,
-                                     std::string* error) {
+                                     std::string* error, const std::vector<std::string>& may_differ) {
   std::string payload, why;
   if (!UnframeCheckpoint(file_bytes, &payload, &why)) {
     if (error) *error = name + ": checkpoint: " + why;
     return false;
   }
-  return LoadCheckpointPayload(payload, name, error);
+  return LoadCheckpointPayload(payload, name, error, may_differ);
 }
 
 bool Simulation::LoadCheckpointPayload(const std::string& payload, const std::string& name,
-                                       std::string* error) {
+                                       std::string* error,
+                                       const std::vector<std::string>& may_differ) {
   auto refuse = [&](const std::string& why) {
     if (error) *error = name + ": checkpoint: " + why;
     return false;
@@ -107,7 +109,7 @@ bool Simulation::LoadCheckpointPayload(const std::string& payload, const std::st
   initialized_ = false;
   Archive a = Archive::ForReading(payload);
   try {
-    SerializeState(a);
+    SerializeState(a, may_differ);
   } catch (const std::exception& e) {
     return refuse(e.what());
   }

@@ -1,5 +1,6 @@
 #include "core/scene_fingerprint.h"
 
+#include <algorithm>
 #include <variant>
 
 #include "core/fnv1a.h"
@@ -104,10 +105,14 @@ std::vector<FingerprintPart> SceneFingerprint(const Scene& s, double timestep_s,
 }
 
 std::string DifferingParts(const std::vector<FingerprintPart>& stored,
-                           const std::vector<FingerprintPart>& current) {
+                           const std::vector<FingerprintPart>& current,
+                           const std::vector<std::string>& ignore) {
   std::string out;
+  std::vector<std::string> noted(ignore);
   auto note = [&](const std::string& name) {
-    if (out.find(name) == std::string::npos) out += (out.empty() ? "" : ", ") + name;
+    if (std::find(noted.begin(), noted.end(), name) != noted.end()) return;
+    noted.push_back(name);
+    out += (out.empty() ? "" : ", ") + name;
   };
   for (const FingerprintPart& c : current) {
     bool same = false;

@@ -31,8 +31,9 @@ std::vector<FingerprintPart> SceneFingerprint(const Scene& scene, double timeste
                                               double skin_m);
 
 // The names of the parts of `stored` that differ from `current` (a part missing on either side
-// counts as differing), joined by ", "; empty if they match.
+// counts as differing), joined by ", ", leaving out those named in `ignore`; empty if they match.
 std::string DifferingParts(const std::vector<FingerprintPart>& stored,
-                           const std::vector<FingerprintPart>& current);
+                           const std::vector<FingerprintPart>& current,
+                           const std::vector<std::string>& ignore = {});
 
 }  // namespace demcal::core

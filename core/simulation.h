@@ -16,6 +16,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <tbb/task_arena.h>
 
@@ -64,12 +65,15 @@ class Simulation {
   // checksum), the scene fingerprint and time step (core/scene_fingerprint.h), and every count
   // and index of the state before use; false with "PATH: checkpoint: <failed check>". A file
   // refused before its payload leaves the simulation untouched; one refused later leaves it
-  // uninitialised (Run() refuses to run it).
+  // uninitialised (Run() refuses to run it). `may_differ`: fingerprint parts allowed to differ
+  // from this scene's (a hand-over to a changed scene, e.g. {"wall motion"} for a gate opened
+  // later); never the time step.
   bool SaveCheckpoint(const std::string& path, std::string* error) const;
-  bool LoadCheckpoint(const std::string& path, std::string* error);
+  bool LoadCheckpoint(const std::string& path, std::string* error,
+                      const std::vector<std::string>& may_differ = {});
   // The same from the bytes of a whole checkpoint file; `name` stands for the file in messages.
   bool LoadCheckpointBytes(const std::string& file_bytes, const std::string& name,
-                           std::string* error);
+                           std::string* error, const std::vector<std::string>& may_differ = {});
 
   // Changes the body-force field for subsequent steps (load-controlled tests, tilting).
   void SetGravity(const Vec3& gravity_m_s2) { scene_.gravity_m_s2 = gravity_m_s2; }
@@ -110,10 +114,10 @@ class Simulation {
   void AddWallWork(double time_s);
   void ComputeForces(double time_s);
   template <class A>
-  void SerializeState(A& a);
+  void SerializeState(A& a, const std::vector<std::string>& may_differ);
   std::vector<FingerprintPart> Fingerprint() const;
   bool LoadCheckpointPayload(const std::string& payload, const std::string& name,
-                             std::string* error);
+                             std::string* error, const std::vector<std::string>& may_differ);
   // Every count, index and value of a just-restored state (core/checkpoint_checks_*.cc).
   bool CheckRestoredState(std::string* error) const;
   bool CheckRestoredBodies(std::string* error) const;

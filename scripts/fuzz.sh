@@ -10,6 +10,8 @@ cd "$(dirname "$0")/.."
 build=${FUZZ_BUILD_DIR:-build-fuzz}
 seconds=${FUZZ_SECONDS:-600}
 jobs=${FUZZ_JOBS:-1}
+parallel=()  # one job runs in this process (its statistics printed here)
+((jobs > 1)) && parallel=(-jobs="$jobs" -workers="$jobs")
 harnesses=("$@")
 ((${#harnesses[@]})) ||
   harnesses=(fuzz_stl fuzz_json_document fuzz_scene_json fuzz_experiment_json fuzz_measurement_table
@@ -39,7 +41,7 @@ for h in "${harnesses[@]}"; do
   echo "== $h: $seconds s"
   (cd "$build" && ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 \
      "./$h" -max_total_time="$seconds" -max_len="${FUZZ_MAX_LEN:-65536}" -timeout=10 -rss_limit_mb=2048 \
-     -jobs="$jobs" -workers="$jobs" -print_final_stats=1 "../$corpus" 2>&1 |
+     ${parallel[@]+"${parallel[@]}"} -print_final_stats=1 "../$corpus" 2>&1 |
      grep -E "stat::number_of_executed_units|Done|ERROR|SUMMARY|crash-|timeout-|oom-" || true)
 done
 if ls "$build"/crash-* "$build"/timeout-* "$build"/oom-* >/dev/null 2>&1; then
