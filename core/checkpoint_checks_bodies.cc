@@ -53,8 +53,23 @@ bool Simulation::CheckRestoredBodies(std::string* error) const {
   if (!SameSize(n, p.velocity_m_s, p.angular_velocity_rad_s, p.force_N, p.torque_N_m, p.radius_m,
                 p.mass_kg, p.inv_mass, p.inv_inertia, p.species, p.material, p.body, p.id))
     return Fail("particles: the per-particle arrays differ in length", error);
-  const double max_radius = 0.5 * scene_.MaxDiameter() * (1 + 1e-9);
   const int species = static_cast<int>(scene_.species.size());
+  // Largest sphere of each species: half its largest diameter (its size distribution's, or an
+  // explicit particle's), or for a clump species its largest member at that size.
+  std::vector<double> max_diameter(species), max_radius(species);
+  for (int k = 0; k < species; ++k) max_diameter[k] = scene_.species[k].size.MaxDiameter();
+  for (const ParticleSpec& q : scene_.particles)
+    max_diameter[q.species] = std::max(max_diameter[q.species], q.diameter_m);
+  for (int k = 0; k < species; ++k) {
+    const double d = max_diameter[k];
+    max_radius[k] = 0.5 * d;
+    if (system_.IsClump(k)) {
+      max_radius[k] = 0;
+      for (const ClumpSphere& m : system_.shapes[k].spheres)
+        max_radius[k] = std::max(max_radius[k], m.radius_m * d);
+    }
+    max_radius[k] *= 1 + 1e-9;
+  }
   for (size_t i = 0; i < n; ++i) {
     std::ostringstream at;
     at << "particles: slot " << i << " (id " << p.id[i] << "): ";
@@ -66,8 +81,9 @@ bool Simulation::CheckRestoredBodies(std::string* error) const {
       return Fail(at.str() + "material index " + std::to_string(p.material[i]) +
                       " is not its species' material",
                   error);
-    if (!(p.radius_m[i] > 0 && p.radius_m[i] <= max_radius)) {
-      at << "radius " << p.radius_m[i] << " m outside (0, " << max_radius << "] m";
+    if (!(p.radius_m[i] > 0 && p.radius_m[i] <= max_radius[p.species[i]])) {
+      at << "radius " << p.radius_m[i] << " m outside (0, " << max_radius[p.species[i]]
+         << "] m of its species";
       return Fail(at.str(), error);
     }
     if (!(p.mass_kg[i] > 0 && Finite(p.mass_kg[i]) && p.inv_mass[i] >= 0 && Finite(p.inv_mass[i]) &&
