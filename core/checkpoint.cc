@@ -8,8 +8,9 @@
 
 namespace demcal::core {
 namespace {
-// 2: mesh wall histories, wall loads; 3: JKR radius; 4: fixed spheres last, out of the list
-constexpr char kMagic[] = "demcal-checkpoint/4";
+// 2: mesh wall histories, wall loads; 3: JKR radius; 4: fixed spheres last, out of the list;
+// 5: sink tallies, factory region lift
+constexpr char kMagic[] = "demcal-checkpoint/5";
 }  // namespace
 
 template <class A>
@@ -30,6 +31,8 @@ void Simulation::SerializeState(A& a) {
   list_.Serialize(a);
   forces_.Serialize(a);
   for (ParticleFactory& f : factories_) f.Serialize(a);
+  for (SinkReport& r : sink_reports_) r.Serialize(a);
+  a.Value(last_sink_pass_step_);
 }
 
 bool Simulation::SaveCheckpoint(const std::string& path, std::string* error) const {
@@ -68,6 +71,7 @@ bool Simulation::LoadCheckpoint(const std::string& path, std::string* error) {
     return false;
   }
   PlaceWalls(time_s_);
+  WallRemovedDuringStep(time_s_);
   return true;
 }
 
