@@ -8,9 +8,11 @@
 #              16 mm orifice, plugged for 0.4 s, then 1.2 s of discharge (~66,700 steps)
 # Each case: demcal simulate SCENE --threads 1 and liggghts -in in.CASE (mpirun -np 1), one after
 # the other, REPS times (codes alternate). Wall and CPU (user+sys) seconds of each whole process
-# (setup and insertion included, both codes alike) under /usr/bin/time. Prints the medians and,
-# as the LAST two lines:
-#   pour throughput ratio demcal/liggghts (1 thread): X.XX       (LIGGGHTS wall / demcal wall)
+# (setup and insertion included, both codes alike) under /usr/bin/time. The ratio is LIGGGHTS CPU
+# seconds / demcal CPU seconds for the same simulated steps: on the shared 2-core machine the
+# wall time of a single-threaded job follows the other load, its CPU time much less (the wall
+# ratio is printed beside it). Prints the medians and, as the LAST two lines:
+#   pour throughput ratio demcal/liggghts (1 thread): X.XX
 #   discharge throughput ratio demcal/liggghts (1 thread): X.XX
 # ("n/a" when a demcal run failed or the binary is missing).
 #
@@ -82,7 +84,7 @@ run_liggghts() {  # $1 case, $2 rep
     die "LIGGGHTS $1 run $2 failed (log: $WORK/lig.$1.$2.log)"
   local atoms
   atoms=$(awk '/^Loop time of/ { n = $12 } END { print n }' "log.$1.$2")
-  log "  liggghts $1 rep $2: $WALL s wall, $CPU s CPU, $atoms atoms at the end [other load $BG_LOAD cores]"
+  log "  liggghts $1 rep $2: $WALL s wall, $CPU s CPU, $atoms atoms at the end; last run: $(awk '/^(Pair|Neigh|Other) +time/ { v[$1] = $NF } END { gsub(/[()]/, "", v["Pair"]); gsub(/[()]/, "", v["Neigh"]); gsub(/[()]/, "", v["Other"]); printf "pair %.0f %%, neigh %.0f %%, other %.0f %%", v["Pair"], v["Neigh"], v["Other"] }' "log.$1.$2") [other load $BG_LOAD cores]"
   LIG_WALL[$1]="${LIG_WALL[$1]:-} $WALL"; LIG_CPU[$1]="${LIG_CPU[$1]:-} $CPU"
 }
 run_demcal() {    # $1 case, $2 rep
@@ -91,7 +93,9 @@ run_demcal() {    # $1 case, $2 rep
     log "WARNING: demcal $1 run $2 failed (log: $WORK/dem.$1.$2.log)"; DEM_FAILED[$1]=1; return 0
   fi
   local n
-  n=$(python3 -c "import json,sys; s=json.load(open(sys.argv[1])); print(s['particles'], s['termination'])" "out.$1.$2/summary.json")
+  n=$(python3 -c "import json,sys; s=json.load(open(sys.argv[1])); p=s['phase_wall_time_s']; t=sum(p.values()) or 1
+print(s['particles'], 'bodies at the end,', s['termination'] + ',', s['neighbour_rebuilds'], 'rebuilds; phases:',
+      ', '.join('%s %.0f %%' % (k[:-2], 100 * v / t) for k, v in p.items()))" "out.$1.$2/summary.json")
   log "  demcal   $1 rep $2: $WALL s wall, $CPU s CPU, $n [other load $BG_LOAD cores]"
   DEM_WALL[$1]="${DEM_WALL[$1]:-} $WALL"; DEM_CPU[$1]="${DEM_CPU[$1]:-} $CPU"
 }
@@ -117,8 +121,8 @@ for c in $CASES; do
   if [[ $HAVE_DEMCAL == 1 && -z "${DEM_FAILED[$c]:-}" ]]; then
     # shellcheck disable=SC2086
     dw=$(median ${DEM_WALL[$c]}); dc=$(median ${DEM_CPU[$c]})
-    echo "$c: demcal   ${dw} s wall, ${dc} s CPU (CPU ratio $(ratio "$lc" "$dc"))"
-    RATIO[$c]=$(ratio "$lw" "$dw")
+    echo "$c: demcal   ${dw} s wall, ${dc} s CPU (wall ratio liggghts/demcal $(ratio "$lw" "$dw"))"
+    RATIO[$c]=$(ratio "$lc" "$dc")
   fi
 done
 echo "note: LIGGGHTS warns hertz/history/epsd2 is not in its compiled fast-path whitelist (figures include that)"
