@@ -36,6 +36,8 @@ nlohmann::ordered_json RunJson(int replicate, const AorRun& run) {
   j["particles"] = run.particles;
   j["settle_time_s"] = run.settle.settle_time_s;
   j["specific_kinetic_J_kg"] = run.settle.specific_kinetic_J_kg;
+  j["settled_by"] = run.settle.settled_by.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(run.settle.settled_by);
+  j["surface_change_d"] = run.settle.surface_change_d >= 0 ? nlohmann::ordered_json(run.settle.surface_change_d) : nlohmann::ordered_json();
   j["wall_time_s"] = run.wall_time_s;
   nlohmann::ordered_json flanks = nlohmann::ordered_json::array();
   for (const objectives::FlankFit& f : run.angle.flanks)

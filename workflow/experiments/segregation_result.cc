@@ -167,6 +167,8 @@ ordered_json RunJson(int replicate, const SegregationRun& run) {
   j["funnel_empty_s"] = run.funnel_emptied ? ordered_json(run.empty_s) : nullptr;
   j["discharge_time_s"] = run.funnel_emptied ? ordered_json(run.discharge_time_s) : nullptr;
   j["settle_time_s"] = run.settle.settle_time_s;
+  j["settled_by"] = run.settle.settled_by.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(run.settle.settled_by);
+  j["surface_change_d"] = run.settle.surface_change_d >= 0 ? nlohmann::ordered_json(run.settle.surface_change_d) : nlohmann::ordered_json();
   j["wall_time_s"] = run.wall_time_s;
   ordered_json tracked = ordered_json::array();
   for (const objectives::TrackedGranule& g : run.tracked) tracked.push_back(TrackedJson(g));
