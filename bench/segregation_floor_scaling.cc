@@ -12,7 +12,6 @@
 //
 //   build/bench/demcal_segregation_floor [--seed 1] [--shuffles 200] [--scales 5,3,2,1.5,1]
 #include <CLI/CLI.hpp>
-
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -83,8 +82,9 @@ int main(int argc, char** argv) {
   app.add_option("--shuffles", shuffles, "label shuffles per heap")->check(CLI::Range(20, 100000));
   app.add_option("--scales", scales, "coarse-graining factors")->delimiter(',');
   CLI11_PARSE(app, argc, argv);
-  std::printf("# SYNTHETIC random mixtures (recipe: bench/segregation_floor_scaling.cc, seed %llu)\n",
-              static_cast<unsigned long long>(seed));
+  std::printf(
+      "# SYNTHETIC random mixtures (recipe: bench/segregation_floor_scaling.cc, seed %llu)\n",
+      static_cast<unsigned long long>(seed));
   std::printf(
       "size_scale,grains,ep_grains,s_n_3d,s_n_3d_floor_mean,s_n_3d_floor_low,s_n_3d_floor_high,"
       "s_n_2d_front,s_n_2d_front_floor_mean,s_n_2d_front_floor_low,s_n_2d_front_floor_high,"
@@ -100,8 +100,8 @@ int main(int argc, char** argv) {
     SegregationOptions options;
     options.random.seed = core::DeriveSeed(seed, 7);
     std::string error;
-    const auto a = AnalyseSegregationHeap(heap, bins, 3, options,
-                                          HeapExtent{0, kBaseM, 0, kHeightM}, &error);
+    const auto a =
+        AnalyseSegregationHeap(heap, bins, 3, options, HeapExtent{0, kBaseM, 0, kHeightM}, &error);
     SegregationFloorOptions floor_options;
     floor_options.shuffles = shuffles;
     floor_options.seed = core::DeriveSeed(seed, 11);

@@ -64,7 +64,9 @@ def stats(values):
 
 
 def fmt(x):
-    return "" if x is None else ("%.6g" % x)
+    if x is None:
+        return ""
+    return str(x) if isinstance(x, int) else ("%.6g" % x)
 
 
 def write_csv(path, header, rows):

@@ -96,8 +96,8 @@ RegionFloor SummariseRegion(const RegionSegregation& measured, const RegionDraws
                             double band) {
   RegionFloor region{measured.range, {}};
   for (size_t s = 0; s < draws.size(); ++s)
-    region.species.push_back({static_cast<int>(s), Summarise(draws[s].first, band),
-                              Summarise(draws[s].second, band)});
+    region.species.push_back(
+        {static_cast<int>(s), Summarise(draws[s].first, band), Summarise(draws[s].second, band)});
   return region;
 }
 

@@ -27,7 +27,8 @@ double LargestCov(const HeapSegregation& heap, const HeapFloor* floor, bool by_m
   double top = 0;
   for (int layer = 0; floor && layer < static_cast<int>(floor->layers.size()); ++layer)
     for (size_t s = 0; s < floor->layers[layer].species.size(); ++s)
-      if (const IndexFloor* f = PickFloor(floor, layer, s, by_mass)) top = std::max(top, f->cov_high);
+      if (const IndexFloor* f = PickFloor(floor, layer, s, by_mass))
+        top = std::max(top, f->cov_high);
   for (const RegionSegregation& layer : heap.layers)
     for (const SpeciesSegregation& s : layer.species) top = std::max(top, Pick(s, by_mass).cov_m);
   for (const SpeciesSegregation& s : heap.whole.species)

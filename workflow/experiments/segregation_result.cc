@@ -53,8 +53,8 @@ ordered_json FloorStat(const std::vector<SegregationRun>& runs, int species, con
   auto average = [](const std::vector<double>& v) {
     return v.empty() ? ordered_json(nullptr) : ordered_json(objectives::Summarise(v).mean);
   };
-  return {{"mean", average(mean)}, {"low", average(low)}, {"high", average(high)},
-          {"n", mean.size()}};
+  return {
+      {"mean", average(mean)}, {"low", average(low)}, {"high", average(high)}, {"n", mean.size()}};
 }
 
 const objectives::IndexFloor* FloorNumber(const objectives::RegionFloor& region, int species) {
@@ -100,11 +100,12 @@ ordered_json SpeciesJson(const std::vector<SegregationRun>& runs, int k, const s
   j["s_n_3d"] = IndexStat(runs, k, whole, &SegregationIndex::s_n);
   j["mean_mass_fraction_3d"] = IndexStat(runs, k, whole, &SegregationIndex::mean_fraction);
   using objectives::HeapFloor;
-  AddFloor(runs, k, "2d_front", [](const HeapFloor& f, int s) { return FloorNumber(f.front, s); },
-           &j);
-  AddFloor(runs, k, "2d_back", [](const HeapFloor& f, int s) { return FloorNumber(f.back, s); },
-           &j);
-  AddFloor(runs, k, "3d", [](const HeapFloor& f, int s) { return FloorMass(f.whole, s); }, &j);
+  AddFloor(
+      runs, k, "2d_front", [](const HeapFloor& f, int s) { return FloorNumber(f.front, s); }, &j);
+  AddFloor(
+      runs, k, "2d_back", [](const HeapFloor& f, int s) { return FloorNumber(f.back, s); }, &j);
+  AddFloor(
+      runs, k, "3d", [](const HeapFloor& f, int s) { return FloorMass(f.whole, s); }, &j);
   ordered_json per_layer = ordered_json::array();
   for (int layer = 0; layer < layers; ++layer) {
     const IndexOf of = [layer](const HeapSegregation& h, int s) -> const SegregationIndex* {
@@ -184,8 +185,9 @@ ordered_json SegregationResultJson(const objectives::SegregationSettings& settin
   ordered_json result;
   result["basis"] = {{"2d", "number fraction"}, {"3d", "mass fraction"}};
   result["noise_floor"] = {
-      {"method", "species labels shuffled among the heap's grains in bins (same positions and "
-                 "counts); CoV and S_n = CoV/CoV_r(measured) of each shuffled heap"},
+      {"method",
+       "species labels shuffled among the heap's grains in bins (same positions and "
+       "counts); CoV and S_n = CoV/CoV_r(measured) of each shuffled heap"},
       {"shuffles", settings.floor.shuffles},
       {"band", settings.floor.band}};
   result["funnel"] = settings.funnel.enabled;

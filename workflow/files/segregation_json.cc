@@ -92,8 +92,7 @@ void ParseFields(JsonFields& f, const core::Scene& model, SegregationSettings* s
   if (const json* settle = f.Object("settle", kOptional))
     ParseSettle(*settle, "segregation.settle", &s->settle, status);
   if (const json* bins = f.Object("bins", kOptional)) ParseBins(*bins, &s->bins, status);
-  if (const json* index = f.Object("segregation_index", kOptional))
-    ParseIndex(*index, s, status);
+  if (const json* index = f.Object("segregation_index", kOptional)) ParseIndex(*index, s, status);
   if (const json* tracking = f.Object("tracking", kOptional))
     ParseTracking(*tracking, model, &s->tracking, status);
   f.Number("max_wall_time_s", &s->max_wall_time_s, kOptional, Range::Closed(0, 1e7, "s"));

@@ -24,8 +24,8 @@ Measured Measure(const Snapshot& snap, const SyntheticHeap& heap, uint64_t seed,
   std::string error;
   SegregationOptions options;
   options.random.seed = seed;
-  auto analysis = AnalyseSegregationHeap(
-      snap, {}, 3, options, HeapExtent{0.0, heap.width_m, 0.0, heap.height_m}, &error);
+  auto analysis = AnalyseSegregationHeap(snap, {}, 3, options,
+                                         HeapExtent{0.0, heap.width_m, 0.0, heap.height_m}, &error);
   INFO(error);
   REQUIRE(analysis);
   SegregationFloorOptions floor_options;
@@ -53,12 +53,12 @@ TEST_CASE("a random mixture reads as within its noise floor", "[unit]") {
   int inside_ep_whole = 0, inside_ep_mass = 0, inside_taed_front = 0;
   for (int seed = 1; seed <= 10; ++seed) {
     const Measured m = Measure(MakeHeap(heap, 6000, seed, RandomSpecies(0.3, 0.05)), heap, seed);
-    inside_ep_whole += Within(m.analysis.indices.whole.species[2].number.s_n,
-                              m.floor.whole.species[2].number);
+    inside_ep_whole +=
+        Within(m.analysis.indices.whole.species[2].number.s_n, m.floor.whole.species[2].number);
     inside_ep_mass +=
         Within(m.analysis.indices.whole.species[2].mass.s_n, m.floor.whole.species[2].mass);
-    inside_taed_front += Within(m.analysis.indices.front.species[1].number.s_n,
-                                m.floor.front.species[1].number);
+    inside_taed_front +=
+        Within(m.analysis.indices.front.species[1].number.s_n, m.floor.front.species[1].number);
     const IndexFloor& bp = m.floor.whole.species[0].number;
     CHECK(bp.shuffles_used == 100);
     CHECK(bp.s_n_mean == Approx(1.0).margin(0.12));

@@ -140,6 +140,7 @@ TEST_CASE("the writers create files and report an unwritable path", "[unit]") {
   CHECK(std::filesystem::file_size(dir / "face.svg") > 1000);
   CHECK_FALSE(WriteBinCsv("/nonexistent_dir/bins.csv", f.grid, f.counts, f.names, &error));
   CHECK(error.find("/nonexistent_dir/bins.csv") != std::string::npos);
-  CHECK_FALSE(WriteCovLayerPlotSvg("/nonexistent_dir/cov.svg", f.seg, nullptr, f.names, {}, &error));
+  CHECK_FALSE(
+      WriteCovLayerPlotSvg("/nonexistent_dir/cov.svg", f.seg, nullptr, f.names, {}, &error));
   std::filesystem::remove_all(dir);
 }

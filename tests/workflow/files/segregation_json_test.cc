@@ -69,6 +69,10 @@ TEST_CASE("segregation section errors name the field", "[unit]") {
              Catch::Contains("segregation.bins.layers"));
   CHECK_THAT(ErrorAfter([](nlohmann::json& s) { s["segregation_index"]["draw"] = "uniform"; }),
              Catch::Contains("segregation.segregation_index.draw"));
+  CHECK_THAT(ErrorAfter([](nlohmann::json& s) { s["segregation_index"]["floor_shuffles"] = 5; }),
+             Catch::Contains("segregation.segregation_index.floor_shuffles"));
+  CHECK_THAT(ErrorAfter([](nlohmann::json& s) { s["segregation_index"]["floor_band"] = 1; }),
+             Catch::Contains("segregation.segregation_index.floor_band"));
   CHECK_THAT(ErrorAfter([](nlohmann::json& s) { s["tracking"]["species"] = "salt"; }),
              Catch::Contains("segregation.tracking.species"));
   CHECK_THAT(ErrorAfter([](nlohmann::json& s) { s["tracking"]["start_fraction"] = 1; }),
