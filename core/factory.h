@@ -82,6 +82,9 @@ class ParticleFactory {
   // The heap top under `region` (see the file comment); −infinity if no grain qualifies.
   double HeapTop(const Particles& spheres, const InsertionRegion& region) const;
 
+  // After a checkpoint load at time_s: progress finite and the next batch due in range.
+  bool CheckRestored(double time_s, std::string* error) const;
+
   const FactoryReport& report() const { return report_; }
   const FactorySpec& spec() const { return spec_; }
   double batch_interval_s() const { return interval_; }
