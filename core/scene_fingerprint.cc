@@ -104,7 +104,7 @@ std::vector<FingerprintPart> SceneFingerprint(const Scene& s, double timestep_s,
       for (double x : f.mass_fractions) h.Field(x);
       h.Field(f.mass_rate_kg_s), h.Field(f.start_s), h.Field(f.end_s), h.Field(f.total_mass_kg);
       h.Field(f.velocity_m_s), h.Field(f.batch_interval_s), h.Field(f.region_velocity_m_s);
-      h.Field(f.follow_heap_clearance_m);
+      h.Field(f.follow_heap_clearance_m), h.Field(f.settled_speed_m_s);
     }
   }));
   parts.push_back(Part("seed", [&](Fnv1a64& h) { h.Field(s.seed); }));

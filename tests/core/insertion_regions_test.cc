@@ -82,7 +82,9 @@ TEST_CASE("a factory region moves with its velocity while active", "[unit][facto
     if (p.id[i] > newest) newest = p.id[i], slot = i;
   REQUIRE(newest >= 0);
   CHECK(p.position_m[slot].z > 0.05);
-  ParticleFactory probe(f, {}, 9.81, 1);
+  SizeDistribution size;
+  size.diameter_m = 0.002;
+  ParticleFactory probe(f, {{0, 0, 2500, &size, 1}}, 9.81, 1);
   const InsertionRegion at_end = probe.RegionAt(1.0);  // stops at end_s
   CHECK(at_end.min_m.x == Approx(0.014 + 0.05 * 0.2));
   CHECK(at_end.max_m.z == Approx(0.05 + 0.1 * 0.2));

@@ -141,6 +141,7 @@ TEST_CASE("a discharge into a sink restarts bit-identically, for any thread coun
   REQUIRE(single.Run(0.2).ok());
 
   for (const Simulation* other : {&restarted, &single}) {
+    INFO((other == &restarted ? "restarted" : "uninterrupted, 1 thread"));
     REQUIRE(other->particles().Size() == reference.particles().Size());
     CHECK(other->particles().position_m == reference.particles().position_m);
     CHECK(other->particles().velocity_m_s == reference.particles().velocity_m_s);
