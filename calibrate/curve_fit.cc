@@ -118,6 +118,7 @@ bool FitCurve(CurveForm form, const std::vector<CurvePoint>& points, CurveFitRes
   options.max_num_iterations = 200;
   options.function_tolerance = 1e-14;
   options.parameter_tolerance = 1e-14;
+  options.gradient_tolerance = 1e-16;
   options.logging_type = ceres::SILENT;
   ceres::Solver::Summary summary;
   ceres::Solve(options, &problem, &summary);

@@ -6,6 +6,9 @@
 namespace demcal::testing {
 
 inline std::filesystem::path RepoRoot() {
+#ifdef DEMCAL_TEST_SOURCE_DIR  // absolute: __FILE__ is relative when ccache's base_dir is set
+  return std::filesystem::path(DEMCAL_TEST_SOURCE_DIR);
+#endif
   return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path();
 }
 

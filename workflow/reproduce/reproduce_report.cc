@@ -12,6 +12,12 @@
 namespace demcal::workflow {
 namespace {
 
+// j[key], or null when j is not an object or lacks the key (a skipped or failed stage).
+const nlohmann::json& At(const nlohmann::json& j, const char* key) {
+  static const nlohmann::json kNull;
+  return j.is_object() && j.contains(key) ? j[key] : kNull;
+}
+
 std::string Fmt(double v, const char* format = "%.3g") {
   if (!std::isfinite(v)) return "–";
   char text[48];
@@ -52,44 +58,44 @@ bool SummarySection(const ReportInputs& in, HtmlReport* r, std::string* error) {
 }
 
 bool SpeciesSection(const ReportInputs& in, HtmlReport* r, std::string* error) {
-  const nlohmann::json& s = (*in.results)["species"]["species"];
+  const nlohmann::json& s = At(At(*in.results, "species"), "species");
   r->Section("1. Species");
   r->Paragraph("Shape assumption: " + in.workflow->shape_assumption);
   HtmlTable t{.caption = "friction calibrated to each measured repose angle",
               .header = {"species", "property", "value ± σ", "angle measured [deg]",
                          "angle demcal [deg]", "termination", "outputs"}};
   for (const auto& [name, o] : s.items())
-    t.rows.push_back({name, o.value("property", ""), PlusMinus(o["value"], o["sigma"]),
-                      PlusMinus(o["measured"], o["uncertainty"], "%.1f"),
-                      PlusMinus(o["simulated"], o["sem"], "%.1f"), o.value("termination", ""),
+    t.rows.push_back({name, o.value("property", ""), PlusMinus(At(o, "value"), At(o, "sigma")),
+                      PlusMinus(At(o, "measured"), At(o, "uncertainty"), "%.1f"),
+                      PlusMinus(At(o, "simulated"), At(o, "sem"), "%.1f"), o.value("termination", ""),
                       o.value("result_dir", "")});
   return r->Table(t, error);
 }
 
 bool CohesionSection(const ReportInputs& in, HtmlReport* r, std::string* error) {
-  const nlohmann::json& c = (*in.results)["cohesion"];
+  const nlohmann::json& c = At(*in.results, "cohesion");
   r->Section("2. Cohesion number");
   r->Paragraph("Convention: " + c.value("convention", "") + ". Coh = " +
-               Fmt(c["cohesion_number"]) + " (paper 1.6e-3; with R* = R/2 it would be " +
-               Fmt(c["cohesion_number_pair_radius"]) + "). Γ at the simulation stiffness: " +
-               Fmt(c["gamma_sim_J_m2"]) + " J/m² (paper 0.046). " + c.value("explanation", "") + ".");
+               Fmt(At(c, "cohesion_number")) + " (paper 1.6e-3; with R* = R/2 it would be " +
+               Fmt(At(c, "cohesion_number_pair_radius")) + "). Γ at the simulation stiffness: " +
+               Fmt(At(c, "gamma_sim_J_m2")) + " J/m² (paper 0.046). " + c.value("explanation", "") + ".");
   HtmlTable t{.header = {"input", "value"}};
-  for (const auto& [k, v] : c["inputs"].items()) t.rows.push_back({k, Fmt(v, "%.4g")});
+  for (const auto& [k, v] : At(c, "inputs").items()) t.rows.push_back({k, Fmt(v, "%.4g")});
   return r->Table(t, error);
 }
 
 bool CoatingSection(const ReportInputs& in, HtmlReport* r, std::string* error) {
-  const nlohmann::json& g = (*in.results)["gamma_per_coating"];
+  const nlohmann::json& g = At(*in.results, "gamma_per_coating");
   const std::string m = in.workflow->coating.material;
   r->Section("3. Γ per coating level");
-  r->Paragraph("Start: 2γ carried to the simulation stiffness, " + Fmt(g["start_gamma_J_m2"]) +
+  r->Paragraph("Start: 2γ carried to the simulation stiffness, " + Fmt(At(g, "start_gamma_J_m2")) +
                " J/m²; bracketed search on each level's angle, stopping within noise.");
   HtmlTable t{.header = {"coating [wt%]", "Γ ± σ [J/m²]", "angle measured [deg]",
                          "angle demcal [deg]", "provenance", "termination"}};
-  for (const nlohmann::json& l : g["levels"]) {
-    t.rows.push_back({Fmt(l["wt_pct"]), PlusMinus(l["value"], l["sigma"]),
-                      PlusMinus(l["measured"], l["uncertainty"], "%.1f"),
-                      PlusMinus(l["simulated"], l["sem"], "%.1f"), l.value("provenance", ""),
+  for (const nlohmann::json& l : At(g, "levels")) {
+    t.rows.push_back({Fmt(At(l, "wt_pct")), PlusMinus(At(l, "value"), At(l, "sigma")),
+                      PlusMinus(At(l, "measured"), At(l, "uncertainty"), "%.1f"),
+                      PlusMinus(At(l, "simulated"), At(l, "sem"), "%.1f"), l.value("provenance", ""),
                       l.value("termination", "")});
     t.synthetic_rows.push_back(l.value("synthetic", false));
   }
@@ -102,16 +108,16 @@ bool CoatingSection(const ReportInputs& in, HtmlReport* r, std::string* error) {
 }
 
 bool CurveSection(const ReportInputs& in, HtmlReport* r, std::string* error) {
-  const nlohmann::json& c = (*in.results)["gamma_curve"];
+  const nlohmann::json& c = At(*in.results, "gamma_curve");
   const bool synthetic = c.value("synthetic", false);
   r->Section("4. Γ(w) curve", synthetic);
   if (!c.value("fitted", false)) {
     r->Paragraph("Not fitted: " + c.value("why", std::string("?")));
   } else {
-    r->Paragraph("Form " + c["form"].get<std::string>() + ", coefficients " + c["coefficients"].dump() +
-                 ", covariance " + c["covariance"].dump() + ", χ²/dof " + Fmt(c["chi2_per_dof"]) +
-                 ". Γ(" + Fmt(c["coated_wt_pct"]) + " wt%) = " +
-                 PlusMinus(c["gamma_at_coated_J_m2"], c["gamma_at_coated_sigma_J_m2"]) + " J/m².",
+    r->Paragraph("Form " + At(c, "form").get<std::string>() + ", coefficients " + At(c, "coefficients").dump() +
+                 ", covariance " + At(c, "covariance").dump() + ", χ²/dof " + Fmt(At(c, "chi2_per_dof")) +
+                 ". Γ(" + Fmt(At(c, "coated_wt_pct")) + " wt%) = " +
+                 PlusMinus(At(c, "gamma_at_coated_J_m2"), At(c, "gamma_at_coated_sigma_J_m2")) + " J/m².",
                  synthetic);
     if (synthetic)
       r->Paragraph("The comparison with the paper's 0.250 J/m² at 2.5 wt% is circular: the 2.5 wt% "
@@ -123,16 +129,16 @@ bool CurveSection(const ReportInputs& in, HtmlReport* r, std::string* error) {
 }
 
 bool PairsSection(const ReportInputs& in, HtmlReport* r, std::string* error) {
-  const nlohmann::json& p = (*in.results)["dissimilar_pairs"];
+  const nlohmann::json& p = At(*in.results, "dissimilar_pairs");
   const bool synthetic = p.value("synthetic", false);
   r->Section("5. Dissimilar pairs", synthetic);
   r->Paragraph("From " + p.value("from", std::string("?")) + ": Γ/2 carried to the pair at constant "
                "Cohesion number. Radius convention: " + p.value("radius_convention", "") + ".");
   HtmlTable t{.header = {"pair", "R*_pair [m]", "factor", "Γ ± σ [J/m²]"}};
-  for (const nlohmann::json& q : p["pairs"]) {
-    t.rows.push_back({q["materials"][0].get<std::string>() + "–" + q["materials"][1].get<std::string>(),
-                      Fmt(q["pair_reduced_radius_m"]), Fmt(q["factor"]),
-                      PlusMinus(q["gamma_J_m2"], q["sigma_J_m2"])});
+  for (const nlohmann::json& q : At(p, "pairs")) {
+    t.rows.push_back({At(q, "materials")[0].get<std::string>() + "–" + At(q, "materials")[1].get<std::string>(),
+                      Fmt(At(q, "pair_reduced_radius_m")), Fmt(At(q, "factor")),
+                      PlusMinus(At(q, "gamma_J_m2"), At(q, "sigma_J_m2"))});
     t.synthetic_rows.push_back(synthetic);
   }
   return r->Table(t, error);

@@ -15,6 +15,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// j[key], or null when j is not an object or lacks the key (a skipped or failed stage).
+const nlohmann::json& At(const nlohmann::json& j, const char* key) {
+  static const nlohmann::json kNull;
+  return j.is_object() && j.contains(key) ? j[key] : kNull;
+}
+
+
 std::string Fmt(const nlohmann::json& j, const char* format = "%.3g") {
   if (!j.is_number()) return "–";
   char text[48];
@@ -25,7 +32,7 @@ std::string Fmt(const nlohmann::json& j, const char* format = "%.3g") {
 std::string Stat(const nlohmann::json& scenario, const std::string& key) {
   if (!scenario.contains(key)) return "–";
   const nlohmann::json& s = scenario[key];
-  return Fmt(s["mean"]) + (s["sem"].is_number() ? " ± " + Fmt(s["sem"]) : "");
+  return Fmt(At(s, "mean")) + (At(s, "sem").is_number() ? " ± " + Fmt(At(s, "sem")) : "");
 }
 
 std::string ReadText(const std::string& path) {
@@ -38,14 +45,14 @@ std::string ReadText(const std::string& path) {
 }  // namespace
 
 bool SegregationSection(const ReportInputs& in, HtmlReport* r, std::string* error) {
-  const nlohmann::json& seg = (*in.results)["segregation"];
+  const nlohmann::json& seg = At(*in.results, "segregation");
   r->Section("6. Segregation of the calibrated set");
   if (!seg.value("enabled", false)) {
     r->Paragraph("Not run: the workflow file disables the segregation stage.");
     return true;
   }
   const std::string m = in.workflow->coating.material;
-  r->Paragraph("Ternary heap, " + std::to_string(seg["replicates"].get<int>()) +
+  r->Paragraph("Ternary heap, " + std::to_string(At(seg, "replicates").get<int>()) +
                " replicate(s) per scenario (mean ± sem over replicates; no sem with one). The "
                "segregation fidelity and replicate count are the workflow file's; issue 15's study "
                "of what a fidelity can resolve sets their defaults. A coarse heap holds few " + m +
@@ -53,31 +60,31 @@ bool SegregationSection(const ReportInputs& in, HtmlReport* r, std::string* erro
   HtmlTable t{.caption = m + " (and TAED) indices per scenario",
               .header = {"scenario", "CoV 3D", "CoV_r 3D", "S_n 3D", "S_n front", "S_n back",
                          "TAED CoV 3D", "mixture angle [deg]", "discharge [s]", "replicates ok"}};
-  for (const auto& [name, s] : seg["scenarios"].items()) {
+  for (const auto& [name, s] : At(seg, "scenarios").items()) {
     t.rows.push_back({name, Stat(s, m + ".cov_3d"), Stat(s, m + ".cov_r_3d"), Stat(s, m + ".s_n_3d"),
                       Stat(s, m + ".s_n_2d_front"), Stat(s, m + ".s_n_2d_back"),
                       Stat(s, "TAED.cov_3d"), Stat(s, "mixture_angle_deg"),
-                      Stat(s, "discharge_time_s"), Fmt(s["replicates_ok"], "%.0f")});
+                      Stat(s, "discharge_time_s"), Fmt(At(s, "replicates_ok"), "%.0f")});
     t.synthetic_rows.push_back(s.value("synthetic", false));
   }
   if (!r->Table(t, error)) return false;
   const std::string bars = SegregationBarsSvg(*in.results, m);
   bool synthetic = false;
-  for (const auto& [name, s] : seg["scenarios"].items()) synthetic = synthetic || s.value("synthetic", false);
+  for (const auto& [name, s] : At(seg, "scenarios").items()) synthetic = synthetic || s.value("synthetic", false);
   if (!bars.empty() && !r->Figure(bars, m + " CoV and S_n per scenario ± sem", synthetic, error))
     return false;
   r->Subheading("Heap front faces (replicate 0 of each scenario)");
-  for (const auto& [name, s] : seg["scenarios"].items()) {
-    const std::string face = s["dir"].get<std::string>() + "/r0/heap_front_r0.svg";
+  for (const auto& [name, s] : At(seg, "scenarios").items()) {
+    const std::string face = At(s, "dir").get<std::string>() + "/r0/heap_front_r0.svg";
     if (!fs::exists(face)) continue;
     if (!r->Figure(ReadText(face), "front face of the " + name + " heap, coloured by species",
                    s.value("synthetic", false), error))
       return false;
   }
   std::vector<std::string> vtk;
-  for (const auto& [name, s] : seg["scenarios"].items())
-    for (int k = 0; k < seg["replicates"].get<int>(); ++k)
-      vtk.push_back(s["dir"].get<std::string>() + "/r" + std::to_string(k) + "/heap_r0.vtk");
+  for (const auto& [name, s] : At(seg, "scenarios").items())
+    for (int k = 0; k < At(seg, "replicates").get<int>(); ++k)
+      vtk.push_back(At(s, "dir").get<std::string>() + "/r" + std::to_string(k) + "/heap_r0.vtk");
   r->Paragraph("VTK of each final heap (ParaView):");
   r->List(vtk);
   return true;
@@ -85,17 +92,17 @@ bool SegregationSection(const ReportInputs& in, HtmlReport* r, std::string* erro
 
 bool TailSections(const ReportInputs& in, HtmlReport* r, std::string* error) {
   (void)error;
-  const nlohmann::json& f = (*in.results)["fidelity_check"];
+  const nlohmann::json& f = At(*in.results, "fidelity_check");
   r->Section("7. Fidelity check");
   if (!f.value("enabled", false)) {
     r->Paragraph("Not run: " + f.value("why", std::string("disabled")));
   } else {
     r->Paragraph("The coated heap at " + Fmt(in.workflow->fidelity_check.wt_pct) +
-                 " wt% with its calibrated Γ = " + Fmt(f["gamma_J_m2"]) + " J/m², re-run at size ×" +
-                 Fmt(f["fine_fidelity"]["size_scale"]) + ", stiffness ×" +
-                 Fmt(f["fine_fidelity"]["stiffness_scale"]) + ": " + Fmt(f["fine_angle_deg"], "%.1f") +
-                 " ± " + Fmt(f["fine_sem_deg"], "%.1f") + "° against " + Fmt(f["base_angle_deg"], "%.1f") +
-                 " ± " + Fmt(f["base_sem_deg"], "%.1f") + "° at the calibration fidelity. A shift "
+                 " wt% with its calibrated Γ = " + Fmt(At(f, "gamma_J_m2")) + " J/m², re-run at size ×" +
+                 Fmt(At(At(f, "fine_fidelity"), "size_scale")) + ", stiffness ×" +
+                 Fmt(At(At(f, "fine_fidelity"), "stiffness_scale")) + ": " + Fmt(At(f, "fine_angle_deg"), "%.1f") +
+                 " ± " + Fmt(At(f, "fine_sem_deg"), "%.1f") + "° against " + Fmt(At(f, "base_angle_deg"), "%.1f") +
+                 " ± " + Fmt(At(f, "base_sem_deg"), "%.1f") + "° at the calibration fidelity. A shift "
                  "within the noise means the Cohesion-number scaling carries Γ between the two.");
   }
   r->Section("Where the time went");

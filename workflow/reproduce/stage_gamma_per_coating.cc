@@ -4,7 +4,9 @@
 // 2γ carried to the simulation stiffness at constant Coh (stage 2). The bracket optimiser stops
 // at the first Γ whose angle is within the noise of the measurement, so two Γ whose angles are
 // closer than their noise are never told apart. Each level's row is read from the measurement
-// table, or else from the synthetic table (then every output of the level says synthetic).
+// table, or else from the synthetic table (then every output of the level says synthetic); a
+// level with no row in either is skipped and listed with the reason (its summary rows say "not
+// run"), so the curve is fitted to the levels that have data.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -22,20 +24,25 @@ std::string LevelName(double w) {
   return text;
 }
 
-// The table holding the level's angle row: the measurements, else the synthetic table.
-bool TableFor(const WorkflowFile& w, double level, std::string* table, std::string* error) {
+// The table holding the level's angle row: the measurements, else the synthetic table; an empty
+// *table when neither has it, with the reason in *why (a table that cannot be read, e.g. a
+// synthetic recipe that produced no rows, counts as not having it: the reason names the file).
+void TableFor(const WorkflowFile& w, double level, std::string* table, std::string* why) {
   const calibrate::Condition condition = {{w.coating.covariate, std::to_string(level)}};
-  std::string why;
+  why->clear();
   for (const std::string& path : {w.measurements, w.synthetic_measurements}) {
     if (path.empty()) continue;
     MeasurementTable t;
-    if (!LoadMeasurementTable(path, &t, error)) return false;
-    if (t.Find("angle_deg", w.coating.material, condition, &why)) return *table = path, true;
+    std::string problem;
+    if (!LoadMeasurementTable(path, &t, &problem) ||
+        !t.Find("angle_deg", w.coating.material, condition, &problem)) {
+      *why += (why->empty() ? "" : "; ") + problem;
+      continue;
+    }
+    *table = path;
+    return;
   }
-  *error = w.source + ": coating.levels_wt_pct: no angle_deg row of " + w.coating.material +
-           " at " + w.coating.covariate + " = " + std::to_string(level) +
-           " in the measurement or synthetic table (" + why + ")";
-  return false;
+  table->clear();
 }
 
 }  // namespace
@@ -52,8 +59,18 @@ bool RunGammaPerCoatingStage(ReproduceContext& ctx, nlohmann::json* result, std:
   nlohmann::json levels = nlohmann::json::array(), values = nlohmann::json::object();
   for (size_t k = 0; k < c.levels.size(); ++k) {
     const double level = c.levels[k];
-    std::string table;
-    if (!TableFor(w, level, &table, error)) return false;
+    std::string table, why;
+    TableFor(w, level, &table, &why);
+    char key[64];
+    if (table.empty()) {
+      *ctx.log << "reproduce: coating level " << level << " wt%: no angle row: " << why
+               << "; skipped\n";
+      levels.push_back({{"wt_pct", level}, {"skipped", "no angle_deg row: " + why},
+                        {"value", nullptr}, {"sigma", nullptr}, {"synthetic", false}});
+      std::snprintf(key, sizeof(key), "gamma_w%g_J_m2", level);
+      values[key] = ValueJson(NAN, NAN, "no angle at this level in the tables");
+      continue;
+    }
     *ctx.log << "reproduce: coating level " << k + 1 << "/" << c.levels.size() << ": Γ of "
              << c.material << "-" << c.material << " at " << level << " wt%\n";
     CalibrationStep step{.dir = ctx.StageDir("gamma_per_coating") + "/" + LevelName(level),
@@ -75,7 +92,6 @@ bool RunGammaPerCoatingStage(ReproduceContext& ctx, nlohmann::json* result, std:
     entry["wt_pct"] = level;
     entry["synthetic"] = o.provenance == "synthetic";
     levels.push_back(entry);
-    char key[64];
     std::snprintf(key, sizeof(key), "gamma_w%g_J_m2", level);
     const bool synthetic = o.provenance == "synthetic";
     values[key] = ValueJson(o.value, o.sigma,
