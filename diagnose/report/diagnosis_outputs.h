@@ -26,6 +26,7 @@ namespace demcal::diagnose {
 struct DiagnosisRunInfo {
   std::string study;  // path as given
   std::string description;
+  bool synthetic = false;  // some measurement row says provenance synthetic
   std::string fidelity;  // name of the fidelity the runs used
   uint64_t seed = 0;
   int replicates = 0;
