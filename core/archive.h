@@ -3,6 +3,8 @@
 // state-holding class writes a single `template <class A> void Serialize(A&)` listing its
 // members once (no reader/writer twins). Only trivially copyable values and vectors of them are
 // stored, raw, in the machine's byte order (a checkpoint is for restarting on the same build).
+// Reading never allocates more than the bytes left could hold, so a damaged length cannot
+// exhaust memory; what was read is then validated by its owner (core/checkpoint.cc).
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -18,6 +20,8 @@ class Archive {
 
   bool writing() const { return writing_; }
   bool ok() const { return ok_; }  // false after reading past the end
+  // Bytes not yet read (reading); a complete payload leaves none.
+  size_t remaining() const { return writing_ ? 0 : bytes_.size() - offset_; }
   const std::string& bytes() const { return bytes_; }
 
   template <class T>

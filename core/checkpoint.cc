@@ -1,73 +1,125 @@
-// Simulation checkpoints: one binary file, "demcal-checkpoint/N", holding the whole dynamic
-// state in the order SerializeState lists it, behind a header that identifies the scene.
-#include <fstream>
+// Simulation checkpoints: the whole dynamic state in the order SerializeState lists it, behind
+// the scene's fingerprint, inside the verified envelope of core/checkpoint_file.h. Loading
+// believes nothing before it is checked: envelope (length, checksum), fingerprint (the scene and
+// time step it was written for), then every count and index of the restored state
+// (CheckRestoredState, core/checkpoint_checks_*.cc). A refusal names the failed check.
+#include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 #include "core/archive.h"
+#include "core/checkpoint_file.h"
+#include "core/scene_fingerprint.h"
 #include "core/simulation.h"
 
 namespace demcal::core {
 namespace {
-// 2: mesh wall histories, wall loads; 3: JKR radius; 4: fixed spheres last, out of the list
-constexpr char kMagic[] = "demcal-checkpoint/4";
+// More parts than any build writes: a damaged count is refused before the loop.
+constexpr uint64_t kMaxFingerprintParts = 64;
+
+struct CheckpointRefusal : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+std::string Number(double x) {
+  std::ostringstream os;
+  os.precision(17);
+  os << x;
+  return os.str();
+}
 }  // namespace
 
+std::vector<FingerprintPart> Simulation::Fingerprint() const {
+  return SceneFingerprint(scene_, dt_, list_settings_.skin_m);
+}
+
 template <class A>
-void Simulation::SerializeState(A& a) {
-  std::string magic = kMagic;
-  a.String(magic);
-  uint64_t seed = scene_.seed, species = scene_.species.size(), walls = scene_.walls.size(),
-           factories = factories_.size();
-  a.Value(seed), a.Value(species), a.Value(walls), a.Value(factories), a.Value(dt_);
-  if (!a.writing() && (magic != kMagic || seed != scene_.seed || species != scene_.species.size() ||
-                       walls != scene_.walls.size() || factories != factories_.size())) {
-    throw std::runtime_error("the checkpoint was written for a different scene (seed, species, "
-                             "walls, factories or time step differ) or is not a demcal checkpoint");
+void Simulation::SerializeState(A& a, const std::vector<std::string>& may_differ) {
+  std::vector<FingerprintPart> parts;
+  if (a.writing()) parts = Fingerprint();
+  uint64_t count = parts.size();
+  a.Value(count);
+  if (!a.writing() && a.ok()) {
+    if (count > kMaxFingerprintParts)
+      throw CheckpointRefusal("the scene fingerprint claims " + std::to_string(count) + " parts");
+    parts.resize(count);
+  }
+  for (FingerprintPart& p : parts) a.String(p.name), a.Value(p.digest);
+  double dt = dt_;
+  a.Value(dt);
+  if (!a.writing() && a.ok()) {
+    if (dt != dt_)
+      throw CheckpointRefusal("written for another time step: " + Number(dt) +
+                              " s in the checkpoint, " + Number(dt_) + " s in this scene");
+    const std::string differ = DifferingParts(parts, Fingerprint(), may_differ);
+    if (!differ.empty())
+      throw CheckpointRefusal("written for another scene: " + differ +
+                              (differ.find(',') == std::string::npos ? " differs" : " differ"));
   }
   a.Value(time_s_), a.Value(steps_), a.Value(rebuilds_since_reorder_);
   a.Value(energy_budget_J_), a.Value(energy_scale_J_);
   system_.Serialize(a);
   list_.Serialize(a);
   forces_.Serialize(a);
+  uint64_t factories = factories_.size();
+  a.Value(factories);
+  if (!a.writing() && a.ok() && factories != factories_.size())
+    throw CheckpointRefusal("holds " + std::to_string(factories) + " factories, the scene " +
+                            std::to_string(factories_.size()));
   for (ParticleFactory& f : factories_) f.Serialize(a);
 }
 
 bool Simulation::SaveCheckpoint(const std::string& path, std::string* error) const {
   Archive a = Archive::ForWriting();
-  const_cast<Simulation*>(this)->SerializeState(a);  // writing leaves the state unchanged
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out.write(a.bytes().data(), static_cast<std::streamsize>(a.bytes().size()));
-  if (!out) {
-    if (error) *error = "cannot write checkpoint file '" + path + "'";
-    return false;
-  }
-  return true;
+  const_cast<Simulation*>(this)->SerializeState(a, {});  // writing leaves the state unchanged
+  return WriteCheckpointFile(path, a.bytes(), error);
 }
 
-bool Simulation::LoadCheckpoint(const std::string& path, std::string* error) {
-  if (!initialized_) {
-    if (error) *error = "Initialize() the simulation from its scene before loading a checkpoint";
+bool Simulation::LoadCheckpoint(const std::string& path, std::string* error,
+                                const std::vector<std::string>& may_differ) {
+  std::string payload, why;
+  if (!ReadCheckpointFile(path, &payload, &why)) {
+    if (error) *error = path + ": checkpoint: " + why;
+    return false;  // the state is untouched
+  }
+  return LoadCheckpointPayload(payload, path, error, may_differ);
+}
+
+bool Simulation::LoadCheckpointBytes(const std::string& file_bytes, const std::string& name,
+                                     std::string* error, const std::vector<std::string>& may_differ) {
+  std::string payload, why;
+  if (!UnframeCheckpoint(file_bytes, &payload, &why)) {
+    if (error) *error = name + ": checkpoint: " + why;
     return false;
   }
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  if (!in) {
-    if (error) *error = "cannot read checkpoint file '" + path + "'";
+  return LoadCheckpointPayload(payload, name, error, may_differ);
+}
+
+bool Simulation::LoadCheckpointPayload(const std::string& payload, const std::string& name,
+                                       std::string* error,
+                                       const std::vector<std::string>& may_differ) {
+  auto refuse = [&](const std::string& why) {
+    if (error) *error = name + ": checkpoint: " + why;
     return false;
-  }
-  Archive a = Archive::ForReading(bytes.str());
+  };
+  if (!initialized_)
+    return refuse("Initialize() the simulation from its scene before loading a checkpoint");
+  // From here on the state is being overwritten: a refusal leaves the simulation unusable
+  // (Run() then reports that it is not initialised) rather than half restored.
+  initialized_ = false;
+  Archive a = Archive::ForReading(payload);
   try {
-    SerializeState(a);
+    SerializeState(a, may_differ);
   } catch (const std::exception& e) {
-    if (error) *error = "checkpoint '" + path + "': " + e.what();
-    return false;
+    return refuse(e.what());
   }
-  if (!a.ok()) {
-    if (error) *error = "checkpoint '" + path + "' is truncated or corrupt";
-    return false;
-  }
+  if (!a.ok()) return refuse("the payload ends before the state is complete");
+  if (a.remaining())
+    return refuse(std::to_string(a.remaining()) + " bytes left over after the state");
+  std::string why;
+  if (!CheckRestoredState(&why)) return refuse(why);
   PlaceWalls(time_s_);
+  initialized_ = true;
   return true;
 }
 

@@ -11,6 +11,7 @@
 //
 // Fixed spheres (slots from NeighbourList::FirstFixed() on) are not swept: their force, torque
 // and wall contacts are not computed, and a moving–fixed pair adds to the moving sphere only.
+#include <string>
 #include <vector>
 
 #include "core/contact/contact_state.h"
@@ -63,6 +64,10 @@ class ContactForces {
     a.Vector(pair_history_), a.Vector(pair_active_);
     walls_.Serialize(a);
   }
+
+  // After a checkpoint load: histories aligned with `list`, wall candidates fit the walls.
+  bool CheckRestored(const NeighbourList& list, size_t particles, const std::vector<Wall>& walls,
+                     std::string* error) const;
 
   const std::vector<ContactHistory>& PairHistory() const { return pair_history_; }
   std::vector<ContactHistory>& MutablePairHistory() { return pair_history_; }

@@ -63,6 +63,9 @@ class ParticleFactory {
     a.Value(report_.active_time_s), a.Value(report_.full_batches);
   }
 
+  // After a checkpoint load at time_s: progress finite and the next batch due in range.
+  bool CheckRestored(double time_s, std::string* error) const;
+
   const FactoryReport& report() const { return report_; }
   const FactorySpec& spec() const { return spec_; }
   double batch_interval_s() const { return interval_; }

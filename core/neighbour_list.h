@@ -23,6 +23,7 @@
 //   if (old.NeedsRebuild(x)) list.Update(settings, x, r, nullptr, first_fixed, old, 0.25);
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/periodic_box.h"
@@ -83,6 +84,10 @@ class NeighbourList {
     a.Vector(row_start_), a.Vector(partner_), a.Vector(reverse_start_), a.Vector(reverse_entry_);
     a.Vector(reference_position_), a.Value(half_skin2_), a.Value(builds_), a.Value(first_fixed_);
   }
+
+  // After a checkpoint load: rows, partners, reverse index and references fit `particles` and
+  // the scene's skin; false with the failed check (core/checkpoint_checks_contacts.cc).
+  bool CheckRestored(size_t particles, double skin_m, std::string* error) const;
 
  private:
   struct Grid {

@@ -9,10 +9,13 @@ namespace demcal::core {
 
 inline int NeighbourList::Grid::CellOf(const Vec3& x) const {
   // Outliers are clamped into the edge cells, or wrapped on periodic axes.
+  // Reduced and clamped as a double before the conversion, so a far outlier (a particle flung
+  // to 1e300 m before the run's checks catch it) or a NaN never overflows the int (UB).
   auto index = [](double v, int n, bool wraps) {
-    const int k = static_cast<int>(std::floor(v));
-    if (wraps) return ((k % n) + n) % n;
-    return k < 0 ? 0 : (k >= n ? n - 1 : k);
+    if (wraps) v -= n * std::floor(v / n);  // into [0, n], up to rounding
+    if (!(v >= 0)) return 0;
+    if (v >= n) return n - 1;
+    return static_cast<int>(v);
   };
   const int ix = index((x.x - origin.x) * inv_cell.x, nx, wrap[0]);
   const int iy = index((x.y - origin.y) * inv_cell.y, ny, wrap[1]);

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 namespace demcal::core {
@@ -26,9 +27,13 @@ class Rng {
       state = os.str();
     }
     a.String(state);
-    if (!a.writing()) {
+    if (!a.writing() && a.ok()) {
       std::istringstream is(state);
-      is >> engine_;
+      std::mt19937_64 engine;
+      is >> engine;
+      if (is.fail() || !(is >> std::ws).eof())
+        throw std::runtime_error("a factory's random stream state is not readable");
+      engine_ = engine;
     }
   }
 

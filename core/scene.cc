@@ -2,6 +2,7 @@
 
 #include "core/contact/jkr.h"
 #include "core/triangle_mesh.h"
+#include "core/wall_extent.h"
 
 #include <algorithm>
 #include <cmath>
@@ -142,14 +143,27 @@ void CheckWall(const Scene& s, size_t i, Checker& c) {
   }
   if (!c.ok()) return;
   const char* axes = "xyz";
-  if (const auto* plane = std::get_if<PlaneSurface>(&w.shape)) {
-    // docs/scene_format.md: no wall across a periodic axis (particles would wrap through it).
-    for (int a = 0; a < 3; ++a)
-      // (A periodic axis along gravity is reported below, as the more basic mistake.)
-      if (s.periodic[a] && s.gravity_m_s2[a] == 0 && std::abs(plane->normal[a]) > 1e-12)
-        c.Fail("field '" + f + "' (plane '" + w.name + "') crosses the periodic axis " +
-               axes[a] + ": walls across a periodic axis are not allowed; drop the wall (a " +
-               "box: its " + axes[a] + " faces) or the periodic." + axes[a]);
+  // docs/scene_format.md: no wall across a periodic axis (particles would wrap through it); a
+  // wall a particle radius inside the periodic box, or unchanged along the axis, is fine.
+  // (A periodic axis along gravity is reported below, as the more basic mistake.)
+  for (int a = 0; a < 3 && c.ok(); ++a) {
+    if (!s.periodic[a] || s.gravity_m_s2[a] != 0 || InvariantAlongAxis(w, a)) continue;
+    const AxisInterval x = WallExtent(w, a, s.time.duration_s);
+    const double margin = 0.5 * s.MaxDiameter();
+    if (x.lo_m >= s.domain_min_m[a] + margin && x.hi_m <= s.domain_max_m[a] - margin) continue;
+    std::ostringstream os;
+    os << "field '" << f << "' (" << ShapeName(w.shape) << " '" << w.name
+       << "') crosses the periodic axis " << axes[a] << ": it ";
+    if (std::isinf(x.lo_m) || std::isinf(x.hi_m))
+      os << "is unbounded along " << axes[a];
+    else
+      os << "reaches [" << x.lo_m << ", " << x.hi_m << "] m along " << axes[a];
+    os << ", the periodic domain is [" << s.domain_min_m[a]
+       << ", " << s.domain_max_m[a] << "] m and a wall must stay a particle radius (" << margin
+       << " m) inside it or be unchanged along the axis (a plane parallel to it, an infinite "
+       << "cylinder along it); drop the wall (a box: its " << axes[a] << " faces) or periodic."
+       << axes[a];
+    c.Fail(os.str());
   }
   if (const auto* ref = std::get_if<MeshRef>(&w.shape);
       ref && ref->mesh && ref->mesh->NumVertices() > 0 && c.ok()) {

@@ -16,6 +16,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <tbb/task_arena.h>
 
@@ -25,6 +26,7 @@
 #include "core/particle_system.h"
 #include "core/run_summary.h"
 #include "core/scene.h"
+#include "core/scene_fingerprint.h"
 
 namespace demcal::core {
 
@@ -58,10 +60,20 @@ class Simulation {
   bool Initialize(std::string* error);
   // Checkpoint: the complete dynamic state (particles, clumps, contact histories, neighbour
   // list, factories' random streams, time). Restore into a Simulation initialised from the same
-  // scene; the continued run is bit-identical to an uninterrupted one. False with a message on
-  // I/O errors or a file that does not fit the scene.
+  // scene; the continued run is bit-identical to an uninterrupted one. Saving is atomic
+  // (temporary, fsync, rename). Loading verifies the file (core/checkpoint_file.h: length,
+  // checksum), the scene fingerprint and time step (core/scene_fingerprint.h), and every count
+  // and index of the state before use; false with "PATH: checkpoint: <failed check>". A file
+  // refused before its payload leaves the simulation untouched; one refused later leaves it
+  // uninitialised (Run() refuses to run it). `may_differ`: fingerprint parts allowed to differ
+  // from this scene's (a hand-over to a changed scene, e.g. {"wall motion"} for a gate opened
+  // later); never the time step.
   bool SaveCheckpoint(const std::string& path, std::string* error) const;
-  bool LoadCheckpoint(const std::string& path, std::string* error);
+  bool LoadCheckpoint(const std::string& path, std::string* error,
+                      const std::vector<std::string>& may_differ = {});
+  // The same from the bytes of a whole checkpoint file; `name` stands for the file in messages.
+  bool LoadCheckpointBytes(const std::string& file_bytes, const std::string& name,
+                           std::string* error, const std::vector<std::string>& may_differ = {});
 
   // Changes the body-force field for subsequent steps (load-controlled tests, tilting).
   void SetGravity(const Vec3& gravity_m_s2) { scene_.gravity_m_s2 = gravity_m_s2; }
@@ -102,7 +114,14 @@ class Simulation {
   void AddWallWork(double time_s);
   void ComputeForces(double time_s);
   template <class A>
-  void SerializeState(A& a);
+  void SerializeState(A& a, const std::vector<std::string>& may_differ);
+  std::vector<FingerprintPart> Fingerprint() const;
+  bool LoadCheckpointPayload(const std::string& payload, const std::string& name,
+                             std::string* error, const std::vector<std::string>& may_differ);
+  // Every count, index and value of a just-restored state (core/checkpoint_checks_*.cc).
+  bool CheckRestoredState(std::string* error) const;
+  bool CheckRestoredBodies(std::string* error) const;
+  bool CheckRestoredProgress(std::string* error) const;
   void RebuildNeighbours(bool allow_reorder);
   // Returns kOk, or the failure found by the periodic checks (and fills message).
   Termination Check(std::string* message) const;

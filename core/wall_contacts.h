@@ -16,6 +16,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "core/contact/contact_state.h"
@@ -58,6 +59,10 @@ class WallContacts {
     a.Vector(start_), a.Vector(index_), a.Vector(history_), a.Vector(active_);
     a.Vector(mesh_slots_), a.Vector(mesh_history_), a.Vector(load_);
   }
+
+  // After a checkpoint load: rows, wall indices and histories fit the particles and walls.
+  bool CheckRestored(size_t particles, size_t first_fixed, const std::vector<Wall>& walls,
+                     std::string* error) const;
 
  private:
   struct MeshSlot {

@@ -10,9 +10,12 @@ cd "$(dirname "$0")/.."
 build=${FUZZ_BUILD_DIR:-build-fuzz}
 seconds=${FUZZ_SECONDS:-600}
 jobs=${FUZZ_JOBS:-1}
+parallel=()  # one job runs in this process (its statistics printed here)
+((jobs > 1)) && parallel=(-jobs="$jobs" -workers="$jobs")
 harnesses=("$@")
 ((${#harnesses[@]})) ||
-  harnesses=(fuzz_stl fuzz_json_document fuzz_scene_json fuzz_experiment_json fuzz_measurement_table)
+  harnesses=(fuzz_stl fuzz_json_document fuzz_scene_json fuzz_experiment_json fuzz_measurement_table
+             fuzz_study fuzz_journal fuzz_checkpoint)
 command -v clang++-14 >/dev/null || bash scripts/install_deps.sh --fuzz
 CXX=clang++-14 cmake -S fuzz -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build "$build" --parallel "${BUILD_JOBS:-2}" --target "${harnesses[@]}"
@@ -27,12 +30,18 @@ for h in "${harnesses[@]}"; do
   case $h in
     fuzz_stl) seed "$corpus" tests/data/*.stl tests/bad_inputs/files/*.stl ;;
     fuzz_measurement_table) seed "$corpus" datasets/*/*.csv tests/bad_inputs/files/*.csv ;;
+    fuzz_study) seed "$corpus" examples/calibrate_*.json tests/bad_inputs/files/study_*.json ;;
+    fuzz_journal) seed "$corpus" tests/bad_inputs/files/*.jsonl tests/data/*.jsonl ;;
+    fuzz_checkpoint)  # a valid checkpoint of the harness's scene, in both modes
+      mkdir -p "$corpus"
+      ls "$corpus"/seed_mode1 >/dev/null 2>&1 ||
+        DEMCAL_FUZZ_WRITE_SEED="$PWD/$corpus" "$build/fuzz_checkpoint" ;;
     *) seed "$corpus" examples/*.json examples/invalid/*.json tests/bad_inputs/files/*.json ;;
   esac
   echo "== $h: $seconds s"
   (cd "$build" && ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 \
-     "./$h" -max_total_time="$seconds" -max_len=65536 -timeout=10 -rss_limit_mb=2048 \
-     -jobs="$jobs" -workers="$jobs" -print_final_stats=1 "../$corpus" 2>&1 |
+     "./$h" -max_total_time="$seconds" -max_len="${FUZZ_MAX_LEN:-65536}" -timeout=10 -rss_limit_mb=2048 \
+     ${parallel[@]+"${parallel[@]}"} -print_final_stats=1 "../$corpus" 2>&1 |
      grep -E "stat::number_of_executed_units|Done|ERROR|SUMMARY|crash-|timeout-|oom-" || true)
 done
 if ls "$build"/crash-* "$build"/timeout-* "$build"/oom-* >/dev/null 2>&1; then

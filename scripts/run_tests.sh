@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds Release and runs every test through ctest.
+# Installs what is missing, builds Release and runs every test through ctest, then the
+# sanitizer and fuzzing stage (ASan+UBSan unit tests, a short bounded run of every libFuzzer
+# harness: scripts/ci_sanitize_fuzz.sh; SKIP_SANITIZE=1 leaves it out for a quick local run).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/install_deps.sh
+bash scripts/install_deps.sh --fuzz
 bash scripts/build.sh
-cd "${BUILD_DIR:-build}"
-ctest --output-on-failure --parallel "$(nproc)" --timeout 900
+(cd "${BUILD_DIR:-build}" && ctest --output-on-failure --parallel "$(nproc)" --timeout 900)
+if [[ "${SKIP_SANITIZE:-0}" != 1 ]]; then bash scripts/ci_sanitize_fuzz.sh; fi

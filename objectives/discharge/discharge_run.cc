@@ -80,7 +80,7 @@ std::unique_ptr<core::Simulation> OpenGateNow(core::Scene scene, const core::Sim
   const std::string path = TemporaryCheckpointPath(scene.seed);
   auto sim = std::make_unique<core::Simulation>(scene, core::Simulation::Options{.threads = 1});
   const bool ok = filled.SaveCheckpoint(path, error) && sim->Initialize(error) &&
-                  sim->LoadCheckpoint(path, error);
+                  sim->LoadCheckpoint(path, error, {"wall motion"});
   std::error_code ignored;
   std::filesystem::remove(path, ignored);
   return ok ? std::move(sim) : nullptr;

@@ -93,7 +93,7 @@ TEST_CASE("a checkpoint of another scene or a corrupt file is refused", "[unit][
   Simulation b(other, {.threads = 1});
   REQUIRE(b.Initialize(&err));
   CHECK_FALSE(b.LoadCheckpoint(path, &err));
-  CHECK_THAT(err, Catch::Contains("different scene"));
+  CHECK_THAT(err, Catch::Contains("written for another scene: seed differs"));
   {  // truncate it
     std::ifstream in(path, std::ios::binary);
     std::string bytes((std::istreambuf_iterator<char>(in)), {});

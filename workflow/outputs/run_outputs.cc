@@ -79,15 +79,7 @@ bool RunOutputs::ResumeFrom(const core::Simulation& sim, std::string* error) {
 std::string RunOutputs::CheckpointPath() const { return directory_ + "/" + kCheckpoint; }
 
 bool RunOutputs::WriteCheckpoint(const core::Simulation& sim, std::string* error) {
-  namespace fs = std::filesystem;
-  const std::string path = CheckpointPath(), temporary = path + ".tmp";
-  if (!sim.SaveCheckpoint(temporary, error)) return false;
-  std::error_code ec;
-  fs::rename(temporary, path, ec);
-  if (ec) {
-    if (error) *error = "cannot rename '" + temporary + "' to '" + path + "': " + ec.message();
-    return false;
-  }
+  if (!sim.SaveCheckpoint(CheckpointPath(), error)) return false;  // atomic (temporary + rename)
   checkpoint_time_s_ = sim.time_s();
   return true;
 }

@@ -48,8 +48,8 @@ class RunOutputs {
   // Writes the final snapshot (unless the current step already has one) and the CSV tables.
   bool WriteFinal(const core::Simulation& sim, std::string* error);
 
-  // Writes DIR/checkpoint.bin via a temporary file and a rename, so a crash while writing
-  // leaves the previous checkpoint intact.
+  // Writes DIR/checkpoint.bin atomically (Simulation::SaveCheckpoint: temporary, fsync,
+  // rename), so a crash while writing leaves the previous checkpoint intact.
   bool WriteCheckpoint(const core::Simulation& sim, std::string* error);
 
   std::string SummaryPath() const { return directory_ + "/summary.json"; }

@@ -137,7 +137,7 @@ int RunSimulate(const SimulateOptions& options, std::ostream& log) {
   if (!sim.Initialize(&error)) return invalid(options.scene_path + ": " + error);
   const bool restart = !options.restart_path.empty();
   if (restart) {
-    if (!sim.LoadCheckpoint(options.restart_path, &error)) return invalid("--restart: " + error);
+    if (!sim.LoadCheckpoint(options.restart_path, &error)) return invalid(error);
     record.restarted_from = RunRecord::Restart{options.restart_path, sim.time_s(), sim.steps()};
   }
   record.setup_wall_time_s = SecondsSince(start);
