@@ -13,6 +13,7 @@
 //   diagnosed_params.json "demcal-params/1": the base parameters and the named effects with
 //                         their refitted values (the augmented calibrated model)
 //   gap.svg, signatures.svg, ranking.svg (diagnosis_plots.h)
+//   report.html           all of it as one self-contained page (diagnosis_html.h)
 //
 //   if (!WriteDiagnosisOutputs(dir, info, diagnosis, &error)) ...
 #include <string>
