@@ -27,6 +27,7 @@ DiagnosisRunInfo RunInfo(const DiagnoseCommandOptions& o, const workflow::StudyF
                          const std::vector<CandidateEffect>& candidates, const Diagnosis& d, const StudyModel& m) {
   DiagnosisRunInfo info{o.study_path, study.description};
   const workflow::ExperimentFile& e = study.experiment();
+  for (const workflow::StudyTarget& t : study.targets) info.synthetic = info.synthetic || t.provenance == "synthetic";
   info.fidelity = (o.quick ? e.quick_fidelity : e.fidelity).name;
   info.seed = study.has_seed ? study.seed : e.seed;
   info.replicates = study.replicates > 0 ? study.replicates : e.replicates;

@@ -105,6 +105,7 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
   j["phases"] = phases;
   j["wall_time_s"] = d.wall_time_s;
   j["provenance"] = {{"demcal_version", kVersion}, {"study", info.study}, {"description", info.description},
+                     {"synthetic_data", info.synthetic},
                      {"fidelity", info.fidelity}, {"seed", info.seed}, {"replicates", info.replicates},
                      {"significance", info.options.significance},
                      {"discrepancy_floor_single_run_scatters", info.options.discrepancy_floor},

@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "diagnose/report/diagnosis_html.h"
 #include "diagnose/report/diagnosis_json.h"
 #include "diagnose/report/diagnosis_plots.h"
 #include "objectives/report/text_file.h"
@@ -70,7 +71,8 @@ bool WriteDiagnosisOutputs(const std::string& dir, const DiagnosisRunInfo& info,
          objectives::WriteTextFile(dir + "/signatures.csv", [&d](std::ostream& o) { SignaturesCsv(d, o); }, error) &&
          objectives::WriteSvg(dir + "/gap.svg", GapPlot(d), error) &&
          objectives::WriteSvg(dir + "/signatures.svg", SignaturePlot(info, d), error) &&
-         objectives::WriteSvg(dir + "/ranking.svg", RankingPlot(d), error);
+         objectives::WriteSvg(dir + "/ranking.svg", RankingPlot(d), error) &&
+         WriteDiagnosisHtml(dir + "/report.html", info, d, error);
 }
 
 }  // namespace demcal::diagnose

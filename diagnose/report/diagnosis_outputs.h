@@ -13,6 +13,7 @@
 //   diagnosed_params.json "demcal-params/1": the base parameters and the named effects with
 //                         their refitted values (the augmented calibrated model)
 //   gap.svg, signatures.svg, ranking.svg (diagnosis_plots.h)
+//   report.html           all of it as one self-contained page (diagnosis_html.h)
 //
 //   if (!WriteDiagnosisOutputs(dir, info, diagnosis, &error)) ...
 #include <string>
@@ -26,6 +27,7 @@ namespace demcal::diagnose {
 struct DiagnosisRunInfo {
   std::string study;  // path as given
   std::string description;
+  bool synthetic = false;  // some measurement row says provenance synthetic
   std::string fidelity;  // name of the fidelity the runs used
   uint64_t seed = 0;
   int replicates = 0;
