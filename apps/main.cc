@@ -7,8 +7,11 @@
 #include <vector>
 
 #include "apps/calibrate_command.h"
+#include "apps/cohesion_command.h"
 #include "apps/command.h"
+#include "apps/diagnose_command.h"
 #include "apps/experiment_command.h"
+#include "apps/reproduce_command.h"
 #include "apps/simulate_command.h"
 #include "core/version.h"
 #include "workflow/exit_codes.h"
@@ -19,6 +22,9 @@ constexpr demcal::apps::CommandFactory kCommands[] = {
     &demcal::apps::AddSimulateCommand,
     &demcal::apps::AddExperimentCommand,
     &demcal::apps::AddCalibrateCommand,
+    &demcal::apps::AddReproduceCommand,
+    &demcal::apps::AddCohesionCommand,
+    &demcal::apps::AddDiagnoseCommand,
 };
 
 }  // namespace

@@ -5,8 +5,8 @@
 #include <limits>
 #include <set>
 
+#include "calibrate/jacobian_svd.h"
 #include "calibrate/parameter_covariance.h"
-#include "calibrate/replicated_candidate_evaluator.h"
 
 namespace demcal::calibrate {
 namespace {
@@ -82,8 +82,10 @@ void Analyse(const ParameterSpace& space, const std::vector<Target>& targets,
     s->jacobian.row(i) *= w;
     s->jacobian_sigma.row(i) *= w;
   }
-  s->identifiability = AnalyseIdentifiability(s->jacobian, names, scale);
-  ParameterCovariance c = CovarianceFromJacobian(s->jacobian, scale);
+  // Sensitivities estimated from noisy runs resolve only the directions above their own noise.
+  const double floor = JacobianNoiseFloor(s->jacobian_sigma);
+  s->identifiability = AnalyseIdentifiability(s->jacobian, names, scale, floor);
+  ParameterCovariance c = CovarianceFromJacobian(s->jacobian, scale, floor);
   const bool ceres_cov = r.covariance_unit.size() == n * n && c.rank == static_cast<int>(n) &&
                          r.best_unit == best.unit;
   if (ceres_cov) {
@@ -155,41 +157,6 @@ CalibrationSummary Calibrate(CandidateEvaluator& evaluator, const ParameterSpace
         (s.best < 0 || c.trial.Cost() < s.candidates[s.best].trial.Cost()))
       s.best = c.index;
   if (s.best >= 0) Analyse(space, targets, options, r, &s);
-  return s;
-}
-
-CalibrationSummary Calibrate(ReplicatedEvaluator& evaluator, const ParameterSpace& space,
-                             const Measurement& measurement, const CalibrationOptions& options,
-                             const CalibrationProgress& progress) {
-  ReplicatedCandidateEvaluator adapter(&evaluator);
-  const Target target{measurement.observable, measurement.observable, measurement.value,
-                      measurement.uncertainty, measurement.source};
-  CandidateProgress each;
-  if (progress)
-    each = [&](const Candidate& c, double elapsed) {
-      progress(adapter.evaluations()[c.index], c.trial, elapsed);
-    };
-  CalibrationSummary s = Calibrate(adapter, space, {target}, options, each);
-  s.history = adapter.evaluations();
-  if (s.best < 0) return s;
-  s.best_residual = s.candidates[s.best].trial.residuals[0];
-  if (s.jacobian.rows() != 1) {
-    s.uncertainty_note = "not given: " + s.covariance_note;
-    return s;
-  }
-  const std::vector<double> scale = SiPerUnit(space, s.candidates[s.best].unit);
-  const double noise = s.candidates[s.best].trial.noise[0];
-  bool all = true;
-  for (size_t k = 0; k < space.Size(); ++k) {
-    // J is weighted by 1/sqrt(1 + noise²); undo it for the observable's own slope.
-    s.sensitivity.push_back(s.jacobian(0, k) * std::sqrt(1 + noise * noise) *
-                            measurement.uncertainty / scale[k]);
-    s.uncertainty.push_back(s.estimates[k].identifiable ? s.estimates[k].sigma : 0.0);
-    all = all && s.estimates[k].identifiable;
-  }
-  s.uncertainty_note =
-      all ? "sqrt(u_measured^2 + sem_simulated^2) / |slope|: " + s.covariance_note
-          : "not identifiable: the targets leave a valley: " + s.identifiability.summary;
   return s;
 }
 

@@ -16,10 +16,6 @@
 //   CalibrationSummary s = Calibrate(evaluator, space, targets, options, progress);
 //   std::cerr << s.BriefReport(space);
 //
-// The single-target form over a ReplicatedEvaluator (the `demcal calibrate` command) is kept: it
-// adapts the evaluator (replicated_candidate_evaluator.h) and fills the single-target fields
-// (history, best_residual, sensitivity, uncertainty) too.
-//
 // Thread-safety: Calibrate runs on the calling thread; the evaluator parallelises.
 #include <Eigen/Dense>
 #include <functional>
@@ -30,19 +26,10 @@
 #include "calibrate/identifiability.h"
 #include "calibrate/optimiser.h"
 #include "calibrate/parameter_space.h"
-#include "calibrate/replicated_evaluator.h"
 #include "calibrate/response_surface.h"
 #include "calibrate/target.h"
 
 namespace demcal::calibrate {
-
-// The single measurement of a one-target study (kept for the `calibrate` command's study file).
-struct Measurement {
-  std::string observable;  // e.g. "angle_deg"
-  double value = 0;        // SI or the observable's unit
-  double uncertainty = 1;  // one standard deviation of the measurement, > 0
-  std::string source;      // provenance: dataset file and row, or paper/table/figure
-};
 
 struct CalibrationOptions {
   std::string optimiser = "bracket";
@@ -75,9 +62,6 @@ struct ParameterEstimate {
 
 // Called after every candidate (the journal already holds its replicates).
 using CandidateProgress = std::function<void(const Candidate& candidate, double elapsed_s)>;
-// The single-target form's callback.
-using CalibrationProgress =
-    std::function<void(const Evaluation& evaluation, const TrialResult& trial, double elapsed_s)>;
 
 struct CalibrationSummary {
   std::string termination = "failed";  // the optimiser's (optimiser.h), or "invalid"
@@ -98,24 +82,12 @@ struct CalibrationSummary {
   int replicates_reused = 0;  // found in the journal (resumed work)
   std::string journal_error;  // first failure to write the journal ("" if none)
 
-  // Single-target form only: the evaluations (history[i] is candidates[i]) and its scalars.
-  std::vector<Evaluation> history;
-  double best_residual = 0;         // (simulated − measured) / uncertainty at the best
-  std::vector<double> sensitivity;  // d observable / dθ (observable unit per SI unit)
-  std::vector<double> uncertainty;  // σ_θ, SI (0 when not identifiable)
-  std::string uncertainty_note;     // how σ_θ was obtained, or why it is not given
-
   bool ok() const { return best >= 0 && termination == "within_noise"; }
   std::string BriefReport(const ParameterSpace& space) const;
-  std::string BriefReport(const ParameterSpace& space, const Measurement& m) const;
 };
 
 CalibrationSummary Calibrate(CandidateEvaluator& evaluator, const ParameterSpace& space,
                              const std::vector<Target>& targets, const CalibrationOptions& options,
                              const CandidateProgress& progress = {});
-
-CalibrationSummary Calibrate(ReplicatedEvaluator& evaluator, const ParameterSpace& space,
-                             const Measurement& measurement, const CalibrationOptions& options,
-                             const CalibrationProgress& progress = {});
 
 }  // namespace demcal::calibrate

@@ -42,22 +42,4 @@ std::string CalibrationSummary::BriefReport(const ParameterSpace& space) const {
   return out.str();
 }
 
-std::string CalibrationSummary::BriefReport(const ParameterSpace& space,
-                                            const Measurement& m) const {
-  std::ostringstream out;
-  out.precision(4);
-  out << "calibration: " << termination << " (" << message << "), " << history.size()
-      << " candidates, " << replicates_run << " replicate runs (+" << replicates_reused
-      << " from the journal)\n";
-  if (best < 0 || best >= static_cast<int>(history.size())) return out.str();
-  const Evaluation& e = history[best];
-  out << "best: " << space.Describe(e.parameters) << " -> " << m.observable << " = "
-      << e.summary.mean << " +- " << e.summary.sem << " (measured " << m.value << " +- "
-      << m.uncertainty << ")\n";
-  for (size_t k = 0; k < uncertainty.size(); ++k)
-    out << "uncertainty: " << space.parameters[k].name << " +- " << uncertainty[k] << "\n";
-  if (!uncertainty_note.empty()) out << "uncertainty: " << uncertainty_note << "\n";
-  return out.str();
-}
-
 }  // namespace demcal::calibrate

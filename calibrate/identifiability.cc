@@ -50,6 +50,10 @@ std::string Describe(const UndeterminedDirection& d, const std::vector<std::stri
   out.precision(3);
   if (std::isfinite(d.sigma_unit))
     out << " within noise (the data fix it only to +-" << d.sigma_unit << " of the range)";
+  else if (d.singular_value > 0)
+    out << " as far as the runs can tell (its sensitivity, " << d.singular_value
+        << ", is within the noise of the estimated sensitivities: more replicates per candidate "
+           "or a target that responds more strongly would resolve it)";
   else
     out << " exactly (no target sees this combination)";
   return out.str();
@@ -59,14 +63,15 @@ std::string Describe(const UndeterminedDirection& d, const std::vector<std::stri
 
 IdentifiabilityReport AnalyseIdentifiability(const Eigen::MatrixXd& jacobian,
                                              const std::vector<std::string>& names,
-                                             const std::vector<double>& si_per_unit) {
+                                             const std::vector<double>& si_per_unit,
+                                             double noise_floor) {
   IdentifiabilityReport r;
   r.names = names;
   const Eigen::Index n = jacobian.cols();
   if (n == 0) return r;
-  const JacobianSvd svd = DecomposeJacobian(jacobian);
+  const JacobianSvd svd = DecomposeJacobian(jacobian, noise_floor);
   for (Eigen::Index i = 0; i < n; ++i)
-    r.singular_values.push_back(svd.Null(static_cast<int>(i)) ? 0.0 : svd.values(i));
+    r.singular_values.push_back(svd.values(i) > kRankTolerance * svd.values(0) ? svd.values(i) : 0.0);
   const double s_min = r.singular_values.back();
   r.condition_number =
       s_min > 0 ? r.singular_values.front() / s_min : std::numeric_limits<double>::infinity();
@@ -75,17 +80,22 @@ IdentifiabilityReport AnalyseIdentifiability(const Eigen::MatrixXd& jacobian,
   summary << "singular values of the standardised sensitivity matrix:";
   for (double s : r.singular_values) summary << " " << s;
   summary << " (condition number " << r.condition_number << "; a combination with singular value"
-          << " <= sqrt(12) is undetermined)\n";
+          << " <= sqrt(12) is undetermined";
+  if (noise_floor > 0)
+    summary << ", and one <= " << noise_floor
+            << ", the noise floor of the sensitivities' own standard errors, is not resolved";
+  summary << ")\n";
   for (Eigen::Index i = 0; i < n; ++i) {
     const double s = r.singular_values[i];
-    if (s > kUndeterminedSingular) continue;
+    const bool resolved = !svd.Null(static_cast<int>(i));
+    if (resolved && s > kUndeterminedSingular) continue;
     UndeterminedDirection d;
     for (Eigen::Index k = 0; k < n; ++k) {
       d.unit_direction.push_back(svd.vectors(k, i));
       d.si_direction.push_back(svd.vectors(k, i) * si_per_unit[k]);
     }
     d.singular_value = s;
-    d.sigma_unit = s > 0 ? 1 / s : std::numeric_limits<double>::infinity();
+    d.sigma_unit = resolved ? 1 / s : std::numeric_limits<double>::infinity();
     d.description = Describe(d, names);
     summary << d.description << "\n";
     r.undetermined.push_back(std::move(d));

@@ -43,9 +43,12 @@ struct IdentifiabilityReport {
 };
 
 // names and si_per_unit: one per column of J. Components with |v_k| < 0.1·max|v| are left out of
-// the words (they barely take part in the trade-off); the vectors keep them.
+// the words (they barely take part in the trade-off); the vectors keep them. noise_floor
+// (jacobian_svd.h): a singular value at or below it is not resolved above the noise of J's
+// entries and counts as zero (the combination is undetermined, σ = +∞).
 IdentifiabilityReport AnalyseIdentifiability(const Eigen::MatrixXd& jacobian,
                                              const std::vector<std::string>& names,
-                                             const std::vector<double>& si_per_unit);
+                                             const std::vector<double>& si_per_unit,
+                                             double noise_floor = 0);
 
 }  // namespace demcal::calibrate

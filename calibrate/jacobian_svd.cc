@@ -2,7 +2,7 @@
 
 namespace demcal::calibrate {
 
-JacobianSvd DecomposeJacobian(const Eigen::MatrixXd& jacobian) {
+JacobianSvd DecomposeJacobian(const Eigen::MatrixXd& jacobian, double noise_floor) {
   const Eigen::Index n = jacobian.cols();
   JacobianSvd out;
   out.values = Eigen::VectorXd::Zero(n);
@@ -15,7 +15,7 @@ JacobianSvd DecomposeJacobian(const Eigen::MatrixXd& jacobian) {
   }
   const double s_max = out.values(0);
   for (Eigen::Index i = 0; i < n; ++i)
-    if (out.values(i) > 0 && out.values(i) > kRankTolerance * s_max)
+    if (out.values(i) > 0 && out.values(i) > kRankTolerance * s_max && out.values(i) > noise_floor)
       out.rank = static_cast<int>(i) + 1;
   // Sign convention: the largest component of each vector is positive (reports are stable).
   for (Eigen::Index i = 0; i < n; ++i) {
@@ -24,6 +24,11 @@ JacobianSvd DecomposeJacobian(const Eigen::MatrixXd& jacobian) {
     if (out.vectors(k, i) < 0) out.vectors.col(i) *= -1;
   }
   return out;
+}
+
+double JacobianNoiseFloor(const Eigen::MatrixXd& jacobian_sigma) {
+  if (jacobian_sigma.size() == 0 || !jacobian_sigma.allFinite()) return 0;
+  return jacobian_sigma.norm();  // Frobenius
 }
 
 }  // namespace demcal::calibrate

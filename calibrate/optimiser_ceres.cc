@@ -23,6 +23,14 @@
 // at Ceres' own tolerances (converged), or when the next batch would exceed max_evaluations
 // (budget). A failed sample (ok = false) makes CostFunction::Evaluate return false: Ceres treats
 // it as infeasible and shrinks its step. Candidates already evaluated are not asked again.
+//
+// Candidate lattice. Every point Ceres asks for is rounded to the lattice of spacing
+// unit_tolerance in the unit cube, so points closer than the tolerance are one candidate (run
+// once, then read back). Without it, a rejected step on a noisy objective made Ceres shrink its
+// trust region and ask for points 1e-3, 1e-5, 1e-8 away from the same centre, each with a full
+// finite-difference stencil of new runs (seen on the DEM twin: 12 of its 29 candidates lay
+// within 2e-3 of earlier ones). On the lattice such a step lands on a known point, the cost does not change,
+// and Ceres stops at its parameter tolerance instead.
 #include <ceres/ceres.h>
 
 #include <algorithm>
@@ -92,10 +100,17 @@ class Trials {
   bool matched_ = false, budget_hit_ = false, halt_ = false;
 };
 
+// x rounded to the lattice of spacing `tolerance` in [0, 1] (see above).
+std::vector<double> Snap(std::vector<double> x, double tolerance) {
+  for (double& v : x) v = std::clamp(std::round(v / tolerance) * tolerance, 0.0, 1.0);
+  return x;
+}
+
 class FiniteDifferenceCost final : public ceres::CostFunction {
  public:
-  FiniteDifferenceCost(Trials* trials, std::vector<double> weights, double step, int n)
-      : trials_(trials), weights_(std::move(weights)), step_(step), n_(n) {
+  FiniteDifferenceCost(Trials* trials, std::vector<double> weights, double step, int n,
+                       double lattice)
+      : trials_(trials), weights_(std::move(weights)), step_(step), n_(n), lattice_(lattice) {
     set_num_residuals(static_cast<int>(weights_.size()));
     mutable_parameter_block_sizes()->push_back(n);
   }
@@ -103,14 +118,15 @@ class FiniteDifferenceCost final : public ceres::CostFunction {
   bool Evaluate(double const* const* parameters, double* residuals,
                 double** jacobians) const override {
     if (trials_->stop()) return false;  // the callback ends the solve
-    const std::vector<double> x(parameters[0], parameters[0] + n_);
+    const std::vector<double> x =
+        Snap(std::vector<double>(parameters[0], parameters[0] + n_), lattice_);
     std::vector<std::vector<double>> points{x};
     std::vector<int> lo(n_, 0), hi(n_, 0);  // indices of the offset points (0: the centre)
     const bool jacobian = jacobians && jacobians[0];
     if (jacobian)
       for (int k = 0; k < n_; ++k) {
-        if (x[k] + step_ <= 1) hi[k] = Push(x, k, step_, &points);
-        if (x[k] - step_ >= 0) lo[k] = Push(x, k, -step_, &points);
+        if (x[k] + step_ <= 1) hi[k] = Push(x, k, step_, lattice_, &points);
+        if (x[k] - step_ >= 0) lo[k] = Push(x, k, -step_, lattice_, &points);
       }
     if (!trials_->Ensure(points)) return false;
     const TrialResult& c = trials_->At(x);
@@ -133,16 +149,18 @@ class FiniteDifferenceCost final : public ceres::CostFunction {
   }
 
  private:
-  static int Push(const std::vector<double>& x, int k, double h,
+  static int Push(const std::vector<double>& x, int k, double h, double lattice,
                   std::vector<std::vector<double>>* points) {
-    points->push_back(x);
-    points->back()[k] += h;
+    std::vector<double> offset = x;
+    offset[k] += h;
+    points->push_back(Snap(offset, lattice));
     return static_cast<int>(points->size()) - 1;
   }
   Trials* trials_;
   std::vector<double> weights_;
   double step_;
   int n_;
+  double lattice_;
 };
 
 class StopWhenTold final : public ceres::IterationCallback {
@@ -157,7 +175,7 @@ class StopWhenTold final : public ceres::IterationCallback {
 };
 
 // ceres::Covariance of the unit parameters at `best` (DENSE_SVD; false on a rank-deficient J).
-void Covariance(ceres::Problem* problem, const ceres::CostFunction& cost, double* x,
+void Covariance(ceres::Problem* problem, const ceres::CostFunction& cost, Trials* trials, double* x,
                 const std::vector<double>& best, OptimiserResult* result) {
   const int n = static_cast<int>(best.size());
   std::copy(best.begin(), best.end(), x);
@@ -165,7 +183,11 @@ void Covariance(ceres::Problem* problem, const ceres::CostFunction& cost, double
   std::vector<double> r(cost.num_residuals()), j(cost.num_residuals() * n);
   double* jacobians[] = {j.data()};
   const double* parameters[] = {x};
-  if (!cost.Evaluate(parameters, r.data(), jacobians)) {
+  const bool evaluated = cost.Evaluate(parameters, r.data(), jacobians);
+  // A point of that stencil may have matched within noise, which asks the solve to stop; the
+  // solve is over, and ceres::Covariance must see the same Evaluate succeed.
+  trials->Release();
+  if (!evaluated) {
     result->covariance_note =
         "ceres::Covariance: not computed (the finite-difference points of the best candidate "
         "are beyond the budget or gave no value)";
@@ -206,8 +228,7 @@ OptimiserResult CeresOptimise(const BatchTrialFunction& trial,
   OptimiserResult result;
   const int n = static_cast<int>(start_unit.size());
   if (n < 1) return result.message = "no parameters", result;
-  std::vector<double> x(start_unit);
-  for (double& v : x) v = std::clamp(v, 0.0, 1.0);
+  std::vector<double> x = Snap(start_unit, options.unit_tolerance);
   Trials trials(trial, options, &result);
   trials.Ensure({x});
   const TrialResult start = trials.At(x);
@@ -231,7 +252,8 @@ OptimiserResult CeresOptimise(const BatchTrialFunction& trial,
   const double step = std::clamp(kSignalToNoise * noise_max / kMinSensitivity, kMinStep, kMaxStep);
 
   ceres::Problem problem;
-  auto* cost = new FiniteDifferenceCost(&trials, weights, step, n);  // owned by the problem
+  auto* cost = new FiniteDifferenceCost(&trials, weights, step, n,
+                                        options.unit_tolerance);  // owned by the problem
   problem.AddResidualBlock(cost, nullptr, x.data());
   for (int k = 0; k < n; ++k) {
     problem.SetParameterLowerBound(x.data(), k, 0.0);
@@ -271,7 +293,7 @@ OptimiserResult CeresOptimise(const BatchTrialFunction& trial,
   // The covariance's Jacobian at the best candidate: its finite-difference points are usually
   // known already; missing ones are evaluated only if the budget still allows.
   trials.Release();
-  if (!result.best_unit.empty()) Covariance(&problem, *cost, x.data(), result.best_unit, &result);
+  if (!result.best_unit.empty()) Covariance(&problem, *cost, &trials, x.data(), result.best_unit, &result);
   return result;
 }
 

@@ -50,8 +50,9 @@ std::vector<double> SiPerUnit(const ParameterSpace& space, const std::vector<dou
 }
 
 ParameterCovariance CovarianceFromJacobian(const Eigen::MatrixXd& jacobian,
-                                           const std::vector<double>& si_per_unit) {
-  const JacobianSvd svd = DecomposeJacobian(jacobian);
+                                           const std::vector<double>& si_per_unit,
+                                           double noise_floor) {
+  const JacobianSvd svd = DecomposeJacobian(jacobian, noise_floor);
   const Eigen::Index n = jacobian.cols();
   Eigen::MatrixXd unit = Eigen::MatrixXd::Zero(n, n);
   std::vector<bool> undetermined(n, false);
@@ -69,7 +70,11 @@ ParameterCovariance CovarianceFromJacobian(const Eigen::MatrixXd& jacobian,
   c.note = svd.rank == n ? "(J^T J)^-1 of the standardised sensitivity matrix"
                          : "J is rank-deficient (rank " + std::to_string(svd.rank) + " of " +
                                std::to_string(n) +
-                               "): parameters along its null space have no "
+                               (noise_floor > 0 ? " above the noise floor " +
+                                                      std::to_string(noise_floor) +
+                                                      " of its entries' standard errors"
+                                                : std::string()) +
+                               "): parameters along the unresolved directions have no "
                                "finite sigma";
   return c;
 }

@@ -37,8 +37,10 @@ struct ParameterCovariance {
 std::vector<double> SiPerUnit(const ParameterSpace& space, const std::vector<double>& unit);
 
 // From J (residuals × parameters, standardised, unit cube) by the SVD pseudo-inverse.
+// noise_floor: singular values at or below it are not resolved (jacobian_svd.h).
 ParameterCovariance CovarianceFromJacobian(const Eigen::MatrixXd& jacobian,
-                                           const std::vector<double>& si_per_unit);
+                                           const std::vector<double>& si_per_unit,
+                                           double noise_floor = 0);
 // From a unit-cube covariance computed elsewhere (ceres::Covariance): full rank by assumption.
 ParameterCovariance CovarianceFromUnit(const Eigen::MatrixXd& covariance_unit,
                                        const std::vector<double>& si_per_unit);

@@ -67,6 +67,8 @@ void Simulation::SerializeState(A& a, const std::vector<std::string>& may_differ
     throw CheckpointRefusal("holds " + std::to_string(factories) + " factories, the scene " +
                             std::to_string(factories_.size()));
   for (ParticleFactory& f : factories_) f.Serialize(a);
+  for (SinkReport& r : sink_reports_) r.Serialize(a);
+  a.Value(last_sink_pass_step_);
 }
 
 bool Simulation::SaveCheckpoint(const std::string& path, std::string* error) const {
@@ -119,6 +121,7 @@ bool Simulation::LoadCheckpointPayload(const std::string& payload, const std::st
   std::string why;
   if (!CheckRestoredState(&why)) return refuse(why);
   PlaceWalls(time_s_);
+  WallRemovedDuringStep(time_s_);
   initialized_ = true;
   return true;
 }

@@ -1,5 +1,7 @@
 #include "core/clumps.h"
 
+#include <algorithm>
+
 namespace demcal::core {
 
 size_t Clumps::Add(int64_t clump_id, int species_index, int material_index,
@@ -70,6 +72,45 @@ void Clumps::RemapSlots(const std::vector<uint32_t>& order) {
   std::vector<uint32_t> new_slot_of_old(order.size());
   for (uint32_t k = 0; k < order.size(); ++k) new_slot_of_old[order[k]] = k;
   for (uint32_t& s : member_slot) s = new_slot_of_old[s];
+}
+
+namespace {
+template <typename T>
+void KeepMarked(std::vector<T>& v, const std::vector<int>& new_index, size_t kept) {
+  std::vector<T> out(kept);
+  for (size_t c = 0; c < new_index.size(); ++c)
+    if (new_index[c] >= 0) out[new_index[c]] = v[c];
+  v.swap(out);
+}
+}  // namespace
+
+std::vector<int> Clumps::Keep(const std::vector<uint8_t>& gone, const std::vector<uint32_t>& order) {
+  std::vector<int> new_index(Size(), -1);
+  int kept = 0;
+  for (size_t c = 0; c < Size(); ++c)
+    if (!gone[c]) new_index[c] = kept++;
+  uint32_t old_slots = 0;
+  for (uint32_t s : member_slot) old_slots = std::max(old_slots, s + 1);
+  for (uint32_t s : order) old_slots = std::max(old_slots, s + 1);
+  std::vector<uint32_t> new_slot_of_old(old_slots, 0);
+  for (uint32_t k = 0; k < order.size(); ++k) new_slot_of_old[order[k]] = k;
+  std::vector<uint32_t> start{0}, slots;
+  std::vector<Vec3> offsets;
+  for (size_t c = 0; c < Size(); ++c) {
+    if (gone[c]) continue;
+    for (uint32_t k = member_start[c]; k < member_start[c + 1]; ++k) {
+      slots.push_back(new_slot_of_old[member_slot[k]]);
+      offsets.push_back(member_offset_m[k]);
+    }
+    start.push_back(static_cast<uint32_t>(slots.size()));
+  }
+  KeepMarked(position_m, new_index, kept), KeepMarked(velocity_m_s, new_index, kept);
+  KeepMarked(rotation, new_index, kept), KeepMarked(principal_inertia_kg_m2, new_index, kept);
+  KeepMarked(mass_kg, new_index, kept), KeepMarked(force_N, new_index, kept);
+  KeepMarked(torque_N_m, new_index, kept), KeepMarked(species, new_index, kept);
+  KeepMarked(id, new_index, kept);
+  member_start.swap(start), member_slot.swap(slots), member_offset_m.swap(offsets);
+  return new_index;
 }
 
 double Clumps::KineticEnergy(size_t c) const {

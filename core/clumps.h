@@ -57,6 +57,10 @@ struct Clumps {
   void ReduceForces(size_t c, const Particles& particles, const Vec3& gravity);
   // Updates member slots after Particles::Permute(order) (order[new] = old).
   void RemapSlots(const std::vector<uint32_t>& order);
+  // Drops the clumps with gone[c] after their members were dropped from Particles by
+  // Permute(order) (order[new] = old, shorter than before); returns each old clump's new index
+  // (−1 if dropped).
+  std::vector<int> Keep(const std::vector<uint8_t>& gone, const std::vector<uint32_t>& order);
 
   Vec3 AngularVelocity(size_t c) const {
     return demcal::core::AngularVelocity(rotation[c], principal_inertia_kg_m2[c]);

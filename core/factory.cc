@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace demcal::core {
 
@@ -38,7 +39,15 @@ int64_t ParticleFactory::Update(double t, ParticleSystem& system) {
     report_.active_time_s += span;
     owed_kg_ += requested;
     InsertionRequest q;
-    q.region = spec_.region;
+    q.region = RegionAt(next_batch_s_);
+    if (spec_.follow_heap_clearance_m > 0) {
+      const double lift = HeapTop(system.spheres, q.region) + spec_.follow_heap_clearance_m -
+                          q.region.min_m.z;
+      if (lift > 0) {
+        report_.region_lift_m += lift;
+        q.region = RegionAt(next_batch_s_);
+      }
+    }
     q.mixture = mixture_;
     q.max_mass_kg = owed_kg_;
     q.velocity_m_s = spec_.velocity_m_s;
@@ -51,6 +60,33 @@ int64_t ParticleFactory::Update(double t, ParticleSystem& system) {
     next_batch_s_ += interval_;
   }
   return added;
+}
+
+InsertionRegion ParticleFactory::RegionAt(double time_s) const {
+  const double moving_s = std::clamp(time_s, spec_.start_s, spec_.end_s) - spec_.start_s;
+  const Vec3 shift = spec_.region_velocity_m_s * moving_s + Vec3{0, 0, report_.region_lift_m};
+  InsertionRegion r = spec_.region;
+  r.min_m = r.min_m + shift;
+  r.max_m = r.max_m + shift;
+  r.axis_point_m = r.axis_point_m + shift;
+  return r;
+}
+
+double ParticleFactory::HeapTop(const Particles& p, const InsertionRegion& region) const {
+  const double ceiling = region.min_m.z - 0.5 * spec_.follow_heap_clearance_m;
+  const double v2 = spec_.settled_speed_m_s * spec_.settled_speed_m_s;
+  constexpr double kLow = -std::numeric_limits<double>::infinity();
+  double top[3] = {kLow, kLow, kLow};  // the three highest, descending
+  for (size_t i = 0; i < p.Size(); ++i) {
+    const Vec3& x = p.position_m[i];
+    if (x.z >= ceiling || x.x < region.min_m.x || x.x > region.max_m.x ||
+        x.y < region.min_m.y || x.y > region.max_m.y || Norm2(p.velocity_m_s[i]) >= v2)
+      continue;
+    double h = x.z + p.radius_m[i];
+    for (double& t : top)
+      if (h > t) std::swap(h, t);
+  }
+  return top[2];
 }
 
 }  // namespace demcal::core

@@ -151,6 +151,22 @@ void ParticleSystem::Permute(const std::vector<uint32_t>& order) {
   clumps.RemapSlots(order);
 }
 
+std::vector<uint32_t> ParticleSystem::Remove(const std::vector<uint8_t>& sphere_gone,
+                                            const std::vector<uint8_t>& clump_gone) {
+  std::vector<uint32_t> order;
+  order.reserve(spheres.Size());
+  for (uint32_t s = 0; s < spheres.Size(); ++s) {
+    const int c = spheres.body[s];
+    if (!(c < 0 ? sphere_gone[s] : clump_gone[c])) order.push_back(s);
+  }
+  if (order.size() == spheres.Size()) return order;
+  spheres.Permute(order);  // shorter order: the removed slots are dropped
+  const std::vector<int> new_clump = clumps.Keep(clump_gone, order);
+  for (int& c : spheres.body)
+    if (c >= 0) c = new_clump[c];
+  return order;
+}
+
 Quaternion UniformRandomOrientation(double u1, double u2, double u3) {
   const double a = std::sqrt(1 - u1), b = std::sqrt(u1);
   const double t1 = 2 * std::numbers::pi * u2, t2 = 2 * std::numbers::pi * u3;

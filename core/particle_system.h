@@ -64,6 +64,11 @@ struct ParticleSystem {
   void WrapPeriodic(const PeriodicBox& box);
   // Reorders sphere slots (Particles::Permute) and keeps clump member slots consistent.
   void Permute(const std::vector<uint32_t>& order);
+  // Removes free spheres with sphere_gone[slot] and clumps with clump_gone[c] (with all their
+  // members; their members' sphere_gone entries are ignored). The remaining slots keep their
+  // order; returns the old slot of each new one (order[new] = old) for history transfer.
+  std::vector<uint32_t> Remove(const std::vector<uint8_t>& sphere_gone,
+                               const std::vector<uint8_t>& clump_gone);
   size_t BodyCount() const;
 };
 

@@ -27,7 +27,7 @@ size_t Particles::Add(int64_t particle_id, int species_index, int material_index
 namespace {
 template <typename T>
 void ApplyOrder(std::vector<T>& v, const std::vector<uint32_t>& order) {
-  std::vector<T> out(v.size());
+  std::vector<T> out(order.size());
   for (size_t k = 0; k < order.size(); ++k) out[k] = v[order[k]];
   v.swap(out);
 }

@@ -47,7 +47,8 @@ struct Particles {
   // damping still uses its real mass in m*, so restitution against it is approximate. Its force
   // and torque are zeroed: the engine no longer computes them (Simulation::Options).
   void Fix(size_t i);
-  // Reorders every per-particle array so that new slot k holds old slot order[k].
+  // Reorders every per-particle array so that new slot k holds old slot order[k]; an order
+  // shorter than Size() drops the slots it does not name.
   void Permute(const std::vector<uint32_t>& order);
 
   // Translational + rotational kinetic energy of sphere i if it is free (0 for a clump member,

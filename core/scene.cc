@@ -248,9 +248,9 @@ void CheckParticles(const Scene& s, Checker& c) {
     if (fl.species < 0 || fl.species >= ns) c.Fail("field '" + f + ".species' names no defined species");
     c.Range(f + ".count", static_cast<double>(fl.count), 0, 1e8, true, false);
     for (int a = 0; a < 3; ++a) {
-      if (!(fl.region_max_m[a] > fl.region_min_m[a]))
-        c.Fail("field '" + f + ".region.max_m' must exceed 'region.min_m' on every axis");
-      if (fl.region_min_m[a] < s.domain_min_m[a] || fl.region_max_m[a] > s.domain_max_m[a])
+      if (!(fl.region.max_m[a] > fl.region.min_m[a]))
+        c.Fail("field '" + f + ".region' must be non-empty on every axis");
+      if (fl.region.min_m[a] < s.domain_min_m[a] || fl.region.max_m[a] > s.domain_max_m[a])
         c.Fail("field '" + f + ".region' must lie inside the domain");
     }
   }
@@ -285,6 +285,10 @@ void CheckFactories(const Scene& s, Checker& c) {
     if (!std::isinf(f.total_mass_kg))
       c.Range(name + ".total_mass_kg", f.total_mass_kg, 0, 1e9, true, false, "kg");
     c.Range(name + ".batch_interval_s", f.batch_interval_s, 0, 1e6, false, false, "s");
+    c.Range(name + ".follow_heap.clearance_m", f.follow_heap_clearance_m, 0, 1e3, false, false, "m");
+    c.Range(name + ".follow_heap.settled_speed_m_s", f.settled_speed_m_s, 0, 1e3, true, false, "m/s");
+    if (!IsFinite(f.region_velocity_m_s))
+      c.Fail("field '" + name + ".region_velocity_m_s' must be finite");
     for (int a = 0; a < 3; ++a)
       if (f.region.min_m[a] < s.domain_min_m[a] || f.region.max_m[a] > s.domain_max_m[a] ||
           !(f.region.max_m[a] > f.region.min_m[a]))
@@ -347,6 +351,10 @@ bool Scene::IsValid(std::string* error) const {
   if (c.ok()) CheckGeometry(*this, c);
   if (c.ok()) CheckParticles(*this, c);
   if (c.ok()) CheckFactories(*this, c);
+  for (size_t i = 0; i < sinks.size() && c.ok(); ++i) {
+    const std::string problem = SinkProblem(sinks[i]);
+    if (!problem.empty()) c.Fail("field '" + Indexed("sinks", i) + problem);
+  }
   RollingModel model;
   if (c.ok() && !MakeRollingModel(rolling, &model))
     c.Fail("field 'contact_model.rolling' = '" + rolling.name + "' is not one of none|cdt|epsd|epsd2");

@@ -15,7 +15,9 @@
 #include "core/contact/rolling_model.h"
 #include "core/factory.h"
 #include "core/interaction_table.h"
+#include "core/insertion_region.h"
 #include "core/material.h"
+#include "core/sink.h"
 #include "core/quaternion.h"
 #include "core/vec3.h"
 #include "core/walls.h"
@@ -33,11 +35,18 @@ struct ParticleSpec {
   bool fixed = false;     // glued in place (infinite mass and inertia): a rough base layer
 };
 
-// Fill an axis-aligned box region at t = 0 with `count` non-overlapping particles of a species
-// at random positions (deterministic from the scene seed).
+// Fill a region (an axis-aligned box or a vertical cylinder: a silo) at t = 0 with `count`
+// non-overlapping particles of a species at random positions (deterministic from the seed).
 struct FillSpec {
+  FillSpec() = default;
+  FillSpec(int species_index, const Vec3& box_min_m, const Vec3& box_max_m, int64_t n,
+           const Vec3& velocity = {})
+      : FillSpec(species_index, InsertionRegion::Box(box_min_m, box_max_m), n, velocity) {}
+  FillSpec(int species_index, const InsertionRegion& where, int64_t n, const Vec3& velocity = {})
+      : species(species_index), region(where), count(n), velocity_m_s(velocity) {}
+
   int species = 0;
-  Vec3 region_min_m, region_max_m;
+  InsertionRegion region;
   int64_t count = 0;
   Vec3 velocity_m_s;
 };
@@ -55,12 +64,13 @@ struct Scene {
   std::vector<PairParameters> pair_parameters;  // materials² entries, symmetric, row-major
   RollingModelSpec rolling;
   std::vector<Wall> walls;  // meshes already read (see ReadMeshWall); PlaneWall converts
-  Vec3 domain_min_m, domain_max_m;  // a particle leaving this box ends the run
+  Vec3 domain_min_m, domain_max_m;  // a particle leaving this box ends the run (no sinks)
   std::array<bool, 3> periodic{};   // periodic boundaries along x, y, z of the domain box
   Vec3 gravity_m_s2{0, 0, -9.81};
   std::vector<ParticleSpec> particles;
   std::vector<FillSpec> fills;
   std::vector<FactorySpec> factories;
+  std::vector<SinkSpec> sinks;  // see sink.h; with any, leaving the domain removes a particle
   uint64_t seed = 1;
   TimeSettings time;
   double skin_m = 0;           // Verlet skin; 0 = automatic (see NeighbourSkin)

@@ -68,7 +68,14 @@ std::vector<FingerprintPart> SceneFingerprint(const Scene& s, double timestep_s,
   }));
   parts.push_back(Part("wall motion", [&](Fnv1a64& h) {
     for (const Wall& w : s.walls)
-      h.Field(w.velocity_m_s), h.Field(w.motion_start_s), h.Field(w.motion_end_s);
+      h.Field(w.velocity_m_s), h.Field(w.motion_start_s), h.Field(w.motion_end_s),
+          h.Field(w.remove_at_s);
+  }));
+  // The checkpoint carries one tally per sink: another sink list is another scene.
+  parts.push_back(Part("sinks", [&](Fnv1a64& h) {
+    for (const SinkSpec& k : s.sinks)
+      h.Text(k.name), h.Field(static_cast<int>(k.shape)), h.Field(k.point_m), h.Field(k.normal),
+          h.Field(k.min_m), h.Field(k.max_m);
   }));
   parts.push_back(Part("domain", [&](Fnv1a64& h) {
     h.Field(s.domain_min_m), h.Field(s.domain_max_m);

@@ -79,6 +79,14 @@ bool Simulation::Initialize(std::string* error) {
   walls_move_ = false;
   for (const Wall& w : walls_) walls_move_ = walls_move_ || w.Moves();
   PlaceWalls(time_s_);
+  WallRemovedDuringStep(time_s_);
+  sink_reports_.clear();
+  for (const SinkSpec& sink : scene_.sinks)
+    sink_reports_.push_back({sink.name, std::vector<int64_t>(scene_.species.size(), 0),
+                             std::vector<double>(scene_.species.size(), 0.0)});
+  if (!scene_.sinks.empty())
+    sink_reports_.push_back({"domain", std::vector<int64_t>(scene_.species.size(), 0),
+                             std::vector<double>(scene_.species.size(), 0.0)});
   arena_->execute([&] {
     RebuildNeighbours(true);
     ComputeForces(time_s_);
@@ -114,7 +122,7 @@ void Simulation::PlaceInitialParticles(std::string* error) {
     const Species& sp = scene_.species[fill.species];
     Rng fill_rng(DeriveSeed(scene_.seed, 1 + f));
     InsertionRequest q;
-    q.region = InsertionRegion::Box(fill.region_min_m, fill.region_max_m);
+    q.region = fill.region;
     q.mixture = {{fill.species, sp.material, scene_.materials[sp.material].density_kg_m3, &sp.size, 1}};
     q.max_count = fill.count;
     q.velocity_m_s = fill.velocity_m_s;
@@ -167,7 +175,7 @@ std::vector<FactoryReport> Simulation::FactoryReports() const {
   return reports;
 }
 
-void Simulation::RebuildNeighbours(bool allow_reorder) {
+void Simulation::RebuildNeighbours(bool allow_reorder, const std::vector<uint32_t>& removed) {
   std::swap(list_, spare_list_);
   std::vector<uint32_t> order;
   const bool reorder = allow_reorder && options_.reorder_every_rebuilds > 0 &&
@@ -198,6 +206,18 @@ void Simulation::RebuildNeighbours(bool allow_reorder) {
     system_.Permute(order);
   }
   ++rebuilds_since_reorder_;
+  if (!removed.empty() || slots_before_removal_ > 0) {
+    // The history transfer needs each slot's slot before this step: compose with the removal
+    // (newcomers appended after it map past the old slots: no history).
+    if (order.empty()) {
+      order.resize(n);
+      std::iota(order.begin(), order.end(), 0u);
+    }
+    for (uint32_t& s : order)
+      s = s < removed.size() ? removed[s]
+                             : static_cast<uint32_t>(slots_before_removal_ + (s - removed.size()));
+    slots_before_removal_ = 0;
+  }
   const std::vector<int>* body = system_.clumps.Size() ? &p.body : nullptr;
   if (order.empty() && options_.neighbour_refresh_fraction > 0)  // same slots: keep unmoved rows
     list_.Update(list_settings_, p.position_m, p.radius_m, body, moving, spare_list_,
@@ -245,12 +265,20 @@ void Simulation::Step() {
   lap(phases_.integrate_s);
   const double t = time_s_ + dt_;  // the time of the drifted positions
   PlaceWalls(t);
+  const bool wall_removed = WallRemovedDuringStep(t);
   const bool inserted = !factories_.empty() && InsertFromFactories();
   lap(phases_.insert_s);
-  const bool rebuild = inserted || list_.NeedsRebuild(system_.spheres.position_m);
+  const bool rebuild = inserted || wall_removed || list_.NeedsRebuild(system_.spheres.position_m);
   lap(phases_.rebuild_check_s);
   if (rebuild) {
-    RebuildNeighbours(true);
+    // Sinks take their particles at a rebuild (the slots change, so the list is built anew),
+    // at most once per sink_every_steps: removal then costs a full build now and then.
+    bool removed = false;
+    if (!sink_reports_.empty() && steps_ + 1 - last_sink_pass_step_ >= options_.sink_every_steps) {
+      last_sink_pass_step_ = steps_ + 1;
+      removed = RemoveSunkParticles();
+    }
+    RebuildNeighbours(true, removed ? removal_order_ : std::vector<uint32_t>{});
     lap(phases_.rebuild_s);
   }
   ComputeForces(t);

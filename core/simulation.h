@@ -44,6 +44,12 @@ class Simulation {
     // more than this fraction of the skin from their reference position are re-searched, the
     // rows of the others are kept. Range (0, 0.5]; 0: every rebuild searches all particles.
     double neighbour_refresh_fraction = 0.25;
+    // Sinks (Scene::sinks) remove the particles that reached them at the first neighbour
+    // rebuild at least this many steps after their previous pass (as LIGGGHTS deletes lost
+    // atoms when it re-neighbours). A removal changes the slots, so that rebuild is a full
+    // build instead of an incremental one: the cadence bounds that cost. A grain that crossed a
+    // sink is fast, so rebuilds come every few steps: 50 steps at Δt ~ 2e-5 s is a ~1 ms lag.
+    int sink_every_steps = 50;
   };
   // Called during Run() after every step whose step count (steps(), counted from the start of
   // the simulation, so a restarted run keeps the cadence) is a multiple of `every_steps`;
@@ -101,6 +107,9 @@ class Simulation {
   // Wall time per phase of the step since Initialize (RunSummary::phases has one Run's).
   const PhaseTimes& phases() const { return phases_; }
   std::vector<FactoryReport> FactoryReports() const;
+  // Per sink (scene order), then the implicit "domain" sink when the scene has sinks: what
+  // each has removed so far, per species.
+  const std::vector<SinkReport>& SinkReports() const { return sink_reports_; }
 
  private:
   void PlaceInitialParticles(std::string* error);
@@ -113,6 +122,11 @@ class Simulation {
   // Adds the work the moving walls did on the particles this step to the energy budget.
   void AddWallWork(double time_s);
   void ComputeForces(double time_s);
+  // Removes the particles that reached a sink; true if any were, with removal_order_ holding
+  // the old slot of each remaining one.
+  bool RemoveSunkParticles();
+  // Marks the walls removed by time t (Wall::remove_at_s); true if that changed any.
+  bool WallRemovedDuringStep(double time_s);
   template <class A>
   void SerializeState(A& a, const std::vector<std::string>& may_differ);
   std::vector<FingerprintPart> Fingerprint() const;
@@ -122,7 +136,8 @@ class Simulation {
   bool CheckRestoredState(std::string* error) const;
   bool CheckRestoredBodies(std::string* error) const;
   bool CheckRestoredProgress(std::string* error) const;
-  void RebuildNeighbours(bool allow_reorder);
+  // `removed` (may be empty): the old slot of each remaining slot after a removal this step.
+  void RebuildNeighbours(bool allow_reorder, const std::vector<uint32_t>& removed = {});
   // Returns kOk, or the failure found by the periodic checks (and fills message).
   Termination Check(std::string* message) const;
 
@@ -139,6 +154,11 @@ class Simulation {
   std::vector<Wall> walls_;  // current placement of scene_.walls
   bool walls_move_ = false;
   std::vector<ParticleFactory> factories_;
+  std::vector<SinkReport> sink_reports_;
+  std::vector<uint8_t> sphere_gone_, clump_gone_;  // removal scratch
+  std::vector<uint32_t> removal_order_;
+  size_t slots_before_removal_ = 0;  // sphere slots before this step's removal (0: none)
+  int64_t last_sink_pass_step_ = 0;  // step of the last sink pass (checkpointed)
   double dt_ = 0;
   double time_s_ = 0;
   int64_t steps_ = 0;

@@ -14,8 +14,10 @@ namespace demcal::core {
 Termination Simulation::Check(std::string* message) const {
   const Particles& p = system_.spheres;
   Vec3 lo = scene_.domain_min_m, hi = scene_.domain_max_m;
-  for (int a = 0; a < 3; ++a)  // periodic axes wrap instead of losing particles
-    if (scene_.periodic[a]) lo[a] = -std::numeric_limits<double>::infinity(), hi[a] = -lo[a];
+  for (int a = 0; a < 3; ++a)  // periodic axes wrap instead of losing particles; with sinks,
+    // a particle outside the domain is removed at the next sink pass (not a failure)
+    if (scene_.periodic[a] || !scene_.sinks.empty())
+      lo[a] = -std::numeric_limits<double>::infinity(), hi[a] = -lo[a];
   struct Found { int64_t non_finite = -1, outside = -1; };
   const Found found = tbb::parallel_reduce(
       tbb::blocked_range<size_t>(0, p.Size()), Found{},

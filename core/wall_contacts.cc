@@ -41,6 +41,7 @@ void WallContacts::Rebuild(const Particles& p, const std::vector<uint32_t>& orde
   for (size_t i = 0; i < n; ++i) {
     for (uint32_t w = 0; i < moving && w < walls.size(); ++w) {
       const Wall& wall = walls[w];
+      if (wall.removed) continue;
       if (!wall.Moves() && !WithinSkin(wall, p.position_m[i], p.radius_m[i], skin_m, triangles))
         continue;
       const bool is_mesh = std::holds_alternative<MeshRef>(wall.shape);

@@ -79,6 +79,11 @@ struct Wall {
   double motion_end_s = std::numeric_limits<double>::infinity();
   Vec3 load_point_m;  // reference point of the reported torque; moves with the wall
   bool shell = true;  // cylinder and cone: two-sided thin shell (see "Sides"); else ignored
+  // Taken away at this time (an orifice opened by removing its plug): from the first step that
+  // ends at or after it, no particle touches the wall and its load is zero. Infinity: never.
+  double remove_at_s = std::numeric_limits<double>::infinity();
+  // Set by the engine on its placed copy (Simulation::walls()) once removed; not a scene input.
+  bool removed = false;
 
   Wall() = default;
   Wall(std::string wall_name, int wall_material, WallShape wall_shape)

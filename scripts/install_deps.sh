@@ -2,7 +2,8 @@
 # Installs the Debian packages demcal needs (only those missing). Run as root on Debian 12.
 set -euo pipefail
 packages=(g++ cmake ninja-build pkg-config libeigen3-dev libtbb-dev libnlopt-cxx-dev libceres-dev
-          libcli11-dev catch2 nlohmann-json3-dev gnuplot-nox)
+          libcli11-dev catch2 nlohmann-json3-dev gnuplot-nox
+          chromium)  # chromium: headless browser test of the HTML reports (html_report.browser)
 # scripts/fuzz.sh and scripts/sanitize.sh: clang with libFuzzer and the sanitizer runtimes.
 if [[ "${1:-}" == "--fuzz" ]]; then packages+=(clang-14 libclang-rt-14-dev); fi
 missing=()

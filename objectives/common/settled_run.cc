@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "objectives/common/surface_change.h"
+
 namespace demcal::objectives {
 
 double SpecificKineticEnergy(const core::Simulation& sim) {
@@ -31,6 +33,9 @@ SettleResult RunUntilSettled(core::Simulation& sim, const SettleCriteria& criter
   // Expected end for the progress display: the pour plus a settling time of the same order.
   const double expected_end = std::min(criteria.max_time_s, earliest + 0.3);
   bool settled = false;
+  SurfaceGrid window_start;
+  double window_start_s = -1;
+  int quiet_windows = 0;  // consecutive windows below surface_change_d
   core::Simulation::Observer observer;
   observer.every_steps =
       std::max<int64_t>(1, std::llround(criteria.check_interval_s / sim.timestep_s()));
@@ -38,7 +43,25 @@ SettleResult RunUntilSettled(core::Simulation& sim, const SettleCriteria& criter
     if (progress) progress(s.time_s(), std::max(expected_end, s.time_s()));
     if (s.time_s() < earliest) return true;
     result.specific_kinetic_J_kg = SpecificKineticEnergy(s);
-    settled = result.specific_kinetic_J_kg < criteria.specific_kinetic_J_kg;
+    if (result.specific_kinetic_J_kg < criteria.specific_kinetic_J_kg) {
+      result.settled_by = "kinetic_energy";
+      return !(settled = true);
+    }
+    if (!(criteria.surface_window_s > 0)) return true;
+    const bool first = window_start_s < 0;
+    if (!first && s.time_s() - window_start_s < criteria.surface_window_s - 1e-12) return true;
+    const double d = MeanMovingDiameter(s);
+    SurfaceGrid now = MovingSurface(s, 2 * d);
+    if (!first) {
+      result.surface_change_d = MeanSurfaceChange(window_start, now, d) / d;
+      quiet_windows = result.surface_change_d < criteria.surface_change_d ? quiet_windows + 1 : 0;
+    }
+    window_start = std::move(now);
+    window_start_s = s.time_s();
+    if (quiet_windows >= 2) {
+      result.settled_by = "surface";
+      settled = true;
+    }
     return !settled;
   };
   result.run = sim.Run(std::max(0.0, criteria.max_time_s - sim.time_s()), observer);
@@ -50,6 +73,9 @@ SettleResult RunUntilSettled(core::Simulation& sim, const SettleCriteria& criter
     std::ostringstream os;
     os << "not settled after " << criteria.max_time_s << " s: specific kinetic energy "
        << result.specific_kinetic_J_kg << " J/kg >= " << criteria.specific_kinetic_J_kg << " J/kg";
+    if (criteria.surface_window_s > 0 && result.surface_change_d >= 0)
+      os << ", surface change " << result.surface_change_d << " d per " << criteria.surface_window_s
+         << " s >= " << criteria.surface_change_d << " d";
     result.status = "not_settled";
     result.message = os.str();
   }

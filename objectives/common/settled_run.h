@@ -1,8 +1,13 @@
 #pragma once
 // RunUntilSettled: runs a poured experiment until the feed has finished and the particles have
-// come to rest (mean specific kinetic energy below a threshold, physics of a static heap), or
-// until a time limit. A run that does not settle in time, or that fails in the engine, is a
-// normal outcome reported in the status, never an exception.
+// come to rest, or until a time limit. Settled is either of:
+//  * "kinetic_energy": the mean specific kinetic energy is below a threshold (physics of a
+//    static heap; an absolute figure, so a large heap that still creeps may never meet it);
+//  * "surface" (scale-free): the heap surface no longer changes — over two consecutive windows
+//    of surface_window_s the top of the moving grains per square cell of two mean diameters
+//    (surface_change.h) moved on average less than surface_change_d mean diameters.
+// A run that does not settle in time, or that fails in the engine, is a normal outcome reported
+// in the status, never an exception.
 #include <functional>
 #include <string>
 
@@ -16,6 +21,13 @@ struct SettleCriteria {
   double specific_kinetic_J_kg = 1e-5;   // KE / mass of the moving particles below this
   double check_interval_s = 0.01;        // of simulated time
   double max_time_s = 10;                // give up (status "not_settled")
+  // The surface criterion (0: off). 0.1 s is ~7 free-fall times √(d/g) of a 2 mm grain, so a
+  // window sees any avalanche still running; 0.02 d per window: on a flank ~30 d long that
+  // tilts a fitted repose angle by < 0.04° per window, far below the replicate spread of the
+  // angle (0.5–1°), while grains that only rattle in place (the creep of a large heap at
+  // 1–4e-5 J/kg) leave the surface where it is.
+  double surface_window_s = 0.1;
+  double surface_change_d = 0.02;
 };
 
 struct SettleResult {
@@ -24,6 +36,8 @@ struct SettleResult {
   core::RunSummary run;
   double settle_time_s = 0;     // simulated time when the criterion was met
   double specific_kinetic_J_kg = 0;
+  std::string settled_by;       // "kinetic_energy" or "surface" when ok
+  double surface_change_d = -1; // of the last full surface window (mean diameters; −1: none)
   bool ok() const { return status == "ok"; }
 };
 

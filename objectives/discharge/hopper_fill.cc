@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/random.h"
+#include "objectives/discharge/sphere_mass_share.h"
 
 namespace demcal::objectives {
 
@@ -153,11 +154,12 @@ double HopperBulkDensity(const core::Particles& p, const HopperGeometry& h, doub
     const double r = std::max(0.0, HopperRadius(h, z) - d_m);
     volume += kPi * r * r * (z_hi - z_lo) / kSlices;
   }
+  const std::vector<double> share = SphereMassShares(p);  // a clump counts once, not per member
   double mass = 0;
   for (size_t i = 0; i < p.Size(); ++i) {
     const core::Vec3& x = p.position_m[i];
     if (x.z < z_lo || x.z > z_hi) continue;
-    if (std::hypot(x.x, x.y) <= HopperRadius(h, x.z) - d_m) mass += p.mass_kg[i];
+    if (std::hypot(x.x, x.y) <= HopperRadius(h, x.z) - d_m) mass += share[i];
   }
   return volume > 0 ? mass / volume : 0;
 }

@@ -15,8 +15,19 @@ const SegregationIndex& Pick(const SpeciesSegregation& s, bool by_mass) {
   return by_mass ? s.mass : s.number;
 }
 
-double LargestCov(const HeapSegregation& heap, bool by_mass) {
+const IndexFloor* PickFloor(const HeapFloor* floor, int layer, size_t species, bool by_mass) {
+  if (!floor || layer >= static_cast<int>(floor->layers.size())) return nullptr;
+  const RegionFloor& region = floor->layers[layer];
+  if (species >= region.species.size()) return nullptr;
+  const IndexFloor& f = by_mass ? region.species[species].mass : region.species[species].number;
+  return f.defined ? &f : nullptr;
+}
+
+double LargestCov(const HeapSegregation& heap, const HeapFloor* floor, bool by_mass) {
   double top = 0;
+  for (int layer = 0; floor && layer < static_cast<int>(floor->layers.size()); ++layer)
+    for (size_t s = 0; s < floor->layers[layer].species.size(); ++s)
+      if (const IndexFloor* f = PickFloor(floor, layer, s, by_mass)) top = std::max(top, f->cov_high);
   for (const RegionSegregation& layer : heap.layers)
     for (const SpeciesSegregation& s : layer.species) top = std::max(top, Pick(s, by_mass).cov_m);
   for (const SpeciesSegregation& s : heap.whole.species)
@@ -46,16 +57,32 @@ void DrawAxes(SvgCanvas& svg, const LinearMap& px_x, const LinearMap& px_y, int 
   svg.Text(14, kTop - 6, o.by_mass ? "CoV of mass fraction" : "CoV of number fraction", 12);
 }
 
-SvgCanvas DrawPlot(const HeapSegregation& heap, const std::vector<std::string>& names,
-                   const CovLayerPlotOptions& o) {
+// The random-mixture band of one species: high edge left to right, low edge back.
+void DrawBand(SvgCanvas& svg, const LinearMap& px_x, const LinearMap& px_y, const HeapFloor* floor,
+              int layers, size_t species, const std::string& colour, bool by_mass) {
+  std::vector<std::pair<double, double>> high, low;
+  for (int layer = 0; layer < layers; ++layer) {
+    const IndexFloor* f = PickFloor(floor, layer, species, by_mass);
+    if (!f) continue;
+    high.emplace_back(px_x(layer + 1), px_y(f->cov_high));
+    low.emplace_back(px_x(layer + 1), px_y(f->cov_low));
+  }
+  if (high.size() < 2) return;
+  high.insert(high.end(), low.rbegin(), low.rend());
+  svg.Polygon(high, colour, 0.15);
+}
+
+SvgCanvas DrawPlot(const HeapSegregation& heap, const HeapFloor* floor,
+                   const std::vector<std::string>& names, const CovLayerPlotOptions& o) {
   SvgCanvas svg(o.width_px, o.height_px);
   const int layers = static_cast<int>(heap.layers.size());
-  const double y_top = LargestCov(heap, o.by_mass);
+  const double y_top = LargestCov(heap, floor, o.by_mass);
   const LinearMap px_x{0.5, layers + 0.5, kLeft, o.width_px - kRight};
   const LinearMap px_y{0, y_top, o.height_px - kBottom, kTop};
   DrawAxes(svg, px_x, px_y, layers, y_top, o);
   for (size_t s = 0; s < heap.whole.species.size(); ++s) {
     const std::string colour = s < o.species_colours.size() ? o.species_colours[s] : "black";
+    DrawBand(svg, px_x, px_y, floor, layers, s, colour, o.by_mass);
     std::vector<std::pair<double, double>> line;
     for (int layer = 0; layer < layers; ++layer) {
       const SegregationIndex& index = Pick(heap.layers[layer].species[s], o.by_mass);
@@ -75,21 +102,24 @@ SvgCanvas DrawPlot(const HeapSegregation& heap, const std::vector<std::string>& 
   }
   svg.Text(o.width_px - kRight + 10, kTop + 18.0 * (heap.whole.species.size() + 1.5),
            "dashed: whole heap", 10);
+  if (floor)
+    svg.Text(o.width_px - kRight + 10, kTop + 18.0 * (heap.whole.species.size() + 2.3),
+             "band: 95% random", 10);
   return svg;
 }
 
 }  // namespace
 
-std::string CovLayerPlotSvg(const HeapSegregation& heap,
+std::string CovLayerPlotSvg(const HeapSegregation& heap, const HeapFloor* floor,
                             const std::vector<std::string>& species_names,
                             const CovLayerPlotOptions& options) {
-  return DrawPlot(heap, species_names, options).Document();
+  return DrawPlot(heap, floor, species_names, options).Document();
 }
 
 bool WriteCovLayerPlotSvg(const std::string& path, const HeapSegregation& heap,
-                          const std::vector<std::string>& species_names,
+                          const HeapFloor* floor, const std::vector<std::string>& species_names,
                           const CovLayerPlotOptions& options, std::string* error) {
-  return DrawPlot(heap, species_names, options).WriteFile(path, error);
+  return DrawPlot(heap, floor, species_names, options).WriteFile(path, error);
 }
 
 }  // namespace demcal::objectives

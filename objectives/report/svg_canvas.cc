@@ -76,6 +76,15 @@ void SvgCanvas::Polyline(const std::vector<std::pair<double, double>>& points,
   body_ += "/>\n";
 }
 
+void SvgCanvas::Polygon(const std::vector<std::pair<double, double>>& points,
+                        const std::string& fill, double opacity) {
+  body_ += "<polygon points=\"";
+  for (const auto& [x, y] : points) body_ += Px(x) + "," + Px(y) + " ";
+  body_ += '"';
+  body_ += Paint(fill, "none", 0);
+  body_ += " fill-opacity=\"" + Px(opacity) + "\"/>\n";
+}
+
 void SvgCanvas::Text(double x, double y, const std::string& text, double size_px,
                      const std::string& anchor) {
   body_ += "<text x=\"" + Px(x) + "\" y=\"" + Px(y) + "\" font-family=\"sans-serif\" font-size=\"" +

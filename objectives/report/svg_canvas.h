@@ -31,6 +31,9 @@ class SvgCanvas {
             double stroke_width = 1, const std::string& dash = "");
   void Polyline(const std::vector<std::pair<double, double>>& points, const std::string& stroke,
                 double stroke_width = 1.5);
+  // A closed filled shape without outline; opacity in (0, 1] (e.g. a translucent band).
+  void Polygon(const std::vector<std::pair<double, double>>& points, const std::string& fill,
+               double opacity);
   // Text is XML-escaped; anchor is "start", "middle" or "end".
   void Text(double x, double y, const std::string& text, double size_px = 12,
             const std::string& anchor = "start");

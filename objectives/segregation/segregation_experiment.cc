@@ -154,6 +154,12 @@ void Analyse(const core::Scene& model, const SegregationSettings& s, uint64_t se
   const int species = static_cast<int>(model.species.size());
   out->analysis = AnalyseSegregationHeap(out->heap, BinOptions(s), species, options, std::nullopt,
                                          &out->analysis_message);
+  if (out->analysis) {
+    SegregationFloorOptions floor = s.floor;
+    floor.seed = core::DeriveSeed(seed, 0x464c);
+    out->floor = RandomMixtureFloor(out->analysis->grid, out->heap, out->analysis->indices, floor,
+                                    &out->analysis_message);
+  }
   out->angle_options = s.angle;
   out->angle_options.base_z_m = s.glued_base ? GluedBaseTop(BaseSpec(model, s, seed)) : 0.0;
   out->angle = MeasureSlotHeapAngle(out->heap, out->angle_options);
@@ -179,7 +185,7 @@ bool SegregationSettings::IsValid(const core::Scene& model, std::string* error) 
     return false;
   }
   return angle.IsValid(error) && BinOptions(*this).IsValid(error) &&
-         segregation.random.IsValid(error);
+         segregation.random.IsValid(error) && floor.IsValid(error);
 }
 
 std::string SegregationRun::Status() const {

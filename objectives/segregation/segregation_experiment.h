@@ -35,6 +35,7 @@
 #include "objectives/metrics/granule_tracking.h"
 #include "objectives/metrics/heap_segregation.h"
 #include "objectives/metrics/repose_angle.h"
+#include "objectives/metrics/segregation_floor.h"
 #include "objectives/common/settled_run.h"
 #include "objectives/common/snapshot.h"
 
@@ -71,6 +72,7 @@ struct SegregationSettings {
   ReposeAngleOptions angle;        // base_z_m is set from the base
   HeapBinOptions bins;             // y range is set from the box
   SegregationOptions segregation;  // random.seed is derived from the run's seed
+  SegregationFloorOptions floor;   // random-mixture noise floor; seed derived from the run's seed
   TrackingSettings tracking;
   double max_wall_time_s = 0;  // per run; 0 = unlimited
   bool IsValid(const core::Scene& model, std::string* error) const;
@@ -97,6 +99,7 @@ struct SegregationRun {
   Snapshot heap;                   // the settled heap below the funnel (glued base excluded)
   std::optional<HeapSegregationAnalysis> analysis;
   std::string analysis_message;  // why analysis is empty
+  std::optional<HeapFloor> floor;  // the indices' random-mixture noise floor (with analysis)
   ReposeAngle angle;
   ReposeAngleOptions angle_options;  // as measured (base height set)
   std::vector<TrackedGranule> tracked;

@@ -1,10 +1,12 @@
 // Calibration twin tests (style.md habit 12): data generated from known parameters by a cheap
-// synthetic observable, recovered by the calibration; resumption from the journal.
+// synthetic probe (one run group, one target, through the TargetEvaluator as every study runs),
+// recovered by the calibration; resumption from the journal.
 #include "calibrate/calibration.h"
 
 #include <catch2/catch.hpp>
 #include <filesystem>
 
+#include "calibrate/target_evaluator.h"
 #include "synthetic_observable.h"
 
 using namespace demcal;
@@ -29,9 +31,23 @@ std::string FreshJournal(const std::string& name) {
 
 CalibrationSummary Run(const SyntheticAngle& angle, const ParameterSpace& space, double target,
                        const CalibrationOptions& options, EvaluationJournal* journal = nullptr) {
-  const core::Scene model = OneMaterialModel();
-  ReplicatedEvaluator evaluator(model, space, angle, {.replicates = 3, .seed = 5}, journal);
-  return Calibrate(evaluator, space, {"angle_deg", target, 0.5, "twin"}, options);
+  std::vector<RunGroup> groups{{"synthetic", &angle, OneMaterialModel(), space, {}, {}}};
+  TargetEvaluator evaluator(space, groups, {{0, "angle_deg"}}, {.replicates = 3, .seed = 5}, journal);
+  return Calibrate(evaluator, space, {{"angle", "angle_deg", target, 0.5, "twin"}}, options);
+}
+
+const std::vector<double>& BestParameters(const CalibrationSummary& s) {
+  return s.candidates[s.best].parameters;
+}
+
+double Sigma(const CalibrationSummary& s, size_t k) { return s.estimates[k].sigma; }
+
+// d angle / d parameter k (deg per SI unit) from the standardised sensitivity matrix: undo the
+// 1/sqrt(1 + noise²) weight and the measurement uncertainty, divide by the bounds' range.
+double Slope(const CalibrationSummary& s, const ParameterSpace& space, size_t k) {
+  const double noise = s.candidates[s.best].trial.noise[0];
+  const auto& p = space.parameters[k];
+  return s.jacobian(0, k) * std::sqrt(1 + noise * noise) * 0.5 / (p.upper - p.lower);
 }
 
 }  // namespace
@@ -40,14 +56,14 @@ TEST_CASE("calibration twin: bracket recovers the rolling friction that made the
   SyntheticAngle angle;
   const double truth = 0.3, measured = angle.base + angle.per_rolling * truth;  // 33 deg
   const CalibrationSummary s = Run(angle, RollingSpace(), measured, {});
-  INFO(s.BriefReport(RollingSpace(), {"angle_deg", measured, 0.5, "twin"}));
+  INFO(s.BriefReport(RollingSpace()));
   REQUIRE(s.termination == "within_noise");
-  REQUIRE(s.uncertainty.size() == 1);
-  CHECK(s.uncertainty[0] > 0);
-  CHECK(std::abs(s.history[s.best].parameters[0] - truth) <= 2 * s.uncertainty[0]);
-  CHECK(s.sensitivity[0] == Approx(angle.per_rolling).epsilon(0.05));  // common random numbers
-  CHECK(s.history.size() <= 6);
-  CHECK(angle.runs == 3 * static_cast<int>(s.history.size()));
+  REQUIRE(s.estimates.size() == 1);
+  CHECK(Sigma(s, 0) > 0);
+  CHECK(std::abs(BestParameters(s)[0] - truth) <= 2 * Sigma(s, 0));
+  CHECK(Slope(s, RollingSpace(), 0) == Approx(angle.per_rolling).epsilon(0.05));  // common random numbers
+  CHECK(s.candidates.size() <= 6);
+  CHECK(angle.runs == 3 * static_cast<int>(s.candidates.size()));
 }
 
 TEST_CASE("calibration says when the measurement is out of the bounds' reach", "[unit][calibrate]") {
@@ -55,14 +71,14 @@ TEST_CASE("calibration says when the measurement is out of the bounds' reach", "
   const CalibrationSummary s = Run(angle, RollingSpace(), 80.0, {});  // needs mu_r ≈ 1.08 > 0.9
   CHECK(s.termination == "out_of_range");
   CHECK(s.message.find("outside the range") != std::string::npos);
-  CHECK(s.history[s.best].parameters[0] == Approx(0.9));  // the nearest candidate: the bound
+  CHECK(BestParameters(s)[0] == Approx(0.9));  // the nearest candidate: the bound
 }
 
 TEST_CASE("calibration resumes from its journal without repeating finished runs", "[unit][calibrate]") {
   const double measured = 38.0;
   SyntheticAngle uninterrupted;
   const CalibrationSummary whole = Run(uninterrupted, RollingSpace(), measured, {});
-  REQUIRE(whole.history.size() >= 3);
+  REQUIRE(whole.candidates.size() >= 3);
 
   const std::string path = FreshJournal("resume.jsonl");
   std::string error;
@@ -80,8 +96,9 @@ TEST_CASE("calibration resumes from its journal without repeating finished runs"
   CHECK(resumed.replicates_reused == first.runs);
   CHECK(first.runs + second.runs == uninterrupted.runs);
   REQUIRE(resumed.best >= 0);
-  CHECK(resumed.history[resumed.best].parameters == whole.history[whole.best].parameters);
-  CHECK(resumed.history[resumed.best].summary.mean == whole.history[whole.best].summary.mean);
+  CHECK(BestParameters(resumed) == BestParameters(whole));
+  CHECK(resumed.candidates[resumed.best].result.targets[0].mean ==
+        whole.candidates[whole.best].result.targets[0].mean);
 }
 
 TEST_CASE("failed runs are a status: the bracket retreats from a bound that gives no value", "[unit][calibrate]") {
@@ -91,9 +108,10 @@ TEST_CASE("failed runs are a status: the bracket retreats from a bound that give
   CHECK(s.termination == "within_noise");
   CHECK(s.message.find("probed nearer the start") != std::string::npos);
   bool saw_failure = false;
-  for (const Evaluation& e : s.history) saw_failure = saw_failure || (!e.ok() && e.status == "not_settled");
+  for (const Candidate& c : s.candidates)
+    saw_failure = saw_failure || c.result.targets[0].status.find("not_settled") != std::string::npos;
   CHECK(saw_failure);
-  CHECK(std::abs(s.history[s.best].parameters[0] - 0.45) <= 2 * s.uncertainty[0]);
+  CHECK(std::abs(BestParameters(s)[0] - 0.45) <= 2 * Sigma(s, 0));
 
   angle.fail_above_rolling = 0.0;  // nothing ever settles
   const CalibrationSummary none = Run(angle, RollingSpace(), 42.0, {});
@@ -110,15 +128,14 @@ TEST_CASE("two parameters against one measurement: matched, but reported as a va
   options.optimiser = "nlopt_bobyqa";
   options.optimiser_options.max_evaluations = 40;
   const CalibrationSummary s = Run(angle, space, 40.0, options);
-  INFO(s.uncertainty_note);
+  INFO(s.identifiability.summary);
   CHECK(s.termination == "within_noise");
   REQUIRE(s.estimates.size() == 2);
   for (size_t k = 0; k < 2; ++k) {
     CHECK_FALSE(s.estimates[k].identifiable);
-    CHECK(s.uncertainty[k] == 0);  // the single-target field: 0 when not identifiable
+    CHECK(std::isinf(Sigma(s, k)));  // never a finite sigma the data cannot support
   }
-  CHECK(s.uncertainty_note.find("valley") != std::string::npos);
-  CHECK(s.uncertainty_note.find("mu_s and mu_r trade off") != std::string::npos);
+  CHECK(s.identifiability.summary.find("mu_s and mu_r trade off") != std::string::npos);
 }
 
 TEST_CASE("calibration options are checked before anything runs", "[unit][calibrate]") {
@@ -143,9 +160,8 @@ TEST_CASE("the batch optimisers resume from the journal without repeating finish
     SyntheticAngle uninterrupted;
     const CalibrationSummary whole = Run(uninterrupted, RollingSpace(), measured, options);
     REQUIRE(whole.termination == "within_noise");
-    REQUIRE(whole.history.size() >= 3);
-    CHECK(std::abs(whole.history[whole.best].parameters[0] - (measured - 15) / 60) <=
-          2 * whole.uncertainty[0]);
+    REQUIRE(whole.candidates.size() >= 3);
+    CHECK(std::abs(BestParameters(whole)[0] - (measured - 15) / 60) <= 2 * Sigma(whole, 0));
 
     const std::string path = FreshJournal("resume_" + name + ".jsonl");
     std::string error;
@@ -164,6 +180,6 @@ TEST_CASE("the batch optimisers resume from the journal without repeating finish
     CHECK(resumed.replicates_reused == first.runs);
     CHECK(first.runs + second.runs == uninterrupted.runs);
     REQUIRE(resumed.best >= 0);
-    CHECK(resumed.history[resumed.best].parameters == whole.history[whole.best].parameters);
+    CHECK(BestParameters(resumed) == BestParameters(whole));
   }
 }

@@ -130,3 +130,29 @@ TEST_CASE("ceres covariance: finite for two targets, refused on a valley", "[uni
   CHECK(v.covariance_unit.empty());
   CHECK(v.covariance_note.find("rank-deficient") != std::string::npos);
 }
+
+// DEM noise is chaotic: any change of the parameters, however small, gives another packing and
+// another value (common random numbers do not make it smooth). A rejected step then made Ceres
+// shrink its trust region towards the same centre and ask for new stencils 1e-3, 1e-5, 1e-8
+// away (the DEM twin of examples/calibrate_bp_two_targets.json). On the candidate lattice no two
+// candidates are closer than unit_tolerance, and the budget is not spent on them.
+TEST_CASE("ceres never asks for candidates closer than the unit tolerance", "[unit][calibrate]") {
+  auto chaotic = [](const std::vector<double>& u) {
+    const double hash = std::sin(1e7 * u[0] + 3e7 * u[1]);  // a new "packing" for any change
+    const double r1 = 2 * (u[0] - 0.6) + 3.5 * hash;         // noise larger than the signal
+    const double r2 = 9 * (u[1] - 0.3) + 3.5 * std::cos(7e6 * u[0]);
+    return TrialResult{true, {r1, r2}, {3.5, 3.5}};
+  };
+  Recorder rec{chaotic};
+  const OptimiserOptions options{.max_evaluations = 60, .unit_tolerance = 0.002};
+  const OptimiserResult r = CeresOptimise(rec.Function(), {0.62, 0.1}, options);
+  INFO(r.message);
+  const auto points = rec.Points();
+  for (size_t a = 0; a < points.size(); ++a)
+    for (size_t b = 0; b < a; ++b) {
+      double gap = 0;
+      for (size_t k = 0; k < 2; ++k) gap = std::max(gap, std::abs(points[a][k] - points[b][k]));
+      CHECK(gap >= 0.002 - 1e-12);
+    }
+  CHECK(r.evaluations == static_cast<int>(points.size()));
+}

@@ -8,6 +8,7 @@
 #include "workflow/experiments/experiment_setup.h"
 #include "workflow/files/json_document.h"
 #include "objectives/aor/aor_experiment.h"
+#include "objectives/metrics/heap_crest.h"
 #include "objectives/report/heap_profile_svg.h"
 #include "objectives/common/replicates.h"
 #include "objectives/report/text_file.h"
@@ -28,9 +29,15 @@ nlohmann::ordered_json RunJson(int replicate, const AorRun& run) {
   j["angle_deg"] = run.angle.ok ? nlohmann::ordered_json(run.angle.angle_deg) : nullptr;
   j["flank_spread_deg"] = run.angle.spread_deg;
   j["heap_height_m"] = run.angle.heap_height_m;
+  // How far the heap top lies below the apex of the fitted flanks (> 0: a rounded crest); the
+  // same number the calibration's crest_drop_m observable reads (calibrate/probes/aor_probe.cc).
+  j["crest_drop_m"] = run.angle.ok ? nlohmann::ordered_json(objectives::CrestDrop(run.angle, run.angle_options.base_z_m))
+                                   : nullptr;
   j["particles"] = run.particles;
   j["settle_time_s"] = run.settle.settle_time_s;
   j["specific_kinetic_J_kg"] = run.settle.specific_kinetic_J_kg;
+  j["settled_by"] = run.settle.settled_by.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(run.settle.settled_by);
+  j["surface_change_d"] = run.settle.surface_change_d >= 0 ? nlohmann::ordered_json(run.settle.surface_change_d) : nlohmann::ordered_json();
   j["wall_time_s"] = run.wall_time_s;
   nlohmann::ordered_json flanks = nlohmann::ordered_json::array();
   for (const objectives::FlankFit& f : run.angle.flanks)

@@ -35,6 +35,44 @@ ordered_json IndexStat(const std::vector<SegregationRun>& runs, int species, con
   return Stat(values);
 }
 
+// The random-mixture floor of one index of one species, from a run's floor; nullptr without.
+using FloorOf = std::function<const objectives::IndexFloor*(const objectives::HeapFloor&, int)>;
+
+// Mean over the ok runs of the floor's mean, low and high band edge (of CoV or of S_n).
+ordered_json FloorStat(const std::vector<SegregationRun>& runs, int species, const FloorOf& of,
+                       bool s_n) {
+  std::vector<double> mean, low, high;
+  for (const SegregationRun& run : runs) {
+    if (!run.ok() || !run.floor) continue;
+    const objectives::IndexFloor* f = of(*run.floor, species);
+    if (!f || !(s_n ? f->s_n_defined : f->defined)) continue;
+    mean.push_back(s_n ? f->s_n_mean : f->cov_mean);
+    low.push_back(s_n ? f->s_n_low : f->cov_low);
+    high.push_back(s_n ? f->s_n_high : f->cov_high);
+  }
+  auto average = [](const std::vector<double>& v) {
+    return v.empty() ? ordered_json(nullptr) : ordered_json(objectives::Summarise(v).mean);
+  };
+  return {{"mean", average(mean)}, {"low", average(low)}, {"high", average(high)},
+          {"n", mean.size()}};
+}
+
+const objectives::IndexFloor* FloorNumber(const objectives::RegionFloor& region, int species) {
+  return species < static_cast<int>(region.species.size()) ? &region.species[species].number
+                                                           : nullptr;
+}
+const objectives::IndexFloor* FloorMass(const objectives::RegionFloor& region, int species) {
+  return species < static_cast<int>(region.species.size()) ? &region.species[species].mass
+                                                           : nullptr;
+}
+
+// The floor keys beside the indices of one region: cov_<region>_floor, s_n_<region>_floor.
+void AddFloor(const std::vector<SegregationRun>& runs, int k, const std::string& region,
+              const FloorOf& of, ordered_json* j) {
+  (*j)["cov_" + region + "_floor"] = FloorStat(runs, k, of, false);
+  (*j)["s_n_" + region + "_floor"] = FloorStat(runs, k, of, true);
+}
+
 const SegregationIndex* Number(const objectives::RegionSegregation& region, int species) {
   return species < static_cast<int>(region.species.size()) ? &region.species[species].number
                                                            : nullptr;
@@ -61,6 +99,12 @@ ordered_json SpeciesJson(const std::vector<SegregationRun>& runs, int k, const s
   j["cov_r_3d"] = IndexStat(runs, k, whole, &SegregationIndex::cov_r);
   j["s_n_3d"] = IndexStat(runs, k, whole, &SegregationIndex::s_n);
   j["mean_mass_fraction_3d"] = IndexStat(runs, k, whole, &SegregationIndex::mean_fraction);
+  using objectives::HeapFloor;
+  AddFloor(runs, k, "2d_front", [](const HeapFloor& f, int s) { return FloorNumber(f.front, s); },
+           &j);
+  AddFloor(runs, k, "2d_back", [](const HeapFloor& f, int s) { return FloorNumber(f.back, s); },
+           &j);
+  AddFloor(runs, k, "3d", [](const HeapFloor& f, int s) { return FloorMass(f.whole, s); }, &j);
   ordered_json per_layer = ordered_json::array();
   for (int layer = 0; layer < layers; ++layer) {
     const IndexOf of = [layer](const HeapSegregation& h, int s) -> const SegregationIndex* {
@@ -68,6 +112,13 @@ ordered_json SpeciesJson(const std::vector<SegregationRun>& runs, int k, const s
     };
     ordered_json l = IndexStat(runs, k, of, &SegregationIndex::cov_m);
     l["layer"] = layer + 1;
+    l["floor"] = FloorStat(
+        runs, k,
+        [layer](const objectives::HeapFloor& f, int s) -> const objectives::IndexFloor* {
+          return layer < static_cast<int>(f.layers.size()) ? FloorMass(f.layers[layer], s)
+                                                           : nullptr;
+        },
+        false);
     per_layer.push_back(l);
   }
   j["cov_per_layer_3d"] = per_layer;
@@ -94,6 +145,13 @@ ordered_json RunJson(int replicate, const SegregationRun& run) {
   j["status"] = run.Status();
   j["message"] = !run.settle.ok() ? run.settle.message : run.analysis_message;
   j["particles"] = run.particles;
+  std::vector<int64_t> per_species;
+  for (const objectives::Grain& g : run.heap.grains) {
+    if (g.species < 0) continue;
+    if (g.species >= static_cast<int>(per_species.size())) per_species.resize(g.species + 1, 0);
+    ++per_species[g.species];
+  }
+  j["heap_grains_per_species"] = per_species;
   double mass = 0;
   for (const objectives::Grain& g : run.heap.grains) mass += g.mass_kg;
   j["heap_mass_kg"] = mass;
@@ -109,6 +167,8 @@ ordered_json RunJson(int replicate, const SegregationRun& run) {
   j["funnel_empty_s"] = run.funnel_emptied ? ordered_json(run.empty_s) : nullptr;
   j["discharge_time_s"] = run.funnel_emptied ? ordered_json(run.discharge_time_s) : nullptr;
   j["settle_time_s"] = run.settle.settle_time_s;
+  j["settled_by"] = run.settle.settled_by.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(run.settle.settled_by);
+  j["surface_change_d"] = run.settle.surface_change_d >= 0 ? nlohmann::ordered_json(run.settle.surface_change_d) : nlohmann::ordered_json();
   j["wall_time_s"] = run.wall_time_s;
   ordered_json tracked = ordered_json::array();
   for (const objectives::TrackedGranule& g : run.tracked) tracked.push_back(TrackedJson(g));
@@ -123,6 +183,11 @@ ordered_json SegregationResultJson(const objectives::SegregationSettings& settin
                                    const std::vector<SegregationRun>& runs) {
   ordered_json result;
   result["basis"] = {{"2d", "number fraction"}, {"3d", "mass fraction"}};
+  result["noise_floor"] = {
+      {"method", "species labels shuffled among the heap's grains in bins (same positions and "
+                 "counts); CoV and S_n = CoV/CoV_r(measured) of each shuffled heap"},
+      {"shuffles", settings.floor.shuffles},
+      {"band", settings.floor.band}};
   result["funnel"] = settings.funnel.enabled;
   result["heap_feed_mass_kg"] = settings.feed.mass_kg;
   std::vector<double> angles, discharge, depths;

@@ -42,8 +42,8 @@ bool WriteRunFiles(const std::string& dir, int r, const SegregationRun& run,
                                          names, error) &&
          objectives::WriteHeapFaceSvg(dir + "/heap_front" + k + ".svg", run.heap, a.grid, {},
                                       error) &&
-         objectives::WriteCovLayerPlotSvg(dir + "/cov_per_layer" + k + ".svg", a.indices, names, {},
-                                          error);
+         objectives::WriteCovLayerPlotSvg(dir + "/cov_per_layer" + k + ".svg", a.indices,
+                                          run.floor ? &*run.floor : nullptr, names, {}, error);
 }
 
 core::Scene BuildScene(const core::Scene& model, const SegregationSettings& settings,

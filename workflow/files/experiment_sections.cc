@@ -36,7 +36,8 @@ void ParseFeed(const json& value, const std::string& path, const core::Scene& mo
 void ParseSettle(const json& value, const std::string& path, objectives::SettleCriteria* settle,
                  JsonStatus* status) {
   JsonFields f(value, path,
-               {"specific_kinetic_J_kg", "min_settle_s", "check_interval_s", "max_time_s"},
+               {"specific_kinetic_J_kg", "min_settle_s", "check_interval_s", "max_time_s",
+                "surface_window_s", "surface_change_d"},
                status);
   f.Number("specific_kinetic_J_kg", &settle->specific_kinetic_J_kg, kOptional,
            Range::LeftOpen(0, 1e3, "J/kg"));
@@ -44,6 +45,8 @@ void ParseSettle(const json& value, const std::string& path, objectives::SettleC
   f.Number("check_interval_s", &settle->check_interval_s, kOptional,
            Range::LeftOpen(0, 10, "s"));
   f.Number("max_time_s", &settle->max_time_s, kOptional, Range::LeftOpen(0, 1e4, "s"));
+  f.Number("surface_window_s", &settle->surface_window_s, kOptional, Range::Closed(0, 1e3, "s"));
+  f.Number("surface_change_d", &settle->surface_change_d, kOptional, Range::LeftOpen(0, 10));
 }
 
 namespace internal {

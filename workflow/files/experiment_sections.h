@@ -16,7 +16,8 @@ namespace demcal::workflow {
 void ParseFeed(const nlohmann::json& value, const std::string& path, const core::Scene& model,
                objectives::Feed* feed, JsonStatus* status);
 
-// {"specific_kinetic_J_kg", "min_settle_s", "check_interval_s", "max_time_s"}
+// {"specific_kinetic_J_kg", "min_settle_s", "check_interval_s", "max_time_s",
+//  "surface_window_s", "surface_change_d"}
 void ParseSettle(const nlohmann::json& value, const std::string& path,
                  objectives::SettleCriteria* settle, JsonStatus* status);
 

@@ -17,7 +17,8 @@ const std::vector<std::string>& TopLevelKeys() {
   static const std::vector<std::string> keys = {
       "format",    "description", "materials",    "species", "interactions",    "contact_model",
       "domain",    "periodic",    "gravity_m_s2", "walls",   "particles",       "fills",
-      "factories", "seed",        "time",         "skin_m",  "max_wall_time_s", "output"};
+      "factories", "sinks",       "seed",         "time",    "skin_m",          "max_wall_time_s",
+      "output"};
   return keys;
 }
 
@@ -60,11 +61,30 @@ void ParseTime(JsonFields& top, core::Scene* scene, JsonStatus* status) {
 void ParseOutput(JsonFields& top, OutputSettings* output, JsonStatus* status) {
   const json* section = top.Object("output", kOptional);
   if (!section) return;
-  JsonFields f(*section, "output", {"vtk_interval_s", "vtk_format"}, status);
+  JsonFields f(*section, "output",
+               {"vtk_interval_s", "vtk_format", "mass_flow_interval_s", "mass_flow_planes"},
+               status);
   f.Number("vtk_interval_s", &output->vtk_interval_s, kOptional, Range::LeftOpen(0, 1e6, "s"));
   std::string encoding = "binary";
   f.String("vtk_format", &encoding, kOptional, {"binary", "ascii"});
   if (f.ok()) core::io::ParseVtkEncoding(encoding, &output->vtk.encoding);
+  f.Number("mass_flow_interval_s", &output->mass_flow_interval_s, kOptional,
+           Range::LeftOpen(0, 1e6, "s"));
+  const json* planes = f.Array("mass_flow_planes", kOptional);
+  for (size_t i = 0; planes && i < planes->size() && status->ok(); ++i) {
+    JsonFields p((*planes)[i], "output." + IndexPath("mass_flow_planes", i),
+                 {"name", "point_m", "normal"}, status);
+    core::SinkSpec plane;
+    p.String("name", &plane.name, kRequired);
+    p.Vector("point_m", &plane.point_m, kRequired);
+    p.Vector("normal", &plane.normal, kRequired);
+    const double length = core::Norm(plane.normal);
+    if (p.ok() && !(length > 1e-12)) p.Fail("normal", "must be a non-zero vector");
+    if (p.ok()) plane.normal = plane.normal / length;
+    output->mass_flow_planes.push_back(plane);
+  }
+  if (status->ok() && !output->mass_flow_planes.empty() && !(output->mass_flow_interval_s > 0))
+    f.Fail("mass_flow_planes", "needs 'output.mass_flow_interval_s' > 0 (the row interval)");
 }
 
 }  // namespace
@@ -95,6 +115,7 @@ bool ParseSceneJson(const json& document, const std::string& source, SceneFile* 
   internal::ParseParticles(top, &scene, &status);
   internal::ParseFills(top, &scene, &status);
   internal::ParseFactories(top, &scene, &status);
+  internal::ParseSinks(top, &scene, &status);
   if (status.ok() && scene.particles.empty() && scene.fills.empty() && scene.factories.empty())
     status.Fail("the scene places no particles: give 'particles', 'fills' or 'factories'");
   ParseTime(top, &scene, &status);

@@ -39,6 +39,7 @@ void ReadMotion(JsonFields& f, core::Wall* w) {
   f.Number("motion_start_s", &w->motion_start_s, kOptional, Range::Closed(0, 1e9, "s"));
   f.Number("motion_end_s", &w->motion_end_s, kOptional, Range::Closed(0, 1e9, "s"));
   f.Vector("load_point_m", &w->load_point_m, kOptional);
+  f.Number("remove_at_s", &w->remove_at_s, kOptional, Range::Closed(0, 1e9, "s"));
   if (f.ok() && !(w->motion_end_s >= w->motion_start_s))
     f.Fail("motion_end_s", "must not be before '" + f.PathOf("motion_start_s") + "' (" +
                                std::to_string(w->motion_end_s) + " < " +
@@ -149,7 +150,7 @@ void ParseWalls(JsonFields& top, const std::string& base_dir, core::Scene* scene
   if (!list) return;
   const std::vector<std::string> common = {"type",           "name",         "material",
                                            "velocity_m_s",   "motion_start_s", "motion_end_s",
-                                           "load_point_m"};
+                                           "load_point_m",   "remove_at_s"};
   const std::map<std::string, std::vector<std::string>> specific = {
       {"plane", {"point_m", "normal"}},
       {"box", {"min_m", "max_m", "open_top"}},
@@ -227,11 +228,7 @@ void ParseFills(JsonFields& top, core::Scene* scene, JsonStatus* status) {
                  status);
     core::FillSpec fill;
     fill.species = ReadNameReference(f, "species", "species", species, status);
-    if (const json* region = f.Object("region", kRequired)) {
-      JsonFields r(*region, f.PathOf("region"), {"min_m", "max_m"}, status);
-      r.Vector("min_m", &fill.region_min_m, kRequired);
-      r.Vector("max_m", &fill.region_max_m, kRequired);
-    }
+    ParseInsertionRegion(f, &fill.region, status);
     f.Integer("count", &fill.count, kRequired);
     f.Vector("velocity_m_s", &fill.velocity_m_s, kOptional);
     scene->fills.push_back(fill);

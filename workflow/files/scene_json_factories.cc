@@ -5,13 +5,10 @@
 #include "core/factory.h"
 
 namespace demcal::workflow::internal {
-namespace {
 
 using nlohmann::json;
 
-// region: {"shape": "box", "min_m", "max_m"} (shape may be omitted) or
-//         {"shape": "cylinder", "axis_point_m", "radius_m", "z_range_m"} (a vertical cylinder).
-void ParseRegion(JsonFields& f, core::InsertionRegion* region, JsonStatus* status) {
+void ParseInsertionRegion(JsonFields& f, core::InsertionRegion* region, JsonStatus* status) {
   const json* r = f.Object("region", kRequired);
   if (!r) return;
   std::string shape = "box";
@@ -40,8 +37,6 @@ void ParseRegion(JsonFields& f, core::InsertionRegion* region, JsonStatus* statu
   if (c.ok()) *region = core::InsertionRegion::Cylinder(axis_point, radius, z[0], z[1]);
 }
 
-}  // namespace
-
 void ParseFactories(JsonFields& top, core::Scene* scene, JsonStatus* status) {
   const json* list = top.Array("factories", kOptional);
   if (!list) return;
@@ -49,7 +44,8 @@ void ParseFactories(JsonFields& top, core::Scene* scene, JsonStatus* status) {
   for (size_t i = 0; i < list->size() && status->ok(); ++i) {
     JsonFields f((*list)[i], IndexPath("factories", i),
                  {"name", "species", "region", "mass_rate_kg_s", "start_s", "end_s",
-                  "total_mass_kg", "velocity_m_s", "batch_interval_s"},
+                  "total_mass_kg", "velocity_m_s", "batch_interval_s", "region_velocity_m_s",
+                  "follow_heap"},
                  status);
     core::FactorySpec spec;
     spec.name = f.path();
@@ -66,13 +62,21 @@ void ParseFactories(JsonFields& top, core::Scene* scene, JsonStatus* status) {
         spec.mass_fractions.push_back(fraction);
       }
     }
-    ParseRegion(f, &spec.region, status);
+    ParseInsertionRegion(f, &spec.region, status);
     f.Number("mass_rate_kg_s", &spec.mass_rate_kg_s, kRequired);
     f.Number("start_s", &spec.start_s, kOptional);
     f.Number("end_s", &spec.end_s, kOptional);
     f.Number("total_mass_kg", &spec.total_mass_kg, kOptional);
     f.Vector("velocity_m_s", &spec.velocity_m_s, kOptional);
     f.Number("batch_interval_s", &spec.batch_interval_s, kOptional);
+    f.Vector("region_velocity_m_s", &spec.region_velocity_m_s, kOptional);
+    if (const json* follow = f.Object("follow_heap", kOptional)) {
+      JsonFields h(*follow, f.PathOf("follow_heap"), {"clearance_m", "settled_speed_m_s"}, status);
+      h.Number("clearance_m", &spec.follow_heap_clearance_m, kRequired,
+               Range::Open(0, 1e3, "m"));
+      h.Number("settled_speed_m_s", &spec.settled_speed_m_s, kOptional,
+               Range::Open(0, 1e3, "m/s"));
+    }
     scene->factories.push_back(spec);
   }
 }

@@ -4,7 +4,8 @@
 // in `status` (see json_fields.h). Split by theme to keep files small:
 //   scene_json_materials.cc  materials, species, interactions, contact_model
 //   scene_json_bodies.cc     walls, particles, fills
-//   scene_json_factories.cc  factories
+//   scene_json_factories.cc  factories (and the insertion regions fills share)
+//   scene_json_sinks.cc      sinks
 #include <string>
 #include <vector>
 
@@ -23,6 +24,11 @@ void ParseWalls(JsonFields& top, const std::string& base_dir, core::Scene* scene
 void ParseParticles(JsonFields& top, core::Scene* scene, JsonStatus* status);
 void ParseFills(JsonFields& top, core::Scene* scene, JsonStatus* status);
 void ParseFactories(JsonFields& top, core::Scene* scene, JsonStatus* status);
+void ParseSinks(JsonFields& top, core::Scene* scene, JsonStatus* status);
+
+// The required key "region" of `f`: {"shape": "box", "min_m", "max_m"} (shape may be omitted)
+// or {"shape": "cylinder", "axis_point_m", "radius_m", "z_range_m"} (a vertical cylinder).
+void ParseInsertionRegion(JsonFields& f, core::InsertionRegion* region, JsonStatus* status);
 
 // The names of the scene's materials / species, in index order.
 std::vector<std::string> MaterialNames(const core::Scene& scene);

@@ -45,9 +45,10 @@ void ParseBins(const json& value, objectives::HeapBinOptions* bins, JsonStatus* 
   bins->layers = static_cast<int>(layers);
 }
 
-void ParseIndex(const json& value, objectives::SegregationOptions* options, JsonStatus* status) {
-  JsonFields f(value, "segregation.segregation_index", {"repetitions", "draw", "packing_fraction"},
-               status);
+void ParseIndex(const json& value, objectives::SegregationSettings* s, JsonStatus* status) {
+  JsonFields f(value, "segregation.segregation_index",
+               {"repetitions", "draw", "packing_fraction", "floor_shuffles", "floor_band"}, status);
+  objectives::SegregationOptions* options = &s->segregation;
   int64_t repetitions = options->random.repetitions;
   f.Integer("repetitions", &repetitions, kOptional, Range::Closed(2, 1000000));
   options->random.repetitions = static_cast<int>(repetitions);
@@ -56,6 +57,10 @@ void ParseIndex(const json& value, objectives::SegregationOptions* options, Json
   options->random.draw =
       draw == "binomial" ? objectives::RandomDraw::kBinomial : objectives::RandomDraw::kNormal;
   f.Number("packing_fraction", &options->packing_fraction, kOptional, Range::LeftOpen(0, 1));
+  int64_t shuffles = s->floor.shuffles;
+  f.Integer("floor_shuffles", &shuffles, kOptional, Range::Closed(20, 100000));
+  s->floor.shuffles = static_cast<int>(shuffles);
+  f.Number("floor_band", &s->floor.band, kOptional, Range::Open(0, 1));
 }
 
 void ParseTracking(const json& value, const core::Scene& model,
@@ -88,7 +93,7 @@ void ParseFields(JsonFields& f, const core::Scene& model, SegregationSettings* s
     ParseSettle(*settle, "segregation.settle", &s->settle, status);
   if (const json* bins = f.Object("bins", kOptional)) ParseBins(*bins, &s->bins, status);
   if (const json* index = f.Object("segregation_index", kOptional))
-    ParseIndex(*index, &s->segregation, status);
+    ParseIndex(*index, s, status);
   if (const json* tracking = f.Object("tracking", kOptional))
     ParseTracking(*tracking, model, &s->tracking, status);
   f.Number("max_wall_time_s", &s->max_wall_time_s, kOptional, Range::Closed(0, 1e7, "s"));

@@ -45,6 +45,12 @@ nlohmann::ordered_json RunRecordToJson(const RunRecord& r) {
   j["final_kinetic_energy_J"] = Finite(s.final_kinetic_energy_J);
   j["neighbour_rebuilds"] = s.neighbour_rebuilds;
   j["wall_time_s"] = Finite(s.wall_time_s);
+  j["phase_wall_time_s"] = {{"integrate_s", Finite(s.phases.integrate_s)},
+                            {"insert_s", Finite(s.phases.insert_s)},
+                            {"rebuild_check_s", Finite(s.phases.rebuild_check_s)},
+                            {"rebuild_s", Finite(s.phases.rebuild_s)},
+                            {"forces_s", Finite(s.phases.forces_s)},
+                            {"checks_s", Finite(s.phases.checks_s)}};
   j["setup_wall_time_s"] = Finite(r.setup_wall_time_s);
   j["total_wall_time_s"] = Finite(r.total_wall_time_s);
   j["factories"] = nlohmann::ordered_json::array();
@@ -58,7 +64,22 @@ nlohmann::ordered_json RunRecordToJson(const RunRecord& r) {
     fj["requested_rate_kg_s"] = Finite(f.RequestedRate());
     fj["achieved_rate_kg_s"] = Finite(f.AchievedRate());
     fj["full_batches"] = f.full_batches;
+    fj["region_lift_m"] = Finite(f.region_lift_m);
     j["factories"].push_back(fj);
+  }
+  j["sinks"] = nlohmann::ordered_json::array();
+  for (const core::SinkReport& sink : r.sinks) {
+    nlohmann::ordered_json sj;
+    sj["name"] = sink.name;
+    sj["removed_particles"] = sink.TotalParticles();
+    sj["removed_mass_kg"] = Finite(sink.TotalMassKg());
+    sj["last_removal_s"] = sink.last_removal_s >= 0 ? Finite(sink.last_removal_s) : nullptr;
+    sj["per_species"] = nlohmann::ordered_json::array();
+    for (size_t k = 0; k < sink.mass_kg.size() && k < r.species_names.size(); ++k)
+      sj["per_species"].push_back({{"species", r.species_names[k]},
+                                   {"removed_particles", sink.particles[k]},
+                                   {"removed_mass_kg", Finite(sink.mass_kg[k])}});
+    j["sinks"].push_back(sj);
   }
   j["wall_loads"] = nlohmann::ordered_json::array();
   for (const NamedWallLoad& w : r.wall_loads) {

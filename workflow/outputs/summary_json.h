@@ -15,6 +15,7 @@
 
 #include "core/factory.h"
 #include "core/run_summary.h"
+#include "core/sink.h"
 #include "core/walls.h"
 
 namespace demcal::workflow {
@@ -39,6 +40,8 @@ struct RunRecord {
   double total_wall_time_s = 0;                // the whole command, outputs included
   std::vector<core::FactoryReport> factories;  // one per scene factory
   std::vector<NamedWallLoad> wall_loads;       // one per wall, at the end of the run
+  std::vector<core::SinkReport> sinks;         // one per sink, then "domain" (if any sinks)
+  std::vector<std::string> species_names;      // to name the per-species sink tallies
   struct Restart {
     std::string checkpoint_path;  // as given to --restart
     double time_s = 0;            // simulated time of the checkpoint

@@ -10,6 +10,7 @@
 
 #include "workflow/exit_codes.h"
 #include "workflow/outputs/earlier_outputs.h"
+#include "workflow/outputs/mass_flow_log.h"
 #include "workflow/outputs/output_lock.h"
 #include "workflow/outputs/progress_reporter.h"
 #include "workflow/outputs/run_outputs.h"
@@ -38,10 +39,10 @@ int64_t CheckpointEverySteps(double every_s, double timestep_s) {
 }
 
 // The observer cadence: a divisor of every periodic action's cadence (0 = no such action).
-int64_t ObserverEverySteps(int64_t snapshot_every, int64_t checkpoint_every) {
+int64_t ObserverEverySteps(std::initializer_list<int64_t> cadences) {
   int64_t every = kProgressEverySteps;
-  if (snapshot_every > 0) every = std::gcd(every, snapshot_every);
-  if (checkpoint_every > 0) every = std::gcd(every, checkpoint_every);
+  for (int64_t c : cadences)
+    if (c > 0) every = std::gcd(every, c);
   return every;
 }
 
@@ -100,12 +101,16 @@ int RunSimulate(const SimulateOptions& options, std::ostream& log) {
     log << "error: " << error << "\n";
     return loaded ? kExitOutputError : kExitInvalidInput;
   }
+  MassFlowLog flow(options.out_dir + "/mass_flow.csv",
+                   loaded ? file.output : OutputSettings{});
+  bool flow_written = false;
   auto finish = [&](int code) {
     record.total_wall_time_s = SecondsSince(start);
     // A rejected run wrote nothing but this summary.
     record.outputs = record.summary.termination == core::Termination::kInvalidScene
                          ? nlohmann::ordered_json::object()
                          : outputs.Describe();
+    if (flow_written) record.outputs["mass_flow_csv"] = "mass_flow.csv";
     std::string write_error;
     if (!WriteRunSummaryJson(outputs.SummaryPath(), record, &write_error)) {
       log << "error: " << write_error << "\n";
@@ -151,6 +156,12 @@ int RunSimulate(const SimulateOptions& options, std::ostream& log) {
     if (restart) log << " from the checkpoint at t = " << sim.time_s() << " s";
     log << " on " << record.threads_used << " thread(s)\n";
   }
+  if (!restart) flow.Record(sim);
+  if (restart && !flow.ResumeFrom(sim, &error)) {
+    record.output_error = error;
+    log << "error: " << error << "\n";
+    return finish(kExitOutputError);
+  }
   if (!outputs.CopyScene(options.scene_path, &error) ||
       !(restart ? outputs.ResumeFrom(sim, &error) : outputs.WriteSnapshot(sim, &error))) {
     record.output_error = error;
@@ -167,19 +178,23 @@ int RunSimulate(const SimulateOptions& options, std::ostream& log) {
       CheckpointEverySteps(options.checkpoint_every_s, sim.timestep_s());
   std::string run_output_error;  // an output that failed during the run stops it
   core::Simulation::Observer observer;
-  observer.every_steps = ObserverEverySteps(snapshot_every, checkpoint_every);
+  const int64_t flow_every = flow.EverySteps(sim.timestep_s());
+  observer.every_steps = ObserverEverySteps({snapshot_every, checkpoint_every, flow_every});
   observer.callback = [&](const core::Simulation& s) {
     if (snapshot_every > 0 && s.steps() % snapshot_every == 0 &&
         !outputs.WriteSnapshot(s, &run_output_error))
       return false;
+    if (flow_every > 0 && s.steps() % flow_every == 0) flow.Record(s);
     if (checkpoint_every > 0 && s.steps() % checkpoint_every == 0 &&
-        !outputs.WriteCheckpoint(s, &run_output_error))
+        !(outputs.WriteCheckpoint(s, &run_output_error) && flow.Flush(s, &run_output_error)))
       return false;
     progress.Update(s.time_s(), static_cast<int64_t>(s.particles().Size()));
     return true;
   };
   record.summary = sim.Run(static_cast<double>(steps_left) * sim.timestep_s(), observer);
   record.factories = sim.FactoryReports();
+  record.sinks = sim.SinkReports();
+  for (const core::Species& species : sim.scene().species) record.species_names.push_back(species.name);
   {
     const std::vector<core::WallLoad> loads = sim.WallLoads();
     for (size_t i = 0; i < loads.size() && i < sim.walls().size(); ++i)
@@ -187,13 +202,17 @@ int RunSimulate(const SimulateOptions& options, std::ostream& log) {
   }
 
   // The final state is written for failed runs too: it shows where things went wrong.
+  flow.Record(sim);
   if (!run_output_error.empty())
     record.output_error = run_output_error;
   else if (!outputs.WriteFinal(sim, &error))
     record.output_error = error;
+  else if (!flow.Flush(sim, &error))
+    record.output_error = error;
   else if (checkpoint_every > 0 && StateWorthCheckpointing(record.summary.termination) &&
            !outputs.WriteCheckpoint(sim, &error))
     record.output_error = error;
+  flow_written = flow.enabled() && record.output_error.empty();
 
   int code = kExitOk;
   if (!record.output_error.empty()) {

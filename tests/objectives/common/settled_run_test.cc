@@ -94,7 +94,7 @@ TEST_CASE("run until settled: a grain on a floor settles, a pour cut short does 
   {
     const auto sim = Initialized(scene);
     const SettleResult r =
-        RunUntilSettled(*sim, {.specific_kinetic_J_kg = 1e-8, .max_time_s = 1}, {});
+        RunUntilSettled(*sim, {.specific_kinetic_J_kg = 1e-8, .max_time_s = 1, .surface_window_s = 0}, {});
     INFO(r.message);
     CHECK(r.ok());
     CHECK(r.specific_kinetic_J_kg < 1e-8);
@@ -109,5 +109,47 @@ TEST_CASE("run until settled: a grain on a floor settles, a pour cut short does 
         RunUntilSettled(*sim, {.specific_kinetic_J_kg = 1e-8, .max_time_s = 0.02}, {});
     CHECK(r.status == "not_settled");
     CHECK(r.message.find("not settled after 0.02 s") != std::string::npos);
+  }
+}
+
+TEST_CASE("run until settled: a bed whose surface stopped changing settles at any energy scale",
+          "[unit]") {
+  // 60 grains dropped into a 3 cm box: with an unreachable energy threshold only the scale-free
+  // surface criterion can end the run (settled_run.h).
+  core::Scene scene = Grains();
+  scene.gravity_m_s2 = {0, 0, -9.81};
+  scene.pair_parameters[0].restitution = 0.3;
+  scene.pair_parameters[0].sliding_friction = 0.5;
+  scene.walls = core::BoxInnerFaces("box", {0, 0, 0}, {0.03, 0.03, 0.1}, 0, true);
+  scene.fills = {{0, {0, 0, 0}, {0.03, 0.03, 0.05}, 60}};
+  core::Scene moving = scene;
+  {
+    const auto sim = Initialized(scene);
+    const SettleResult r = RunUntilSettled(
+        *sim, {.specific_kinetic_J_kg = 1e-30, .max_time_s = 2, .surface_window_s = 0.1}, {});
+    INFO(r.message);
+    CHECK(r.ok());
+    CHECK(r.settled_by == "surface");
+    CHECK(r.surface_change_d < 0.02);
+    CHECK(r.settle_time_s > 0.2);  // two windows after the first surface at least
+    CHECK(r.settle_time_s < 2);
+  }
+  {  // the same without the surface criterion never settles
+    const auto sim = Initialized(scene);
+    const SettleResult r = RunUntilSettled(
+        *sim, {.specific_kinetic_J_kg = 1e-30, .max_time_s = 0.5, .surface_window_s = 0}, {});
+    CHECK(r.status == "not_settled");
+  }
+  {  // a grain sliding across a frictionless floor keeps changing the surface
+    moving.fills.clear();
+    moving.pair_parameters[0].sliding_friction = 0;
+    moving.walls = {core::PlaneWall{"floor", {0, 0, 0}, {0, 0, 1}, 0, {}}};
+    moving.particles = {{.species = 0, .position_m = {0, 0, 0.002}, .velocity_m_s = {0.2, 0, 0}}};
+    const auto sim = Initialized(moving);
+    const SettleResult r = RunUntilSettled(
+        *sim, {.specific_kinetic_J_kg = 1e-30, .max_time_s = 0.6, .surface_window_s = 0.1}, {});
+    INFO(r.message);
+    CHECK(r.status == "not_settled");
+    CHECK(r.surface_change_d > 0.02);
   }
 }

@@ -92,11 +92,25 @@ TEST_CASE("the heap face SVG draws the front layer's grains and the 21 bins", "[
 
 TEST_CASE("the CoV-per-layer plot has one line per species", "[unit]") {
   const Fixture f;
-  const std::string svg = CovLayerPlotSvg(f.seg, f.names, {});
+  const std::string svg = CovLayerPlotSvg(f.seg, nullptr, f.names, {});
   CHECK(Occurrences(svg, "<polyline") == 3);
   CHECK(Occurrences(svg, "stroke-dasharray") == 3);  // whole-heap CoV per species
   CHECK(Occurrences(svg, ">EP</text>") == 1);
   CHECK(Occurrences(svg, "<circle") == 8 * 3);  // a marker per layer and species
+}
+
+TEST_CASE("the CoV-per-layer plot draws the random-mixture band of each species", "[unit]") {
+  const Fixture f;
+  SegregationFloorOptions options;
+  options.shuffles = 30;
+  const auto floor = RandomMixtureFloor(f.grid, f.snap, f.seg, options, nullptr);
+  REQUIRE(floor);
+  const std::string svg = CovLayerPlotSvg(f.seg, &*floor, f.names, {});
+  CHECK(Occurrences(svg, "<polygon") == 3);  // one band per species
+  CHECK(Occurrences(svg, "fill-opacity") == 3);
+  CHECK(Occurrences(svg, "<polyline") == 3);
+  CHECK(Occurrences(svg, "band: 95% random") == 1);
+  CHECK(Occurrences(CovLayerPlotSvg(f.seg, nullptr, f.names, {}), "<polygon") == 0);
 }
 
 TEST_CASE("the granule track CSV has a row per sample with the specific kinetic energy", "[unit]") {
@@ -122,10 +136,10 @@ TEST_CASE("the writers create files and report an unwritable path", "[unit]") {
   CHECK(WriteBinCsv((dir / "bins.csv").string(), f.grid, f.counts, f.names, &error));
   CHECK(WriteSegregationCsv((dir / "indices.csv").string(), f.seg, f.names, &error));
   CHECK(WriteHeapFaceSvg((dir / "face.svg").string(), f.snap, f.grid, {}, &error));
-  CHECK(WriteCovLayerPlotSvg((dir / "cov.svg").string(), f.seg, f.names, {}, &error));
+  CHECK(WriteCovLayerPlotSvg((dir / "cov.svg").string(), f.seg, nullptr, f.names, {}, &error));
   CHECK(std::filesystem::file_size(dir / "face.svg") > 1000);
   CHECK_FALSE(WriteBinCsv("/nonexistent_dir/bins.csv", f.grid, f.counts, f.names, &error));
   CHECK(error.find("/nonexistent_dir/bins.csv") != std::string::npos);
-  CHECK_FALSE(WriteCovLayerPlotSvg("/nonexistent_dir/cov.svg", f.seg, f.names, {}, &error));
+  CHECK_FALSE(WriteCovLayerPlotSvg("/nonexistent_dir/cov.svg", f.seg, nullptr, f.names, {}, &error));
   std::filesystem::remove_all(dir);
 }

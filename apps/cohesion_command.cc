@@ -1,0 +1,76 @@
+#include "apps/cohesion_command.h"
+
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "calibrate/cohesion_scaling.h"
+#include "workflow/exit_codes.h"
+
+namespace demcal::apps {
+namespace {
+
+struct CohesionOptions {
+  calibrate::CohesionInputs in;
+  bool json = false;
+};
+
+int Run(const CohesionOptions& o) {
+  std::string error;
+  if (!o.in.IsValid(&error)) {
+    std::cerr << "error: " << error << "\n";
+    return workflow::kExitInvalidInput;
+  }
+  const calibrate::CohesionReport r = calibrate::EvaluateCohesion(o.in);
+  const char* convention = "E* = E/(2(1-nu^2)) (two like particles), R* = the granule radius R";
+  if (o.json) {
+    nlohmann::ordered_json j{{"format", "demcal-cohesion/1"},
+                             {"convention", convention},
+                             {"gamma_J_m2", o.in.gamma_J_m2},
+                             {"youngs_real_Pa", o.in.youngs_real_Pa},
+                             {"youngs_sim_Pa", o.in.youngs_sim_Pa},
+                             {"poisson_ratio", o.in.poisson_ratio},
+                             {"radius_m", o.in.radius_m},
+                             {"density_kg_m3", o.in.density_kg_m3},
+                             {"gravity_m_s2", o.in.gravity_m_s2},
+                             {"effective_youngs_real_Pa", r.effective_youngs_real_Pa},
+                             {"effective_youngs_sim_Pa", r.effective_youngs_sim_Pa},
+                             {"effective_radius_m", r.effective_radius_m},
+                             {"cohesion_number", r.cohesion_number},
+                             {"cohesion_number_pair_radius", r.cohesion_number_pair_radius},
+                             {"gamma_sim_J_m2", r.gamma_sim_J_m2},
+                             {"reference_gamma_sim_J_m2", o.in.reference_gamma_sim_J_m2},
+                             {"youngs_sim_for_reference_Pa", r.youngs_sim_for_reference_Pa}};
+    std::cout << j.dump(2) << "\n";
+    return workflow::kExitOk;
+  }
+  std::cout << "Convention: " << convention << "\n"
+            << "Cohesion number Coh = " << r.cohesion_number << " (with R* = R/2: "
+            << r.cohesion_number_pair_radius << ")\n"
+            << "Gamma at E = " << o.in.youngs_sim_Pa / 1e9 << " GPa (constant Coh): "
+            << r.gamma_sim_J_m2 << " J/m2\n"
+            << "The reference " << o.in.reference_gamma_sim_J_m2 << " J/m2 would need E = "
+            << r.youngs_sim_for_reference_Pa / 1e9 << " GPa (Gamma ~ E*^(2/5))\n";
+  return workflow::kExitOk;
+}
+
+}  // namespace
+
+Command AddCohesionCommand(CLI::App& parent) {
+  auto o = std::make_shared<CohesionOptions>();
+  CLI::App* app = parent.add_subcommand(
+      "cohesion", "Cohesion number of a coated granule and Gamma at a softer simulation stiffness");
+  app->add_option("--gamma-J-m2", o->in.gamma_J_m2, "interfacial energy at the real stiffness (2 gamma_PEG = 0.086)");
+  app->add_option("--youngs-real-Pa", o->in.youngs_real_Pa, "real Young's modulus (1.6e9)");
+  app->add_option("--youngs-sim-Pa", o->in.youngs_sim_Pa, "simulation Young's modulus (0.25e9)");
+  app->add_option("--poisson-ratio", o->in.poisson_ratio, "Poisson ratio (0.25)");
+  app->add_option("--radius-m", o->in.radius_m, "granule radius, used as R* (325e-6)");
+  app->add_option("--density-kg-m3", o->in.density_kg_m3, "granule density (2320)");
+  app->add_option("--gravity-m-s2", o->in.gravity_m_s2, "gravity (9.81)");
+  app->add_option("--reference-gamma-J-m2", o->in.reference_gamma_sim_J_m2,
+                  "a carried Gamma to compare with (the paper's 0.046)");
+  app->add_flag("--json", o->json, "print JSON on stdout");
+  return {app, [o] { return Run(*o); }};
+}
+
+}  // namespace demcal::apps

@@ -1,0 +1,36 @@
+#include "apps/diagnose_command.h"
+
+#include <iostream>
+#include <memory>
+
+#include "diagnose/run_diagnose.h"
+
+namespace demcal::apps {
+
+Command AddDiagnoseCommand(CLI::App& parent) {
+  auto o = std::make_shared<diagnose::DiagnoseCommandOptions>();
+  CLI::App* app = parent.add_subcommand(
+      "diagnose", "Find the gap between a calibrated model and measurements, name the missing effect (demcal-study/2)");
+  app->add_option("study", o->study_path, "study file (demcal-study/2 JSON)")->required();
+  app->add_option("--out", o->out_dir, "output directory; holds the journals: run again with the same --out to resume")
+      ->required();
+  app->add_flag("--quick", o->quick, "run at the experiment files' quick fidelity");
+  app->add_option("--significance", o->diagnose.significance,
+                  "level of the gap test and of the evidence for an effect (default 0.01)")
+      ->check(CLI::Range(1e-6, 0.5));
+  app->add_option("--discrepancy-floor", o->diagnose.discrepancy_floor,
+                  "model-discrepancy noise floor in single-run scatters of the simulation (default 1)")
+      ->check(CLI::Range(0.0, 10.0));
+  app->add_option("--effects", o->effects, "candidate effects (default: the whole library)")->delimiter(',');
+  app->add_option("--species", o->species, "the species the effects act on (default: from the study's parameters)");
+  app->add_option("--refits", o->diagnose.dem_refits, "candidates refitted by simulation per step (default 2)")
+      ->check(CLI::Range(1, 10));
+  app->add_option("--max-effects", o->diagnose.max_effects, "effects added at most (default 2)")->check(CLI::Range(1, 6));
+  app->add_option("--max-evaluations", o->max_evaluations, "base calibration budget (default: the study's)")
+      ->check(CLI::Range(1, 100000));
+  app->add_option("--threads", o->threads, "runs side by side on this many cores (0: all)")->check(CLI::Range(0, 1024));
+  app->add_flag("--quiet", o->quiet, "no progress lines on stderr");
+  return {app, [o] { return diagnose::RunDiagnose(*o, std::cerr); }};
+}
+
+}  // namespace demcal::apps

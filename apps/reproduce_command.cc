@@ -1,0 +1,29 @@
+#include "apps/reproduce_command.h"
+
+#include <iostream>
+#include <memory>
+
+#include "workflow/reproduce/run_reproduce.h"
+
+namespace demcal::apps {
+
+using namespace demcal::workflow;
+
+Command AddReproduceCommand(CLI::App& parent) {
+  auto options = std::make_shared<ReproduceOptions>();
+  CLI::App* app = parent.add_subcommand(
+      "reproduce", "Run a paper's method end to end (demcal-workflow/1 file; bundled: alizadeh2018)");
+  app->add_option("workflow", options->workflow,
+                  "a bundled workflow name (datasets/NAME/workflow.json) or a workflow file")
+      ->required();
+  app->add_option("--out", options->out_dir,
+                  "output directory; holds the stage journal: run again with the same --out to resume")
+      ->required();
+  app->add_flag("--quick", options->quick, "run every experiment at its quick fidelity");
+  app->add_option("--threads", options->threads, "runs side by side on this many cores (0: all)")
+      ->check(CLI::Range(0, 1024));
+  app->add_flag("--quiet", options->quiet, "fewer progress lines on stderr");
+  return {app, [options] { return RunReproduce(*options, std::cerr); }};
+}
+
+}  // namespace demcal::apps

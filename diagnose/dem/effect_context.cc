@@ -1,0 +1,55 @@
+#include "diagnose/dem/effect_context.h"
+
+#include <algorithm>
+#include <set>
+
+namespace demcal::diagnose {
+namespace {
+
+int SubjectSpecies(const core::Scene& model, const std::string& material) {
+  int found = -1;
+  for (size_t s = 0; s < model.species.size(); ++s) {
+    if (model.materials[model.species[s].material].name != material) continue;
+    if (model.species[s].name == material) return static_cast<int>(s);
+    if (found < 0) found = static_cast<int>(s);
+  }
+  return found;
+}
+
+}  // namespace
+
+bool MakeEffectContext(const workflow::StudyFile& study, const std::string& species, EffectContext* out,
+                       std::string* error) {
+  const core::Scene& model = study.experiment().model;
+  int s = -1;
+  if (!species.empty()) {
+    s = model.SpeciesIndex(species);
+    if (s < 0) return *error = "--species: the study's first experiment has no species '" + species + "'", false;
+  } else if (!study.parameter_materials.empty()) {
+    s = SubjectSpecies(model, study.parameter_materials.front().first);
+  }
+  if (s < 0 && !model.species.empty()) s = 0;
+  if (s < 0) return *error = study.source + ": the first experiment has no species", false;
+  out->species = model.species[s].name;
+  out->material = model.materials[model.species[s].material].name;
+  std::set<int> particle_materials;
+  for (const core::Species& sp : model.species) particle_materials.insert(sp.material);
+  out->wall_materials.clear();
+  for (size_t m = 0; m < model.materials.size(); ++m)
+    if (!particle_materials.count(static_cast<int>(m))) out->wall_materials.push_back(model.materials[m].name);
+  out->coating_column.clear();
+  out->coating_max = 0;
+  for (const workflow::StudyTarget& t : study.targets)
+    for (const auto& [column, cell] : t.condition) {
+      double value = 0;
+      if (column.rfind("coating", 0) != 0 || !calibrate::ParseConditionNumber(cell, &value)) continue;
+      if (out->coating_column.empty() || out->coating_column == column) {
+        out->coating_column = column;
+        out->coating_max = std::max(out->coating_max, value);
+      }
+    }
+  if (out->coating_max <= 0) out->coating_column.clear();
+  return true;
+}
+
+}  // namespace demcal::diagnose

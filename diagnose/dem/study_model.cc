@@ -1,0 +1,165 @@
+#include "diagnose/dem/study_model.h"
+
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <iomanip>
+#include <sstream>
+
+#include "calibrate/calibration.h"
+#include "calibrate/response_surface.h"
+
+namespace demcal::diagnose {
+namespace {
+
+std::string Hex(const std::string& text) {
+  std::ostringstream hex;
+  hex << std::hex << std::setw(16) << std::setfill('0') << std::hash<std::string>{}(text);
+  return hex.str();
+}
+
+// The effects written into one group's model (after the parameters, before the fidelity).
+struct EffectWriter {
+  std::vector<std::pair<const Effect*, std::vector<double>>> effects;
+  calibrate::Condition condition;
+  EffectContext context;
+  bool Apply(core::Scene* model, std::string* why) const {
+    for (const auto& [effect, values] : effects)
+      if (!effect->Apply(values, condition, context, model, why)) return false;
+    return true;
+  }
+};
+
+}  // namespace
+
+StudyModel::StudyModel(const workflow::StudyFile& study, const std::vector<const Effect*>& effects,
+                       const EffectContext& context, const StudyModelOptions& options)
+    : study_(study), effects_(effects), context_(context), options_(options) {}
+
+std::unique_ptr<StudyModel> StudyModel::Create(const workflow::StudyFile& study,
+                                               const std::vector<const Effect*>& effects,
+                                               const EffectContext& context, const StudyModelOptions& options,
+                                               std::string* error) {
+  std::unique_ptr<StudyModel> m(new StudyModel(study, effects, context, options));
+  if (!workflow::BuildStudyRuns(study, options.quick, 0, &m->runs_, error)) return nullptr;
+  m->replicates_ = study.replicates > 0 ? study.replicates : study.experiment().replicates;
+  m->seed_ = study.has_seed ? study.seed : study.experiment().seed;
+  m->pool_squares_.assign(study.targets.size(), 0.0);
+  m->pool_dof_.assign(study.targets.size(), 0);
+  std::error_code ec;
+  std::filesystem::create_directories(options.out_dir + "/journal", ec);
+  if (ec) return *error = "--out: cannot create '" + options.out_dir + "/journal': " + ec.message(), nullptr;
+  return m;
+}
+
+std::vector<Observation> StudyModel::Observations() const {
+  std::vector<Observation> out;
+  for (const workflow::StudyTarget& t : study_.targets)
+    out.push_back({t.target.name, t.target.observable, t.condition, t.target.value, t.target.uncertainty});
+  return out;
+}
+
+std::string StudyModel::DescribeEffects(const std::vector<ActiveEffect>& effects) const {
+  std::ostringstream s;
+  s.precision(17);
+  for (const ActiveEffect& a : effects) {
+    const std::vector<EffectParameter> p = effects_[a.candidate]->Parameters(context_);
+    s << (s.tellp() > 0 ? " + " : "") << effects_[a.candidate]->Key() << "(";
+    for (size_t k = 0; k < a.values.size() && k < p.size(); ++k) s << (k ? ", " : "") << p[k].name << "=" << a.values[k];
+    s << ")";
+  }
+  return s.str();
+}
+
+StudyModel::Setting* StudyModel::SettingFor(const std::vector<ActiveEffect>& effects, std::string* error) {
+  const std::string key = DescribeEffects(effects);
+  auto found = settings_.find(key);
+  if (found != settings_.end()) return &found->second;
+  Setting& s = settings_[key];
+  std::vector<calibrate::RunGroup> groups = runs_.groups;
+  for (calibrate::RunGroup& g : groups) {
+    EffectWriter writer{{}, g.condition, context_};
+    for (const ActiveEffect& a : effects) writer.effects.push_back({effects_[a.candidate], a.values});
+    core::Scene probe = g.model;  // the effects must apply to every group's model
+    if (!writer.Apply(&probe, &s.invalid)) break;
+    auto fidelity = g.prepare;
+    g.prepare = [writer, fidelity](core::Scene* m) {
+      std::string ignored;  // checked above on the same model
+      writer.Apply(m, &ignored);
+      if (fidelity) fidelity(m);
+    };
+  }
+  const std::string path =
+      options_.out_dir + (key.empty() ? "/journal/base.jsonl" : "/journal/" + Hex(key) + ".jsonl");
+  s.journal = std::make_unique<calibrate::EvaluationJournal>();
+  if (!s.journal->Open(path, runs_.fingerprint + "|effects:" + key, error, study_.space.Size())) {
+    settings_.erase(key);
+    return nullptr;
+  }
+  s.evaluator = std::make_unique<calibrate::TargetEvaluator>(
+      study_.space, std::move(groups), runs_.bindings,
+      calibrate::TargetEvaluatorOptions{.replicates = replicates_, .seed = seed_, .workers = options_.threads},
+      s.journal.get());
+  return &s;
+}
+
+void StudyModel::Pool(Setting* s) {
+  const auto& history = s->evaluator->history();
+  for (; s->pooled < history.size(); ++s->pooled)
+    for (size_t k = 0; k < runs_.bindings.size() && k < pool_squares_.size(); ++k) {
+      const calibrate::TargetBinding& b = runs_.bindings[k];
+      std::vector<double> v;
+      for (const calibrate::ReplicateRecord& r : history[s->pooled].runs[b.group]) {
+        const auto it = r.values.find(b.observable);
+        if (r.ok() && it != r.values.end() && std::isfinite(it->second)) v.push_back(it->second);
+      }
+      if (v.size() < 2) continue;
+      double mean = 0, squares = 0;
+      for (double x : v) mean += x / v.size();
+      for (double x : v) squares += (x - mean) * (x - mean);
+      pool_squares_[k] += squares;
+      pool_dof_[k] += static_cast<int>(v.size()) - 1;
+    }
+}
+
+Prediction StudyModel::Predict(const calibrate::CandidateResult& result) const {
+  Prediction p;
+  p.ok = result.ok();
+  p.status = result.status;
+  for (size_t k = 0; k < result.targets.size() && k < pool_squares_.size(); ++k) {
+    const calibrate::TargetValue& t = result.targets[k];
+    const double spread = pool_dof_[k] > 0 ? std::sqrt(pool_squares_[k] / pool_dof_[k]) : t.sem * std::sqrt(t.replicates);
+    p.mean.push_back(t.mean);
+    p.spread.push_back(spread);
+    p.sem.push_back(t.replicates > 0 ? spread / std::sqrt(t.replicates) : t.sem);
+  }
+  return p;
+}
+
+std::vector<Prediction> StudyModel::Evaluate(const std::vector<ModelPoint>& points) {
+  std::vector<Prediction> out;
+  for (const ModelPoint& point : points) {
+    std::string error;
+    Setting* s = SettingFor(point.effects, &error);
+    Prediction p;
+    if (!s) p.status = "journal: " + error;
+    else if (!s->invalid.empty()) p.status = "effect not applicable: " + s->invalid;
+    if (!s || !s->invalid.empty()) {
+      out.push_back(p);
+      continue;
+    }
+    const std::vector<calibrate::CandidateResult> r = s->evaluator->EvaluateBatch({study_.space.FromUnit(point.base_unit)});
+    run_ += r[0].replicates_run;
+    reused_ += r[0].replicates_reused;
+    if (journal_error_.empty()) journal_error_ = r[0].journal_error;
+    Pool(s);
+    out.push_back(Predict(r[0]));
+    if (options_.log)
+      *options_.log << "diagnose:   " << (point.effects.empty() ? "base" : DescribeEffects(point.effects)) << ": "
+                    << (out.back().ok ? "ok" : out.back().status) << " (" << r[0].replicates_run << " runs, "
+                    << r[0].replicates_reused << " from journal)\n" << std::flush;
+  }
+  return out;
+}
+
+}  // namespace demcal::diagnose

@@ -1,0 +1,54 @@
+#pragma once
+// Effect: one candidate physical effect the base model may be missing (JKR adhesion, rolling
+// resistance, particle shape, size polydispersity, wall friction, a miscalibrated sliding
+// friction as a control). Each declares its extra parameters — all switched off at 0, so the
+// base model is the effect at 0 — and how it modifies the full-scale particle model, after the
+// study's own parameters were written and before the fidelity is applied (so Γ is the real one
+// and is carried at constant Cohesion number like any other). The diagnosis computes each
+// effect's signature with the simulator (how every observable in every condition moves when the
+// effect is switched on at its probe value, with the same seeds) and refits it
+// (diagnose/ranking/). Adding an effect is one file here plus one line in effect_registry.cc.
+//
+//   const Effect* e = FindEffect("rolling_resistance");
+//   EffectContext c = ...;                       // the subject species, walls, covariates
+//   e->Apply({0.2}, condition, c, &model, &why); // μr of the species' pair += 0.2
+//
+// Thread-safety: effects are stateless; Apply writes only into the model it is given.
+#include <string>
+#include <vector>
+
+#include "calibrate/condition.h"
+#include "core/scene.h"
+
+namespace demcal::diagnose {
+
+struct EffectParameter {
+  std::string name;   // unique within the effect, unit in the name ("delta_mu_r")
+  std::string unit;   // "" for a dimensionless one
+  double lower = 0;   // allowed values; 0 (switched off) is inside [lower, upper]
+  double upper = 1;
+  double probe = 0.5; // where the signature is computed, != 0
+};
+
+// What an effect acts on, found from the study (diagnose/dem/effect_context.h).
+struct EffectContext {
+  std::string species;                      // the subject species (of the study's parameters)
+  std::string material;                     // its material
+  std::vector<std::string> wall_materials;  // materials no species is made of
+  std::string coating_column;  // a numeric condition column whose name starts with "coating"
+  double coating_max = 0;      // its largest value among the observations (> 0 when set)
+};
+
+class Effect {
+ public:
+  virtual ~Effect() = default;
+  virtual std::string Key() const = 0;          // "jkr_adhesion"
+  virtual std::string Description() const = 0;  // what it changes in the model, in words
+  virtual std::vector<EffectParameter> Parameters(const EffectContext& context) const = 0;
+  // Writes the effect with these values (one per parameter) into the model of one condition.
+  // False with why when the model lacks what the effect acts on or the value is out of range.
+  virtual bool Apply(const std::vector<double>& values, const calibrate::Condition& condition,
+                     const EffectContext& context, core::Scene* model, std::string* why) const = 0;
+};
+
+}  // namespace demcal::diagnose

@@ -1,0 +1,64 @@
+#include "diagnose/gap/gap_test.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "diagnose/gap/chi_square.h"
+
+namespace demcal::diagnose {
+
+bool GapOptions::IsValid(std::string* error) const {
+  if (significance > 0 && significance < 0.5) return true;
+  *error = "significance must be in (0, 0.5), got " + std::to_string(significance);
+  return false;
+}
+
+namespace {
+
+std::string Summary(const GapReport& g) {
+  std::ostringstream s;
+  s.precision(3);
+  s << "chi2 = " << g.chi2 << " on " << g.dof << " dof (chi2/dof = " << g.chi2_per_dof << ", p = " << g.p_value
+    << "): " << (g.gap_detected ? "a gap beyond noise" : "within noise");
+  if (g.gap_detected && !g.by_observable.empty()) {
+    const auto worst = std::max_element(g.by_observable.begin(), g.by_observable.end(),
+                                        [](const ObservableChi2& a, const ObservableChi2& b) { return a.chi2 < b.chi2; });
+    s << ", mostly in " << worst->observable << " (chi2 " << worst->chi2 << " over " << worst->count << ")";
+  }
+  for (const CovariateTrend& t : g.trends)
+    if (t.significant && t.observable == "all")
+      s << "; residuals trend along " << t.covariate << " (slope " << t.slope << " +- " << t.slope_sigma << ")";
+  return s.str();
+}
+
+}  // namespace
+
+GapReport TestGap(const std::vector<Observation>& observations, int fitted_parameters, const GapOptions& options) {
+  GapReport g;
+  g.n = static_cast<int>(observations.size());
+  g.fitted_parameters = fitted_parameters;
+  g.dof = std::max(1, g.n - fitted_parameters);
+  std::map<std::string, ObservableChi2> by;
+  g.outlier_threshold = NormalTwoSidedQuantile(options.significance / std::max(1, g.n));
+  for (int i = 0; i < g.n; ++i) {
+    const double r = observations[i].Residual();
+    g.chi2 += r * r;
+    ObservableChi2& b = by[observations[i].observable];
+    b.observable = observations[i].observable;
+    b.chi2 += r * r;
+    ++b.count;
+    if (std::fabs(r) > g.outlier_threshold) g.outliers.push_back(i);
+  }
+  for (const auto& [name, b] : by) g.by_observable.push_back(b);
+  g.chi2_per_dof = g.chi2 / g.dof;
+  g.p_value = ChiSquareSurvival(g.chi2, g.dof);
+  g.critical_chi2 = ChiSquareQuantile(1 - options.significance, g.dof);
+  g.gap_detected = g.p_value < options.significance;
+  g.trends = FindTrends(observations, options.significance);
+  g.summary = Summary(g);
+  return g;
+}
+
+}  // namespace demcal::diagnose

@@ -1,0 +1,12 @@
+#include "diagnose/gap/observation.h"
+
+namespace demcal::diagnose {
+
+std::vector<double> Residuals(const std::vector<Observation>& observations) {
+  std::vector<double> r;
+  r.reserve(observations.size());
+  for (const Observation& o : observations) r.push_back(o.Residual());
+  return r;
+}
+
+}  // namespace demcal::diagnose

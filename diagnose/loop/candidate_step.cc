@@ -1,0 +1,200 @@
+#include "diagnose/loop/candidate_step.h"
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <sstream>
+
+#include "diagnose/ranking/linear_refit.h"
+
+namespace demcal::diagnose {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double Since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+Eigen::VectorXd ToVector(const std::vector<double>& v) { return Eigen::Map<const Eigen::VectorXd>(v.data(), v.size()); }
+
+// What a step works with: the fixed sigmas, the residuals at the fit and the standardised J.
+struct Frame {
+  const std::vector<Observation>* observations;
+  Eigen::VectorXd sigma, r0;
+  Eigen::MatrixXd J;
+  std::vector<double> delta_lower, delta_upper;
+  int fitted = 0;
+  double chi2_base = 0;
+  double significance = 0.01;
+  int n() const { return static_cast<int>(r0.size()); }
+};
+
+Frame MakeFrame(const std::vector<Observation>& observations, const FitState& fit, const DiagnoseOptions& o) {
+  Frame f{&observations};
+  const std::vector<Observation> at = WithPrediction(observations, fit.prediction, o.discrepancy_floor);
+  f.sigma = Sigmas(at);
+  f.r0 = StandardisedResiduals(observations, fit.prediction.mean, f.sigma);
+  f.J = f.sigma.cwiseInverse().asDiagonal() * fit.jacobian;
+  const std::vector<double> c = fit.Coordinates();
+  for (size_t j = 0; j < c.size(); ++j) {
+    f.delta_lower.push_back(fit.lower[j] - c[j]);
+    f.delta_upper.push_back(fit.upper[j] - c[j]);
+  }
+  f.fitted = fit.Fitted();
+  f.chi2_base = f.r0.squaredNorm();
+  f.significance = o.significance;
+  return f;
+}
+
+// A candidate under way: its raw signature per unit parameter, its refits so far.
+struct Work {
+  int candidate = 0;
+  Eigen::VectorXd signature;  // raw units per unit of the parameter
+  LinearRefitResult refit;
+  ModelPoint best_point;
+  Prediction best_prediction;
+  double best_chi2 = 0;
+  bool simulated = false;
+};
+
+LinearRefitResult Refit(const Frame& f, const EffectParameter& p, const Eigen::VectorXd& signature) {
+  const Eigen::MatrixXd S = f.sigma.cwiseInverse().cwiseProduct(signature);
+  return LinearRefit(f.r0, f.J, S, {p.lower}, {p.upper}, f.delta_lower, f.delta_upper);
+}
+
+void Fill(const Frame& f, const Work& w, const std::vector<CandidateEffect>& candidates, RankingEntry* e) {
+  const int k = static_cast<int>(candidates[w.candidate].parameters.size());
+  e->candidate = w.candidate;
+  e->key = candidates[w.candidate].key;
+  e->chi2_linear = w.refit.chi2;
+  e->linear = EvidenceOf(f.chi2_base, w.refit.chi2, k, f.n(), f.significance);
+  e->simulated = w.simulated;
+  e->chi2 = w.simulated ? w.best_chi2 : w.refit.chi2;
+  e->evidence = EvidenceOf(f.chi2_base, e->chi2, k, f.n(), f.significance);
+  e->chi2_per_dof = e->chi2 / std::max(1, f.n() - f.fitted - k);
+  e->signature_match = SignatureMatch(f.r0, f.J, f.sigma.cwiseInverse().cwiseProduct(w.signature));
+  if (w.best_point.effects.empty()) e->values = {w.refit.t(0)};
+  else e->values = w.best_point.effects.back().values;
+}
+
+// Simulates the Gauss–Newton point of each candidate; keeps it when it beats the best so far
+// and corrects the signature by the secant through it.
+void SimulateRefits(ForwardModel& model, const Frame& f, const FitState& fit,
+                    const std::vector<CandidateEffect>& candidates, std::vector<Work*>& work) {
+  std::vector<ModelPoint> points;
+  for (Work* w : work) {
+    const ActiveEffect added{w->candidate, {w->refit.t(0)}};
+    points.push_back(fit.Step(w->refit.delta, &added));
+  }
+  const std::vector<Prediction> got = model.Evaluate(points);
+  for (size_t i = 0; i < work.size(); ++i) {
+    Work& w = *work[i];
+    if (!got[i].ok) continue;
+    const double chi2 = StandardisedResiduals(*f.observations, got[i].mean, f.sigma).squaredNorm();
+    if (!w.simulated || chi2 < w.best_chi2) {
+      w.best_chi2 = chi2, w.best_point = points[i], w.best_prediction = got[i], w.simulated = true;
+    }
+    const double t = w.refit.t(0);
+    if (t != 0) {
+      const Eigen::VectorXd moved = ToVector(got[i].mean) - ToVector(fit.prediction.mean) - fit.jacobian * w.refit.delta;
+      w.signature = moved / t;
+    }
+    w.refit = Refit(f, candidates[w.candidate].parameters[0], w.signature);
+  }
+}
+
+std::vector<ObservableShare> Carried(const Frame& f, const std::vector<Observation>& obs, const Eigen::VectorXd& winner,
+                                     const Eigen::VectorXd* runner_up) {
+  std::map<std::string, ObservableShare> by;
+  for (int i = 0; i < f.n(); ++i) {
+    ObservableShare& s = by[obs[i].observable];
+    s.observable = obs[i].observable;
+    s.against_base += f.r0(i) * f.r0(i) - winner(i) * winner(i);
+    if (runner_up) s.against_runner_up += (*runner_up)(i) * (*runner_up)(i) - winner(i) * winner(i);
+  }
+  std::vector<ObservableShare> out;
+  for (const auto& [name, s] : by) out.push_back(s);
+  std::sort(out.begin(), out.end(), [](const ObservableShare& a, const ObservableShare& b) {
+    return a.against_runner_up > b.against_runner_up;
+  });
+  return out;
+}
+
+}  // namespace
+
+StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>& observations,
+                             const std::vector<CandidateEffect>& candidates, const std::vector<int>& remaining,
+                             const FitState& fit, const DiagnoseOptions& options, const DiagnoseProgress& progress) {
+  StepOutcome out;
+  const Frame f = MakeFrame(observations, fit, options);
+  const int sims0 = model.SimulationsRun();
+  auto start = Clock::now();
+  std::vector<ModelPoint> probes;
+  for (int c : remaining) {
+    const ActiveEffect added{c, {candidates[c].parameters[0].probe}};
+    probes.push_back(fit.Step(Eigen::VectorXd::Zero(f.fitted), &added));
+  }
+  if (progress) progress("signatures of " + std::to_string(remaining.size()) + " candidate effects");
+  const std::vector<Prediction> probed = model.Evaluate(probes);
+  out.phases.push_back({"signatures", model.SimulationsRun() - sims0, Since(start)});
+  std::vector<Work> work;
+  for (size_t i = 0; i < remaining.size(); ++i) {
+    Work w{remaining[i]};
+    if (probed[i].ok) {
+      w.signature = (ToVector(probed[i].mean) - ToVector(fit.prediction.mean)) / candidates[w.candidate].parameters[0].probe;
+    } else {
+      w.signature = Eigen::VectorXd::Zero(f.n());
+    }
+    w.refit = Refit(f, candidates[w.candidate].parameters[0], w.signature);
+    work.push_back(w);
+  }
+  // The shortlist: significant by the linear prediction, best linear ΔBIC first.
+  std::vector<Work*> shortlist;
+  for (Work& w : work)
+    if (EvidenceOf(f.chi2_base, w.refit.chi2, 1, f.n(), f.significance).significant) shortlist.push_back(&w);
+  std::sort(shortlist.begin(), shortlist.end(), [](const Work* a, const Work* b) { return a->refit.chi2 < b->refit.chi2; });
+  if (static_cast<int>(shortlist.size()) > options.dem_refits) shortlist.resize(options.dem_refits);
+  start = Clock::now();
+  const int sims1 = model.SimulationsRun();
+  if (!shortlist.empty()) {
+    if (progress) progress("refitting " + std::to_string(shortlist.size()) + " candidates by simulation");
+    SimulateRefits(model, f, fit, candidates, shortlist);  // the Gauss–Newton point
+    SimulateRefits(model, f, fit, candidates, shortlist);  // after the secant correction
+  }
+  out.phases.push_back({"refits", model.SimulationsRun() - sims1, Since(start)});
+  for (size_t i = 0; i < work.size(); ++i) {
+    RankingEntry e;
+    Fill(f, work[i], candidates, &e);
+    if (!probed[i].ok) e.note = "signature run failed: " + probed[i].status;
+    else if (e.signature_match == 0) e.note = "redundant with the fitted parameters";
+    out.step.entries.push_back(e);
+    out.step.signatures.push_back(std::vector<double>(probed[i].mean.size()));
+    for (size_t k = 0; k < probed[i].mean.size(); ++k) out.step.signatures[i][k] = probed[i].mean[k] - fit.prediction.mean[k];
+    const Eigen::VectorXd r = work[i].simulated
+                                  ? StandardisedResiduals(observations, work[i].best_prediction.mean, f.sigma)
+                                  : work[i].refit.residuals;
+    out.step.refit_residuals.push_back(std::vector<double>(r.data(), r.data() + r.size()));
+  }
+  out.step.ranking = RankCandidates(out.step.entries);
+  out.step.simulations = model.SimulationsRun() - sims0;
+  if (out.step.ranking.winner < 0) return out;
+  const int win = out.step.ranking.winner;
+  const Work& w = work[win];
+  int runner = -1;
+  for (int i : out.step.ranking.order)
+    if (i != win) { runner = i; break; }
+  const Eigen::VectorXd rw = ToVector(out.step.refit_residuals[win]);
+  const Eigen::VectorXd rr = runner >= 0 ? ToVector(out.step.refit_residuals[runner]) : Eigen::VectorXd();
+  out.step.carried = Carried(f, observations, rw, runner >= 0 ? &rr : nullptr);
+  out.has_winner = true;
+  out.next.point = w.best_point;
+  out.next.prediction = w.best_prediction;
+  out.next.jacobian.resize(f.n(), f.fitted + 1);
+  out.next.jacobian << fit.jacobian, w.signature;
+  out.next.lower = fit.lower;
+  out.next.upper = fit.upper;
+  out.next.lower.push_back(candidates[w.candidate].parameters[0].lower);
+  out.next.upper.push_back(candidates[w.candidate].parameters[0].upper);
+  return out;
+}
+
+}  // namespace demcal::diagnose

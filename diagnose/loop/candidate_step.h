@@ -1,0 +1,26 @@
+#pragma once
+// RunCandidateStep: one iteration of the loop (diagnosis.h steps 3-4) — the signatures of the
+// candidates not yet added, their linearised refits, the simulated refits of the best ones and
+// the ranking. Returns the step and, for the winner, the fit it leads to.
+//
+// Thread-safety: runs on the calling thread; the model parallelises.
+#include <string>
+#include <vector>
+
+#include "diagnose/loop/diagnosis.h"
+#include "diagnose/loop/fit_state.h"
+
+namespace demcal::diagnose {
+
+struct StepOutcome {
+  DiagnosisStep step;
+  bool has_winner = false;
+  FitState next;  // the winner's refitted fit (valid when has_winner)
+  std::vector<PhaseTime> phases;
+};
+
+StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>& observations,
+                             const std::vector<CandidateEffect>& candidates, const std::vector<int>& remaining,
+                             const FitState& fit, const DiagnoseOptions& options, const DiagnoseProgress& progress);
+
+}  // namespace demcal::diagnose

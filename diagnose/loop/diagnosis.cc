@@ -1,0 +1,118 @@
+#include "diagnose/loop/diagnosis.h"
+
+#include <chrono>
+#include <sstream>
+
+#include "diagnose/loop/candidate_step.h"
+#include "diagnose/loop/fit_state.h"
+
+namespace demcal::diagnose {
+
+bool DiagnoseOptions::IsValid(std::string* error) const {
+  if (!(significance > 0 && significance < 0.5))
+    return *error = "significance must be in (0, 0.5), got " + std::to_string(significance), false;
+  if (!(discrepancy_floor >= 0 && discrepancy_floor <= 10))
+    return *error = "discrepancy floor must be in [0, 10] single-run scatters, got " +
+                    std::to_string(discrepancy_floor), false;
+  if (dem_refits < 1 || dem_refits > 10) return *error = "refits must be in [1, 10]", false;
+  if (max_effects < 1 || max_effects > 6) return *error = "max effects must be in [1, 6]", false;
+  return true;
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+FitState BaseFit(const BaseCalibration& base, int observations) {
+  FitState fit;
+  fit.point.base_unit = base.base_unit;
+  fit.prediction = base.prediction;
+  const int p = static_cast<int>(base.base_unit.size());
+  fit.jacobian = Eigen::MatrixXd::Zero(observations, p);
+  for (int i = 0; i < observations && i < static_cast<int>(base.jacobian.size()); ++i)
+    for (int j = 0; j < p && j < static_cast<int>(base.jacobian[i].size()); ++j) fit.jacobian(i, j) = base.jacobian[i][j];
+  fit.lower.assign(p, 0.0);
+  fit.upper.assign(p, 1.0);
+  return fit;
+}
+
+std::string Names(const std::vector<int>& named, const std::vector<CandidateEffect>& candidates) {
+  std::string s;
+  for (int c : named) s += (s.empty() ? "" : " + ") + candidates[c].key;
+  return s;
+}
+
+void Finish(const std::vector<Observation>& observations, const FitState& fit, const DiagnoseOptions& options,
+            const std::vector<CandidateEffect>& candidates, Diagnosis* d) {
+  d->final_point = fit.point;
+  d->fitted_parameters_after = fit.Fitted();
+  d->after = WithPrediction(observations, fit.prediction, options.discrepancy_floor);
+  d->gap_after = TestGap(d->after, fit.Fitted(), {options.significance});
+  std::ostringstream m;
+  if (d->termination == "no_missing_effect") {
+    m << "no missing effect found: the base model fits within noise (" << d->gap_before.summary << ")";
+  } else if (d->termination == "effect_found") {
+    m << "missing effect: " << Names(d->named, candidates) << "; after adding it " << d->gap_after.summary;
+  } else if (d->termination == "gap_remains") {
+    m << "added " << Names(d->named, candidates) << " but a gap remains (" << d->gap_after.summary
+      << "), not explained by the library";
+  } else {
+    m << "gap remains, not explained by the library: " << d->gap_before.summary;
+  }
+  d->message = m.str();
+}
+
+}  // namespace
+
+Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observations,
+                   const std::vector<CandidateEffect>& candidates, const DiagnoseOptions& options,
+                   const DiagnoseProgress& progress) {
+  Diagnosis d;
+  const auto start = Clock::now();
+  std::string error;
+  if (!options.IsValid(&error)) return d.termination = "invalid", d.message = error, d;
+  if (progress) progress("calibrating the base model");
+  d.base = model.CalibrateBase();
+  d.phases.push_back({"base calibration", model.SimulationsRun(),
+                      std::chrono::duration<double>(Clock::now() - start).count()});
+  if (!d.base.ok || !d.base.prediction.ok) {
+    d.message = "the base calibration gave no prediction: " + d.base.message;
+    return d;
+  }
+  FitState fit = BaseFit(d.base, static_cast<int>(observations.size()));
+  d.before = WithPrediction(observations, fit.prediction, options.discrepancy_floor);
+  d.gap_before = TestGap(d.before, fit.Fitted(), {options.significance});
+  if (progress) progress("base model: " + d.gap_before.summary);
+  bool gap = d.gap_before.gap_detected;
+  d.termination = gap ? "gap_unexplained" : "no_missing_effect";
+  while (gap && static_cast<int>(d.named.size()) < options.max_effects) {
+    std::vector<int> remaining;
+    for (int c = 0; c < static_cast<int>(candidates.size()); ++c)
+      if (std::find(d.named.begin(), d.named.end(), c) == d.named.end()) remaining.push_back(c);
+    if (remaining.empty()) break;
+    const auto step_start = Clock::now();
+    StepOutcome s = RunCandidateStep(model, observations, candidates, remaining, fit, options, progress);
+    s.step.wall_time_s = std::chrono::duration<double>(Clock::now() - step_start).count();
+    d.phases.insert(d.phases.end(), s.phases.begin(), s.phases.end());
+    d.steps.push_back(s.step);
+    if (progress) progress("ranking: " + s.step.ranking.message);
+    if (!s.has_winner) {
+      d.termination = d.named.empty() ? "gap_unexplained" : "gap_remains";
+      break;
+    }
+    d.named.push_back(s.step.entries[s.step.ranking.winner].candidate);
+    fit = s.next;
+    const GapReport g = TestGap(WithPrediction(observations, fit.prediction, options.discrepancy_floor), fit.Fitted(),
+                                {options.significance});
+    gap = g.gap_detected;
+    d.termination = gap ? "gap_remains" : "effect_found";
+    if (progress) progress("with " + Names(d.named, candidates) + ": " + g.summary);
+  }
+  Finish(observations, fit, options, candidates, &d);
+  d.simulations = model.SimulationsRun();
+  d.simulations_reused = model.SimulationsReused();
+  d.wall_time_s = std::chrono::duration<double>(Clock::now() - start).count();
+  return d;
+}
+
+}  // namespace demcal::diagnose

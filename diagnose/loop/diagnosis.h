@@ -1,0 +1,89 @@
+#pragma once
+// Diagnose: the discrepancy workflow (docs/diagnose.md; design.md "The discrepancy workflow").
+//  1. Calibrate the base model (ForwardModel::CalibrateBase); standardised residuals per
+//     observation (observation.h) and the gap test (gap_test.h).
+//  2. No gap: stop, "no missing effect found".
+//  3. Else, per candidate effect not yet added: its signature — one simulated point, the
+//     current fit with the effect at its probe value (same seeds) — and a linearised
+//     (Gauss–Newton) refit of base + effect from the sensitivities alone (linear_refit.h).
+//  4. The `dem_refits` best linearised candidates whose linear evidence is significant are
+//     refitted for real: the Gauss–Newton point is simulated, the signature corrected by the
+//     secant through it, and a second Gauss–Newton point simulated; the better of the two is the
+//     candidate's refit. Ranking by evidence (ranking.h): ΔBIC and likelihood ratio of the
+//     simulated refits, with the signature match beside them.
+//  5. A winner: added (its refitted point becomes the current fit, its signature a fitted
+//     direction), the gap tested again, and 3-5 repeated while a significant gap remains (at most
+//     max_effects). No winner: "gap remains, not explained by the library".
+// Frugal by construction: one base calibration, one simulated point per candidate and
+// iteration, two per refitted candidate.
+//
+//   Diagnosis d = Diagnose(model, observations, candidates, options);
+//   d.termination;  // "no_missing_effect", "effect_found", "gap_remains", "gap_unexplained"
+//
+// Thread-safety: runs on the calling thread; the model parallelises.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "diagnose/gap/gap_test.h"
+#include "diagnose/loop/forward_model.h"
+#include "diagnose/ranking/ranking.h"
+
+namespace demcal::diagnose {
+
+struct DiagnoseOptions {
+  double significance = 0.01;    // the gap test's and the evidence's level, (0, 0.5)
+  double discrepancy_floor = 1;  // model-discrepancy floor, in single-run scatters, >= 0
+  int dem_refits = 2;            // candidates refitted by simulation per iteration, >= 1
+  int max_effects = 2;           // effects added at most, >= 1
+  bool IsValid(std::string* error) const;
+};
+
+// How much each observable carried the choice: Σ over its rows of r_runner_up² − r_winner²
+// (positive: it favours the winner) and of r_base² − r_winner² (what the winner fixed there).
+struct ObservableShare {
+  std::string observable;
+  double against_runner_up = 0;
+  double against_base = 0;
+};
+
+struct DiagnosisStep {
+  std::vector<RankingEntry> entries;               // one per candidate tried
+  std::vector<std::vector<double>> signatures;     // [entry][observation]: simulated change at the probe
+  std::vector<std::vector<double>> refit_residuals;  // [entry][observation]: standardised, at its refit
+  Ranking ranking;
+  std::vector<ObservableShare> carried;            // when there is a winner
+  int simulations = 0;
+  double wall_time_s = 0;
+};
+
+struct PhaseTime {
+  std::string phase;  // "base calibration", "signatures", "refits"
+  int simulations = 0;
+  double wall_time_s = 0;
+};
+
+struct Diagnosis {
+  std::string termination = "failed";
+  std::string message = "Diagnose was not called";
+  BaseCalibration base;
+  std::vector<Observation> before;  // at the base calibration
+  GapReport gap_before;
+  std::vector<DiagnosisStep> steps;
+  std::vector<int> named;           // candidate indices added, in order
+  ModelPoint final_point;
+  std::vector<Observation> after;   // at the final point
+  GapReport gap_after;
+  int fitted_parameters_after = 0;
+  std::vector<PhaseTime> phases;
+  int simulations = 0, simulations_reused = 0;
+  double wall_time_s = 0;
+};
+
+using DiagnoseProgress = std::function<void(const std::string& line)>;
+
+Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observations,
+                   const std::vector<CandidateEffect>& candidates, const DiagnoseOptions& options,
+                   const DiagnoseProgress& progress = {});
+
+}  // namespace demcal::diagnose

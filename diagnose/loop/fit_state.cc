@@ -1,0 +1,45 @@
+#include "diagnose/loop/fit_state.h"
+
+namespace demcal::diagnose {
+
+std::vector<double> FitState::Coordinates() const {
+  std::vector<double> c = point.base_unit;
+  for (const ActiveEffect& e : point.effects) c.insert(c.end(), e.values.begin(), e.values.end());
+  return c;
+}
+
+ModelPoint FitState::Step(const Eigen::VectorXd& delta, const ActiveEffect* added) const {
+  ModelPoint next = point;
+  Eigen::Index j = 0;
+  for (double& u : next.base_unit) u += delta(j++);
+  for (ActiveEffect& e : next.effects)
+    for (double& v : e.values) v += delta(j++);
+  if (added) next.effects.push_back(*added);
+  return next;
+}
+
+std::vector<Observation> WithPrediction(const std::vector<Observation>& observations, const Prediction& p,
+                                        double floor_factor) {
+  std::vector<Observation> out = observations;
+  for (size_t i = 0; i < out.size() && i < p.mean.size(); ++i) {
+    out[i].simulated = p.mean[i];
+    out[i].sem = p.sem[i];
+    out[i].floor = floor_factor * p.spread[i];
+  }
+  return out;
+}
+
+Eigen::VectorXd Sigmas(const std::vector<Observation>& observations) {
+  Eigen::VectorXd s(observations.size());
+  for (size_t i = 0; i < observations.size(); ++i) s(i) = observations[i].Sigma();
+  return s;
+}
+
+Eigen::VectorXd StandardisedResiduals(const std::vector<Observation>& observations, const std::vector<double>& mean,
+                                      const Eigen::VectorXd& sigma) {
+  Eigen::VectorXd r(observations.size());
+  for (size_t i = 0; i < observations.size(); ++i) r(i) = (mean[i] - observations[i].measured) / sigma(i);
+  return r;
+}
+
+}  // namespace demcal::diagnose

@@ -1,0 +1,45 @@
+#pragma once
+// RankCandidates: orders the candidate effects by evidence (evidence.h) and names the winner.
+// A candidate can win only when its refit is significant (likelihood-ratio p below the
+// significance AND ΔBIC < 0); among those the lowest ΔBIC wins. The refit of a candidate is the
+// real one (simulated at the refitted point) when it was made, else the linearised one; only a
+// refit that was simulated can win (a linear prediction is a shortlist, not evidence). When the
+// runner-up is within kBicIndistinct of the winner the two are not told apart and the ranking
+// says so (`distinguished` false; only simulated refits are compared); the winner is still the
+// lower ΔBIC.
+//
+//   Ranking r = RankCandidates(entries, 0.01);
+//   if (r.winner >= 0) entries[r.winner].key ...
+//
+// Thread-safety: pure function.
+#include <string>
+#include <vector>
+
+#include "diagnose/ranking/evidence.h"
+
+namespace demcal::diagnose {
+
+struct RankingEntry {
+  int candidate = 0;  // index into the loop's candidates
+  std::string key;
+  std::vector<double> values;  // refitted effect parameters
+  double chi2_linear = 0;      // predicted by the linearised refit
+  Evidence linear;
+  bool simulated = false;      // the refit was simulated (DEM refit)
+  double chi2 = 0;             // simulated when simulated, else chi2_linear
+  Evidence evidence;           // from chi2
+  double chi2_per_dof = 0;     // chi2 / (n − fitted − k)
+  double signature_match = 0;  // linear_refit.h
+  std::string note;            // e.g. "refit failed: ..." or "redundant with the fitted parameters"
+};
+
+struct Ranking {
+  std::vector<int> order;  // entry indices, best (lowest ΔBIC) first
+  int winner = -1;         // entry index, −1: none significant
+  bool distinguished = true;
+  std::string message;
+};
+
+Ranking RankCandidates(const std::vector<RankingEntry>& entries);
+
+}  // namespace demcal::diagnose

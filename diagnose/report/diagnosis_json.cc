@@ -1,0 +1,138 @@
+#include "diagnose/report/diagnosis_json.h"
+
+#include <cmath>
+
+#include "core/version.h"
+
+namespace demcal::diagnose {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json Number(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
+
+Json ConditionJson(const calibrate::Condition& c) {
+  Json j = Json::object();
+  for (const auto& [column, cell] : c) j[column] = cell;
+  return j;
+}
+
+Json ResidualTable(const std::vector<Observation>& obs) {
+  Json rows = Json::array();
+  for (const Observation& o : obs)
+    rows.push_back({{"name", o.name}, {"observable", o.observable}, {"condition", ConditionJson(o.condition)},
+                    {"measured", Number(o.measured)}, {"uncertainty", Number(o.uncertainty)},
+                    {"simulated", Number(o.simulated)}, {"sem", Number(o.sem)}, {"floor", Number(o.floor)},
+                    {"sigma", Number(o.Sigma())}, {"standardised_residual", Number(o.Residual())}});
+  return rows;
+}
+
+Json GapJson(const GapReport& g) {
+  Json trends = Json::array();
+  for (const CovariateTrend& t : g.trends)
+    trends.push_back({{"covariate", t.covariate}, {"observable", t.observable}, {"points", t.points},
+                      {"slope_per_unit", Number(t.slope)}, {"slope_sigma", Number(t.slope_sigma)},
+                      {"p_value", Number(t.p_value)}, {"significant", t.significant}});
+  Json by = Json::array();
+  for (const ObservableChi2& b : g.by_observable)
+    by.push_back({{"observable", b.observable}, {"chi2", Number(b.chi2)}, {"count", b.count}});
+  return {{"gap_detected", g.gap_detected}, {"chi2", Number(g.chi2)}, {"dof", g.dof},
+          {"fitted_parameters", g.fitted_parameters}, {"chi2_per_dof", Number(g.chi2_per_dof)},
+          {"p_value", Number(g.p_value)}, {"critical_chi2", Number(g.critical_chi2)},
+          {"outlier_threshold", Number(g.outlier_threshold)}, {"outliers", g.outliers}, {"by_observable", by},
+          {"trends", trends}, {"summary", g.summary}};
+}
+
+Json CandidateJson(const DiagnosisRunInfo& info, const RankingEntry& e, int rank, bool winner) {
+  const CandidateEffect& c = info.candidates[e.candidate];
+  Json parameters = Json::array();
+  for (size_t k = 0; k < c.parameters.size(); ++k)
+    parameters.push_back({{"name", c.parameters[k].name}, {"unit", c.parameters[k].unit},
+                          {"value", k < e.values.size() ? Number(e.values[k]) : Json(nullptr)},
+                          {"lower", c.parameters[k].lower}, {"upper", c.parameters[k].upper},
+                          {"probe", c.parameters[k].probe}});
+  return {{"rank", rank}, {"effect", e.key}, {"description", c.description}, {"parameters", parameters},
+          {"refit", e.simulated ? "simulated" : "linearised"}, {"chi2", Number(e.chi2)},
+          {"chi2_per_dof_after", Number(e.chi2_per_dof)}, {"delta_bic", Number(e.evidence.delta_bic)},
+          {"likelihood_ratio_p", Number(e.evidence.lr_p_value)}, {"significant", e.evidence.significant},
+          {"chi2_linearised", Number(e.chi2_linear)}, {"delta_bic_linearised", Number(e.linear.delta_bic)},
+          {"signature_match", Number(e.signature_match)}, {"winner", winner}, {"note", e.note}};
+}
+
+Json StepJson(const DiagnosisRunInfo& info, const DiagnosisStep& s) {
+  Json candidates = Json::array();
+  int rank = 1;
+  for (int i : s.ranking.order) candidates.push_back(CandidateJson(info, s.entries[i], rank++, i == s.ranking.winner));
+  Json carried = Json::array();
+  for (const ObservableShare& o : s.carried)
+    carried.push_back({{"observable", o.observable}, {"chi2_gain_over_runner_up", Number(o.against_runner_up)},
+                       {"chi2_gain_over_base", Number(o.against_base)}});
+  return {{"candidates", candidates},
+          {"winner", s.ranking.winner >= 0 ? Json(s.entries[s.ranking.winner].key) : Json(nullptr)},
+          {"distinguished", s.ranking.distinguished}, {"message", s.ranking.message},
+          {"observables_carried", carried}, {"simulations", s.simulations}, {"wall_time_s", s.wall_time_s}};
+}
+
+}  // namespace
+
+Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
+  Json j;
+  j["format"] = "demcal-diagnosis/1";
+  j["termination"] = d.termination;
+  j["message"] = d.message;
+  j["gap_detected"] = d.gap_before.gap_detected;
+  j["chi2_per_dof_before"] = Number(d.gap_before.chi2_per_dof);
+  j["named_effect"] = d.named.empty() ? Json(nullptr) : Json(info.candidates[d.named.front()].key);
+  Json named = Json::array();
+  for (int c : d.named) named.push_back(info.candidates[c].key);
+  j["named_effects"] = named;
+  j["chi2_per_dof_after"] = Number(d.gap_after.chi2_per_dof);
+  j["gap_detected_after"] = d.gap_after.gap_detected;
+  j["candidates"] = d.steps.empty() ? Json::array() : StepJson(info, d.steps.front())["candidates"];
+  Json steps = Json::array();
+  for (const DiagnosisStep& s : d.steps) steps.push_back(StepJson(info, s));
+  j["steps"] = steps;
+  j["gap_before"] = GapJson(d.gap_before);
+  j["gap_after"] = GapJson(d.gap_after);
+  j["residuals_before"] = ResidualTable(d.before);
+  j["residuals_after"] = ResidualTable(d.after);
+  j["base_calibration"] = {{"termination", d.base.termination}, {"message", d.base.message}};
+  Json phases = Json::array();
+  for (const PhaseTime& p : d.phases)
+    phases.push_back({{"phase", p.phase}, {"simulations", p.simulations}, {"wall_time_s", p.wall_time_s}});
+  j["simulations"] = d.simulations;
+  j["simulations_reused"] = d.simulations_reused;
+  j["phases"] = phases;
+  j["wall_time_s"] = d.wall_time_s;
+  j["provenance"] = {{"demcal_version", kVersion}, {"study", info.study}, {"description", info.description},
+                     {"fidelity", info.fidelity}, {"seed", info.seed}, {"replicates", info.replicates},
+                     {"significance", info.options.significance},
+                     {"discrepancy_floor_single_run_scatters", info.options.discrepancy_floor},
+                     {"refits_per_step", info.options.dem_refits}, {"max_effects", info.options.max_effects},
+                     {"subject_species", info.context.species}, {"subject_material", info.context.material},
+                     {"wall_materials", info.context.wall_materials},
+                     {"coating_column", info.context.coating_column}};
+  if (!info.journal_error.empty()) j["journal_error"] = info.journal_error;
+  return j;
+}
+
+Json DiagnosedParamsJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
+  Json base = Json::array();
+  for (size_t k = 0; k < info.base_names.size(); ++k)
+    base.push_back({{"name", info.base_names[k]},
+                    {"value", k < info.base_after_si.size() ? Number(info.base_after_si[k]) : Json(nullptr)}});
+  Json effects = Json::array();
+  for (const ActiveEffect& a : d.final_point.effects) {
+    const CandidateEffect& c = info.candidates[a.candidate];
+    Json values = Json::object();
+    for (size_t k = 0; k < a.values.size() && k < c.parameters.size(); ++k) values[c.parameters[k].name] = Number(a.values[k]);
+    effects.push_back({{"effect", c.key}, {"description", c.description}, {"values", values}});
+  }
+  return {{"format", "demcal-params/1"}, {"parameters", base}, {"effects", effects},
+          {"note", "base parameters of the study refitted with the named effects (docs/diagnose.md); "
+                   "effect values are increments on the experiment files' model"},
+          {"provenance", {{"study", info.study}, {"fidelity", info.fidelity}, {"seed", info.seed},
+                          {"replicates", info.replicates}, {"demcal_version", kVersion}}}};
+}
+
+}  // namespace demcal::diagnose

@@ -1,0 +1,81 @@
+#include "diagnose/effects/effect_registry.h"
+
+#include <catch2/catch.hpp>
+#include <set>
+
+namespace demcal::diagnose {
+namespace {
+
+// BP (uniform 425-500 µm) and a perspex wall, μs 0.5 / μr 0.1 everywhere.
+core::Scene Model() {
+  core::Scene m;
+  m.materials = {{"BP", 2.5e8, 0.25, 780}, {"perspex", 2.5e9, 0.25, 1180}};
+  core::Species bp{"BP", 0};
+  bp.size.kind = core::SizeDistribution::Kind::kUniform;
+  bp.size.min_diameter_m = 425e-6;
+  bp.size.max_diameter_m = 500e-6;
+  m.species = {bp};
+  m.pair_parameters.assign(4, {0.5, 0.1, 0.2, 0.0});
+  return m;
+}
+
+EffectContext Context() { return {"BP", "BP", {"perspex"}, "coating_PEG_wt_pct", 3.0}; }
+
+}  // namespace
+
+TEST_CASE("effect library: every effect is off at 0 and declares a probe inside its bounds", "[unit]") {
+  std::set<std::string> keys;
+  for (const Effect* e : EffectLibrary()) {
+    INFO(e->Key());
+    keys.insert(e->Key());
+    CHECK(FindEffect(e->Key()) == e);
+    const std::vector<EffectParameter> p = e->Parameters(Context());
+    REQUIRE(p.size() == 1);
+    CHECK(p[0].lower <= 0);
+    CHECK(p[0].upper > p[0].probe);
+    CHECK(p[0].probe > p[0].lower);
+    core::Scene m = Model();
+    std::string why;
+    REQUIRE(e->Apply({0.0}, {{"coating_PEG_wt_pct", "3"}}, Context(), &m, &why));
+    CHECK(m.pair_parameters[0].sliding_friction == 0.5);
+    CHECK(m.pair_parameters[0].interfacial_energy_J_m2 == 0);
+    CHECK(m.species[0].clump_shape.empty());
+    CHECK(m.species[0].size.max_diameter_m == 500e-6);
+  }
+  CHECK(keys.size() == 6);
+  CHECK(FindEffect("nonsense") == nullptr);
+}
+
+TEST_CASE("effects write what they declare into the model", "[unit]") {
+  std::string why;
+  core::Scene m = Model();
+  // Adhesion follows the coating column: Γ = g·w, nothing for uncoated material.
+  REQUIRE(FindEffect("jkr_adhesion")->Apply({0.004}, {{"coating_PEG_wt_pct", "1.5"}}, Context(), &m, &why));
+  CHECK(m.pair_parameters[0].interfacial_energy_J_m2 == Approx(0.006));
+  CHECK(m.pair_parameters[1].interfacial_energy_J_m2 == 0);  // BP-perspex untouched
+  m = Model();
+  REQUIRE(FindEffect("jkr_adhesion")->Apply({0.004}, {{"coating_PEG_wt_pct", "0"}}, Context(), &m, &why));
+  CHECK(m.pair_parameters[0].interfacial_energy_J_m2 == 0);
+  m = Model();
+  REQUIRE(FindEffect("rolling_resistance")->Apply({0.3}, {}, Context(), &m, &why));
+  CHECK(m.pair_parameters[0].rolling_friction == Approx(0.4));
+  m = Model();
+  REQUIRE(FindEffect("wall_friction")->Apply({0.2}, {}, Context(), &m, &why));
+  CHECK(m.pair_parameters[1].sliding_friction == Approx(0.7));
+  CHECK(m.pair_parameters[2].sliding_friction == Approx(0.7));
+  CHECK(m.pair_parameters[0].sliding_friction == Approx(0.5));
+  m = Model();
+  REQUIRE(FindEffect("particle_shape")->Apply({1.0}, {}, Context(), &m, &why));
+  CHECK(m.species[0].clump_shape.size() == 3);
+  m = Model();
+  REQUIRE(FindEffect("size_polydispersity")->Apply({0.973}, {}, Context(), &m, &why));
+  const core::SizeDistribution& s = m.species[0].size;
+  CHECK(0.5 * (s.min_diameter_m + s.max_diameter_m) == Approx(462.5e-6));
+  CHECK((s.max_diameter_m - s.min_diameter_m) / 462.5e-6 == Approx(0.162 + 0.973).epsilon(1e-3));
+  // Out of range: a clear reason, never a silent clamp.
+  m = Model();
+  CHECK_FALSE(FindEffect("sliding_friction_control")->Apply({-0.6}, {}, Context(), &m, &why));
+  CHECK(why.find("sliding_friction") != std::string::npos);
+}
+
+}  // namespace demcal::diagnose

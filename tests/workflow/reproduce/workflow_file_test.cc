@@ -1,0 +1,89 @@
+#include "workflow/reproduce/workflow_file.h"
+
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <nlohmann/json.hpp>
+
+#include "workflow/test_paths.h"
+
+using namespace demcal::workflow;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kBundled = demcal::testing::RepoRoot() / "datasets" / "alizadeh2018" / "workflow.json";
+
+nlohmann::json Bundled() {
+  std::ifstream in(kBundled);
+  return nlohmann::json::parse(in);
+}
+
+// Writes `doc` beside the bundled file (so its relative paths still resolve) and loads it.
+bool LoadVariant(const nlohmann::json& doc, WorkflowFile* out, std::string* error) {
+  const fs::path path = kBundled.parent_path() / ".workflow_file_test.json";
+  std::ofstream(path) << doc.dump(2);
+  const bool ok = LoadWorkflowFile(path.string(), out, error);
+  fs::remove(path);
+  return ok;
+}
+
+}  // namespace
+
+TEST_CASE("the bundled alizadeh2018 workflow loads with its paths resolved", "[unit]") {
+  WorkflowFile w;
+  std::string error;
+  REQUIRE(LoadWorkflowFile(kBundled.string(), &w, &error));
+  CHECK(w.name == "alizadeh2018");
+  CHECK(w.species.size() == 3);
+  CHECK(fs::exists(w.species[0].experiment_file));
+  CHECK(fs::exists(w.synthetic_measurements));
+  CHECK(w.coating.levels == std::vector<double>{0.5, 1.5, 2.5, 3.5});
+  CHECK(w.coating.curve_form == demcal::calibrate::CurveForm::kLinear);
+  CHECK(w.cohesion.gamma_J_m2 == Approx(0.086));
+  CHECK(w.reference.size() >= 30);
+  CHECK(ResolveWorkflowName("alizadeh2018", demcal::testing::RepoRoot().string()).ends_with(
+      "datasets/alizadeh2018/workflow.json"));
+  CHECK(ResolveWorkflowName("my/flow.json", "") == "my/flow.json");
+}
+
+TEST_CASE("workflow file errors name the file, the key and the allowed values", "[unit]") {
+  WorkflowFile w;
+  std::string error;
+  struct Case {
+    std::function<void(nlohmann::json&)> edit;
+    std::string expected;
+  };
+  const std::vector<Case> cases = {
+      {[](nlohmann::json& d) { d["format"] = "demcal-workflow/9"; }, "format"},
+      {[](nlohmann::json& d) { d.erase("shape_assumption"); }, "shape_assumption"},
+      {[](nlohmann::json& d) { d["coating"]["levels_wt_pct"][2] = -1; }, "coating.levels_wt_pct[2]: must be in (0, 100]"},
+      {[](nlohmann::json& d) { d["coating"]["curve_form"] = "cubic"; }, "coating.curve_form"},
+      {[](nlohmann::json& d) { d["species"][1]["min"] = 2; d["species"][1]["max"] = 1; }, "species[1].start"},
+      {[](nlohmann::json& d) { d["species"][0]["experiment_file"] = "missing.json"; }, "not found"},
+      {[](nlohmann::json& d) { d["cohesion"]["poisson_ratio"] = 0.7; }, "cohesion.poisson_ratio"},
+      {[](nlohmann::json& d) { d["reference"][0]["key"] = "nonsense"; }, "reference[0].key"},
+      {[](nlohmann::json& d) { d["coating"]["partner_radii_m"] = {1e-4}; }, "one radius per partner"},
+      {[](nlohmann::json& d) { d["segregation"]["replicates"] = 0; }, "segregation.replicates"},
+      {[](nlohmann::json& d) { d["unexpected"] = 1; }, "unexpected"},
+  };
+  for (const Case& c : cases) {
+    nlohmann::json doc = Bundled();
+    c.edit(doc);
+    INFO(c.expected);
+    CHECK_FALSE(LoadVariant(doc, &w, &error));
+    CHECK(error.find(".workflow_file_test.json") != std::string::npos);
+    CHECK(error.find(c.expected) != std::string::npos);
+  }
+}
+
+TEST_CASE("a workflow file that is not JSON is refused with its line", "[unit]") {
+  const fs::path path = fs::temp_directory_path() / "demcal_bad_workflow.json";
+  std::ofstream(path) << "{\n  \"format\": \n";
+  WorkflowFile w;
+  std::string error;
+  CHECK_FALSE(LoadWorkflowFile(path.string(), &w, &error));
+  CHECK(error.find("demcal_bad_workflow.json") != std::string::npos);
+  fs::remove(path);
+}

@@ -1,0 +1,49 @@
+#pragma once
+// One calibration of `demcal reproduce` (a species' friction, Γ at one coating level): written
+// as a demcal-study/2 file into its own folder and run by the calibration layer (RunCalibrate,
+// workflow/calibration/run_study.h) with that folder as its --out, so its evaluation journal,
+// result.json, calibrated_params.json/.liggghts and plots land there, and a rerun after a kill
+// resumes inside it. One parameter, one angle target, the `bracket` optimiser (regula falsi that
+// stops when the angle is matched within noise; docs/calibration.md).
+//
+//   CalibrationStep step{.dir = ctx.StageDir("species") + "/BP", ...};
+//   CalibrationOutcome o;
+//   if (!RunCalibrationStep(ctx, step, &o, &error)) ...;   // false only for bad input / outputs
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "workflow/reproduce/reproduce_context.h"
+
+namespace demcal::workflow {
+
+struct CalibrationStep {
+  std::string dir;              // created if needed; holds study.json and every output
+  std::string experiment_file;  // absolute or relative to the working directory
+  std::string parameter, property, material_a, material_b;
+  double min = 0, max = 1, start = 0.5;
+  std::string table, material;  // the measurement row: table, material and conditions
+  nlohmann::json conditions = nlohmann::json::object();
+  double uncertainty = 1;       // used when the row has none
+  std::string uncertainty_note;
+  int replicates = 2;
+  int max_evaluations = 12;
+  std::vector<int> clump_counts;  // optional n loop of material_a's species
+  std::vector<double> semi_axes;
+};
+
+struct CalibrationOutcome {
+  int exit_code = 0;             // RunCalibrate's: 0 matched, 3 not matched (see termination)
+  std::string termination, message;
+  double value = 0, sigma = 0;   // the calibrated parameter (sigma NaN: not determined)
+  double measured = 0, uncertainty = 0, simulated = 0, sem = 0;
+  std::string provenance;        // of the measurement row: measured, inferred, synthetic
+  int clump_count = 0;           // chosen count (0: no loop)
+  std::string result_dir;        // where result.json is (dir, or dir/clumps_<n>)
+  nlohmann::json ToJson() const;
+};
+
+bool RunCalibrationStep(const ReproduceContext& ctx, const CalibrationStep& step,
+                        CalibrationOutcome* out, std::string* error);
+
+}  // namespace demcal::workflow

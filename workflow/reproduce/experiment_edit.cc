@@ -1,0 +1,53 @@
+#include "workflow/reproduce/experiment_edit.h"
+
+#include "workflow/files/json_document.h"
+
+namespace demcal::workflow {
+namespace {
+
+nlohmann::ordered_json* FindPair(nlohmann::ordered_json* pairs, const std::string& a,
+                                 const std::string& b) {
+  for (auto& p : *pairs) {
+    const auto& m = p["materials"];
+    if (m.size() == 2 && ((m[0] == a && m[1] == b) || (m[0] == b && m[1] == a))) return &p;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+bool ReadExperimentJson(const std::string& path, nlohmann::ordered_json* out, std::string* error) {
+  nlohmann::json checked;  // the one reading discipline (size, depth, duplicate keys)
+  if (!ReadJsonFile(path, "experiment file", &checked, error)) return false;
+  *out = nlohmann::ordered_json::parse(checked.dump());
+  return true;
+}
+
+void SetPairProperty(nlohmann::ordered_json* experiment, const std::string& a, const std::string& b,
+                     const std::string& key, double value) {
+  nlohmann::ordered_json& interactions = (*experiment)["interactions"];
+  if (!interactions.contains("pairs")) interactions["pairs"] = nlohmann::ordered_json::array();
+  nlohmann::ordered_json* pair = FindPair(&interactions["pairs"], a, b);
+  if (!pair) {
+    interactions["pairs"].push_back({{"materials", {a, b}}});
+    pair = &interactions["pairs"].back();
+    // A listed pair replaces the default for every property: copy the default's.
+    if (interactions.contains("default"))
+      for (auto& [k, v] : interactions["default"].items()) (*pair)[k] = v;
+  }
+  (*pair)[key] = value;
+}
+
+double PairProperty(const nlohmann::ordered_json& experiment, const std::string& a,
+                    const std::string& b, const std::string& key, double fallback) {
+  if (!experiment.contains("interactions")) return fallback;
+  nlohmann::ordered_json interactions = experiment["interactions"];
+  if (interactions.contains("pairs"))
+    if (const auto* p = FindPair(&interactions["pairs"], a, b); p && p->contains(key))
+      return (*p)[key].get<double>();
+  if (interactions.contains("default") && interactions["default"].contains(key))
+    return interactions["default"][key].get<double>();
+  return fallback;
+}
+
+}  // namespace demcal::workflow

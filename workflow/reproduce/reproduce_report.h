@@ -1,0 +1,27 @@
+#pragma once
+// The report of `demcal reproduce`: DIR/report.html (self-contained: inline SVG, no scripts, no
+// network; workflow/outputs/html_report.h) and the same document as DIR/report.md with its
+// figures in DIR/figures/. Sections: paper vs demcal (the summary table), one per stage (its
+// numbers, its plot in the paper's figure style, its output folder), where the time went, and
+// the output files. Everything resting on synthetic data carries a "synthetic" badge.
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "workflow/reproduce/summary_table.h"
+#include "workflow/reproduce/workflow_file.h"
+
+namespace demcal::workflow {
+
+struct ReportInputs {
+  const WorkflowFile* workflow = nullptr;
+  const nlohmann::json* results = nullptr;  // stage name -> result
+  const std::vector<SummaryRow>* rows = nullptr;
+  const nlohmann::json* timings = nullptr;  // stage name -> wall time [s]
+  bool quick = false;
+  std::string out_dir;
+};
+
+bool WriteReproduceReport(const ReportInputs& in, std::string* error);
+
+}  // namespace demcal::workflow

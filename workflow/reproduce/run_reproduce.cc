@@ -1,0 +1,131 @@
+#include "workflow/reproduce/run_reproduce.h"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+
+#include "workflow/exit_codes.h"
+#include "workflow/files/json_document.h"
+#include "workflow/outputs/output_lock.h"
+#include "workflow/reproduce/reproduce_report.h"
+#include "workflow/reproduce/scenario_params.h"
+#include "workflow/reproduce/stages.h"
+#include "workflow/reproduce/summary_table.h"
+
+#ifndef DEMCAL_SOURCE_DIR
+#define DEMCAL_SOURCE_DIR "."
+#endif
+
+namespace demcal::workflow {
+namespace {
+
+namespace fs = std::filesystem;
+
+double Seconds(std::chrono::steady_clock::time_point since) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+DemcalValues CollectValues(const nlohmann::json& results) {
+  DemcalValues values;
+  for (const auto& [stage, result] : results.items()) {
+    if (!result.contains("values")) continue;
+    for (const auto& [key, v] : result["values"].items()) {
+      DemcalValue d;
+      if (v["mean"].is_number()) d.mean = v["mean"].get<double>();
+      if (v["sem"].is_number()) d.sem = v["sem"].get<double>();
+      d.note = v.value("note", "");
+      d.synthetic = v.value("synthetic", false);
+      values[key] = d;
+    }
+  }
+  return values;
+}
+
+// Runs (or reads back from the journal) every stage in order; false with *error.
+bool RunStages(ReproduceContext& ctx, nlohmann::json* timings, std::string* error) {
+  const auto& stages = ReproduceStages();
+  for (size_t k = 0; k < stages.size(); ++k) {
+    const Stage& stage = stages[k];
+    if (const nlohmann::json* done = ctx.journal->Find(stage.name)) {
+      ctx.results[stage.name] = (*done)["result"];
+      (*timings)[stage.name] = (*done)["wall_time_s"];
+      *ctx.log << "reproduce: stage " << k + 1 << "/" << stages.size() << " " << stage.name
+               << ": from the journal\n";
+      continue;
+    }
+    *ctx.log << "reproduce: stage " << k + 1 << "/" << stages.size() << " " << stage.name << ": "
+             << stage.title << "\n" << std::flush;
+    std::error_code ec;
+    fs::create_directories(ctx.StageDir(stage.name), ec);
+    const auto start = std::chrono::steady_clock::now();
+    nlohmann::json result;
+    if (!stage.run(ctx, &result, error)) return false;
+    const double wall = Seconds(start);
+    ctx.results[stage.name] = result;
+    (*timings)[stage.name] = wall;
+    if (!WriteJsonFile(ctx.StageDir(stage.name) + "/stage_result.json",
+                       nlohmann::ordered_json::parse(result.dump()), error) ||
+        !ctx.journal->Record(stage.name, {{"result", result}, {"wall_time_s", wall}}, error))
+      return false;
+    *ctx.log << "reproduce: stage " << k + 1 << "/" << stages.size() << " " << stage.name
+             << " done in " << std::lround(wall) << " s\n" << std::flush;
+  }
+  return true;
+}
+
+}  // namespace
+
+int RunReproduce(const ReproduceOptions& options, std::ostream& log) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::string root = options.repo_root.empty() ? DEMCAL_SOURCE_DIR : options.repo_root;
+  const std::string path = ResolveWorkflowName(options.workflow, root);
+  WorkflowFile workflow;
+  std::string error;
+  if (!LoadWorkflowFile(path, &workflow, &error)) {
+    log << "error: " << error << "\n";
+    if (path == options.workflow && !fs::exists(path))
+      log << "  (a bundled workflow name is a folder datasets/NAME/ with a workflow.json)\n";
+    return kExitInvalidInput;
+  }
+  std::error_code ec;
+  fs::create_directories(options.out_dir, ec);
+  OutputLock lock;
+  if (ec || !LockOutputDirectory(options.out_dir, "demcal reproduce", &lock, &error)) {
+    log << "error: " << (ec ? "cannot create '" + options.out_dir + "': " + ec.message() : error) << "\n";
+    return kExitOutputError;
+  }
+  StageJournal journal;
+  const std::string fingerprint = workflow.fingerprint + (options.quick ? "/quick" : "/default");
+  if (!journal.Open(options.out_dir + "/stages.jsonl", fingerprint, &error)) {
+    log << "error: " << error << "\n";
+    return kExitInvalidInput;
+  }
+  ReproduceContext ctx{.workflow = &workflow, .out_dir = options.out_dir, .quick = options.quick,
+                       .threads = options.threads, .quiet = options.quiet, .log = &log,
+                       .journal = &journal};
+  log << "reproduce: " << workflow.name << " (" << path << ") into " << options.out_dir
+      << (options.quick ? " at --quick fidelity" : " at the default fidelity") << "\n";
+  nlohmann::json timings = nlohmann::json::object();
+  if (!RunStages(ctx, &timings, &error)) {
+    log << "error: " << error << "\n";
+    return error.find("cannot write") != std::string::npos ? kExitOutputError : kExitInvalidInput;
+  }
+  const std::vector<SummaryRow> rows =
+      BuildSummaryRows(workflow.reference, CollectValues(ctx.results));
+  const std::string fidelity = options.quick ? "quick" : "default";
+  nlohmann::ordered_json summary = SummaryJson(workflow.name, fidelity, rows);
+  summary["stage_wall_time_s"] = nlohmann::ordered_json::parse(timings.dump());
+  summary["total_wall_time_s_this_run"] = Seconds(start);
+  ReportInputs report{.workflow = &workflow, .results = &ctx.results, .rows = &rows,
+                      .timings = &timings, .quick = options.quick, .out_dir = options.out_dir};
+  if (!WriteJsonFile(options.out_dir + "/summary.json", summary, &error) ||
+      !WriteScenarioParams(ctx, &error) || !WriteReproduceReport(report, &error)) {
+    log << "error: " << error << "\n";
+    return kExitOutputError;
+  }
+  log << "reproduce: done in " << std::lround(Seconds(start)) << " s: " << options.out_dir
+      << "/report.html, summary.json (" << rows.size() << " rows)\n";
+  return kExitOk;
+}
+
+}  // namespace demcal::workflow

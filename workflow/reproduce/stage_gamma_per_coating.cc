@@ -1,0 +1,91 @@
+// Stage 3, Γ per coating level (paper section 2.5.2, Fig. 6): for each coating level of the
+// workflow file, Γ of the coated pair (EP–EP) calibrated so the poured heap of the coated species
+// (its experiment file as calibrated by stage 1) matches that level's repose angle, starting from
+// 2γ carried to the simulation stiffness at constant Coh (stage 2). The bracket optimiser stops
+// at the first Γ whose angle is within the noise of the measurement, so two Γ whose angles are
+// closer than their noise are never told apart. Each level's row is read from the measurement
+// table, or else from the synthetic table (then every output of the level says synthetic).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "workflow/files/measurement_table.h"
+#include "workflow/reproduce/calibration_step.h"
+#include "workflow/reproduce/stages.h"
+
+namespace demcal::workflow {
+namespace {
+
+std::string LevelName(double w) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "w%g", w);
+  return text;
+}
+
+// The table holding the level's angle row: the measurements, else the synthetic table.
+bool TableFor(const WorkflowFile& w, double level, std::string* table, std::string* error) {
+  const calibrate::Condition condition = {{w.coating.covariate, std::to_string(level)}};
+  std::string why;
+  for (const std::string& path : {w.measurements, w.synthetic_measurements}) {
+    if (path.empty()) continue;
+    MeasurementTable t;
+    if (!LoadMeasurementTable(path, &t, error)) return false;
+    if (t.Find("angle_deg", w.coating.material, condition, &why)) return *table = path, true;
+  }
+  *error = w.source + ": coating.levels_wt_pct: no angle_deg row of " + w.coating.material +
+           " at " + w.coating.covariate + " = " + std::to_string(level) +
+           " in the measurement or synthetic table (" + why + ")";
+  return false;
+}
+
+}  // namespace
+
+bool RunGammaPerCoatingStage(ReproduceContext& ctx, nlohmann::json* result, std::string* error) {
+  const WorkflowFile& w = *ctx.workflow;
+  const WorkflowCoating& c = w.coating;
+  const nlohmann::json& species = ctx.results["species"]["species"];
+  const std::string experiment = species.contains(c.material)
+                                     ? species[c.material]["calibrated_experiment"].get<std::string>()
+                                     : c.experiment_file;
+  const double start = std::clamp(ctx.results["cohesion"]["gamma_sim_J_m2"].get<double>(),
+                                  c.gamma_min_J_m2, c.gamma_max_J_m2);
+  nlohmann::json levels = nlohmann::json::array(), values = nlohmann::json::object();
+  for (size_t k = 0; k < c.levels.size(); ++k) {
+    const double level = c.levels[k];
+    std::string table;
+    if (!TableFor(w, level, &table, error)) return false;
+    *ctx.log << "reproduce: coating level " << k + 1 << "/" << c.levels.size() << ": Γ of "
+             << c.material << "-" << c.material << " at " << level << " wt%\n";
+    CalibrationStep step{.dir = ctx.StageDir("gamma_per_coating") + "/" + LevelName(level),
+                         .experiment_file = experiment,
+                         .parameter = "gamma_" + LevelName(level),
+                         .property = "interfacial_energy_J_m2",
+                         .material_a = c.material,
+                         .material_b = c.material,
+                         .min = c.gamma_min_J_m2, .max = c.gamma_max_J_m2, .start = start,
+                         .table = table,
+                         .material = c.material,
+                         .conditions = {{c.covariate, level}},
+                         .uncertainty = w.angle_uncertainty_deg,
+                         .uncertainty_note = w.angle_uncertainty_note,
+                         .replicates = w.replicates};
+    CalibrationOutcome o;
+    if (!RunCalibrationStep(ctx, step, &o, error)) return false;
+    nlohmann::json entry = o.ToJson();
+    entry["wt_pct"] = level;
+    entry["synthetic"] = o.provenance == "synthetic";
+    levels.push_back(entry);
+    char key[64];
+    std::snprintf(key, sizeof(key), "gamma_w%g_J_m2", level);
+    const bool synthetic = o.provenance == "synthetic";
+    values[key] = ValueJson(o.value, o.sigma,
+                            o.termination == "within_noise" ? "" : "not matched: " + o.termination,
+                            synthetic);
+    std::snprintf(key, sizeof(key), "angle_EP_w%g_deg", level);
+    values[key] = ValueJson(o.simulated, o.sem, "the calibrated heap's angle", synthetic);
+  }
+  *result = {{"start_gamma_J_m2", start}, {"levels", levels}, {"values", values}};
+  return true;
+}
+
+}  // namespace demcal::workflow

@@ -1,0 +1,163 @@
+// Stage 6, segregation of the calibrated set (paper sections 3.1–3.5): the ternary heap of the
+// workflow's segregation experiment file with the species' calibrated frictions (stage 1), under
+// three scenarios:
+//   uncoated   Γ = 0 everywhere;
+//   coated     Γ(coated_wt_pct) of the curve (stage 4) on the coated pair, the dissimilar pairs
+//              of stage 5 on the coated–uncoated pairs;
+//   excessive  excessive_gamma_J_m2 on every contact of the coated species (paper section 3.5).
+// Each scenario runs its replicates as separate `demcal experiment segregation` runs (replicate r:
+// the file's seed replaced by ReplicateSeed(seed, r), one replicate each) side by side, each
+// journalled when it finishes, so a kill loses only the runs in flight. Means ± sem over the
+// replicates of each scenario feed summary.json.
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include "objectives/common/replicates.h"
+#include "workflow/experiments/run_experiment.h"
+#include "workflow/files/json_document.h"
+#include "workflow/reproduce/experiment_edit.h"
+#include "workflow/reproduce/segregation_metrics.h"
+#include "workflow/reproduce/stages.h"
+
+namespace demcal::workflow {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Scenario {
+  std::string name;
+  nlohmann::ordered_json experiment;
+  bool synthetic = false;
+};
+
+bool BuildScenarios(const ReproduceContext& ctx, std::vector<Scenario>* out, std::string* error) {
+  const WorkflowFile& w = *ctx.workflow;
+  nlohmann::ordered_json base;
+  if (!ReadExperimentJson(w.segregation.experiment_file, &base, error)) return false;
+  for (const auto& [name, s] : ctx.results["species"]["species"].items())
+    if (s["value"].is_number())
+      SetPairProperty(&base, name, name, s["property"].get<std::string>(), s["value"].get<double>());
+  const std::string ep = w.coating.material;
+  const nlohmann::json& pairs = ctx.results["dissimilar_pairs"];
+  Scenario uncoated{"uncoated", base};
+  Scenario coated{"coated", base, pairs.value("synthetic", false)};
+  if (pairs["coated_gamma_J_m2"].is_number()) {
+    SetPairProperty(&coated.experiment, ep, ep, "interfacial_energy_J_m2",
+                    pairs["coated_gamma_J_m2"].get<double>());
+    for (const nlohmann::json& p : pairs["pairs"])
+      if (p["gamma_J_m2"].is_number())
+        SetPairProperty(&coated.experiment, ep, p["materials"][1].get<std::string>(),
+                        "interfacial_energy_J_m2", p["gamma_J_m2"].get<double>());
+  }
+  Scenario excessive{"excessive", base};
+  const double g = w.segregation.excessive_gamma_J_m2;
+  SetPairProperty(&excessive.experiment, ep, ep, "interfacial_energy_J_m2", g);
+  for (const std::string& partner : w.coating.partners)
+    SetPairProperty(&excessive.experiment, ep, partner, "interfacial_energy_J_m2", g);
+  *out = {uncoated};
+  if (pairs["coated_gamma_J_m2"].is_number()) out->push_back(coated);
+  out->push_back(excessive);
+  return true;
+}
+
+// One replicate: its own experiment file (seed replaced) and output folder.
+bool RunReplicate(const ReproduceContext& ctx, const Scenario& s, int r, const std::string& dir,
+                  nlohmann::json* metrics, std::string* error) {
+  nlohmann::ordered_json file = s.experiment;
+  const uint64_t seed = objectives::ReplicateSeed(file.value("seed", uint64_t{1}), r);
+  file["seed"] = seed;
+  file["replicates"] = 1;
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  const std::string path = dir + "/experiment.json";
+  if (!WriteJsonFile(path, file, error)) return false;
+  std::ostringstream log;
+  ExperimentOptions options{.kind = "segregation", .params_path = path, .out_dir = dir,
+                            .replicates = 1, .quick = ctx.quick, .threads = 1, .quiet = true};
+  const int code = RunExperiment(options, log);
+  nlohmann::json result;
+  if (!ReadJsonFile(dir + "/result.json", "segregation result", &result, error)) {
+    *error += " (exit code " + std::to_string(code) + ": " + log.str() + ")";
+    return false;
+  }
+  *metrics = ExtractSegregationMetrics(result);
+  (*metrics)["seed"] = seed;
+  (*metrics)["exit_code"] = code;
+  return true;
+}
+
+}  // namespace
+
+bool RunSegregationStage(ReproduceContext& ctx, nlohmann::json* result, std::string* error) {
+  const WorkflowSegregation& seg = ctx.workflow->segregation;
+  if (!seg.enabled) {
+    *result = {{"enabled", false}, {"values", nlohmann::json::object()}};
+    return true;
+  }
+  std::vector<Scenario> scenarios;
+  if (!BuildScenarios(ctx, &scenarios, error)) return false;
+  const int replicates = ctx.quick ? seg.quick_replicates : seg.replicates;
+  struct Job { size_t scenario; int replicate; };
+  std::vector<Job> jobs;
+  for (size_t s = 0; s < scenarios.size(); ++s) {
+    const std::string dir = ctx.StageDir("segregation") + "/" + scenarios[s].name;
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (!WriteJsonFile(dir + "/experiment.json", scenarios[s].experiment, error)) return false;
+    for (int r = 0; r < replicates; ++r)
+      if (!ctx.journal->Find("segregation/" + scenarios[s].name + "/r" + std::to_string(r)))
+        jobs.push_back({s, r});
+  }
+  const int total = static_cast<int>(scenarios.size()) * replicates;
+  *ctx.log << "reproduce: segregation: " << scenarios.size() << " scenarios x " << replicates
+           << " replicates, " << total - static_cast<int>(jobs.size()) << " from the journal\n";
+  std::atomic<size_t> next{0};
+  std::atomic<int> done{0};
+  std::mutex mutex;
+  std::string first_error;
+  const auto start = std::chrono::steady_clock::now();
+  auto worker = [&] {
+    for (size_t j; (j = next++) < jobs.size();) {
+      const Scenario& s = scenarios[jobs[j].scenario];
+      const int r = jobs[j].replicate;
+      const std::string dir = ctx.StageDir("segregation") + "/" + s.name + "/r" + std::to_string(r);
+      nlohmann::json metrics;
+      std::string why;
+      bool ok = RunReplicate(ctx, s, r, dir, &metrics, &why) &&
+                ctx.journal->Record("segregation/" + s.name + "/r" + std::to_string(r), metrics, &why);
+      std::lock_guard lock(mutex);
+      if (!ok && first_error.empty()) first_error = why;
+      const int n = ++done;
+      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (!ctx.quiet)
+        *ctx.log << "reproduce: segregation run " << n << "/" << jobs.size() << " (" << s.name << " r"
+                 << r << ") done; elapsed " << std::lround(elapsed) << " s, ETA "
+                 << std::lround(elapsed / n * (jobs.size() - n)) << " s\n" << std::flush;
+    }
+  };
+  const int workers = std::max(1, std::min<int>(ctx.threads > 0 ? ctx.threads
+                                                                : std::thread::hardware_concurrency(),
+                                                static_cast<int>(jobs.size())));
+  std::vector<std::thread> pool;
+  for (int i = 0; i < workers; ++i) pool.emplace_back(worker);
+  for (std::thread& t : pool) t.join();
+  if (!first_error.empty()) return *error = first_error, false;
+  nlohmann::json per_scenario = nlohmann::json::object();
+  for (const Scenario& s : scenarios) {
+    std::vector<nlohmann::json> runs;
+    for (int r = 0; r < replicates; ++r)
+      runs.push_back(*ctx.journal->Find("segregation/" + s.name + "/r" + std::to_string(r)));
+    per_scenario[s.name] = SummariseSegregationRuns(runs);
+    per_scenario[s.name]["synthetic"] = s.synthetic;
+    per_scenario[s.name]["dir"] = ctx.StageDir("segregation") + "/" + s.name;
+  }
+  *result = {{"enabled", true}, {"replicates", replicates}, {"scenarios", per_scenario},
+             {"values", SegregationSummaryValues(per_scenario, ctx.workflow->coating.material)}};
+  return true;
+}
+
+}  // namespace demcal::workflow

@@ -1,0 +1,62 @@
+// Stage 1, species (paper section 2.4, Fig. 3): for each species of the workflow file, the pair
+// property it names (the rolling friction by default) of the species with itself, calibrated so
+// the poured heap matches the species' measured repose angle; with clump_counts, the smallest
+// clump sphere count that matches (the calibration layer's clump loop). The calibrated value is
+// written into a copy of the species' experiment file (species/<name>/calibrated_experiment.json)
+// for the stages after it.
+#include <cmath>
+
+#include "workflow/files/json_document.h"
+#include "workflow/reproduce/calibration_step.h"
+#include "workflow/reproduce/experiment_edit.h"
+#include "workflow/reproduce/stages.h"
+
+namespace demcal::workflow {
+
+bool RunSpeciesStage(ReproduceContext& ctx, nlohmann::json* result, std::string* error) {
+  const WorkflowFile& w = *ctx.workflow;
+  nlohmann::json species = nlohmann::json::object(), values = nlohmann::json::object();
+  for (size_t k = 0; k < w.species.size(); ++k) {
+    const WorkflowSpecies& s = w.species[k];
+    const std::string key = "species/" + s.name;
+    *ctx.log << "reproduce: species " << k + 1 << "/" << w.species.size() << " " << s.name
+             << ": " << s.property << " against the measured repose angle\n";
+    CalibrationStep step{.dir = ctx.StageDir("species") + "/" + s.name,
+                         .experiment_file = s.experiment_file,
+                         .parameter = s.property + "_" + s.name,
+                         .property = s.property,
+                         .material_a = s.name,
+                         .material_b = s.name,
+                         .min = s.min, .max = s.max, .start = s.start,
+                         .table = w.measurements,
+                         .material = s.name,
+                         .conditions = {{"coating_PEG_wt_pct", 0}},
+                         .uncertainty = w.angle_uncertainty_deg,
+                         .uncertainty_note = w.angle_uncertainty_note,
+                         .replicates = w.replicates,
+                         .clump_counts = s.clump_counts,
+                         .semi_axes = s.semi_axes};
+    CalibrationOutcome o;
+    if (!RunCalibrationStep(ctx, step, &o, error)) return false;
+    nlohmann::ordered_json experiment;
+    if (!ReadExperimentJson(s.experiment_file, &experiment, error)) return false;
+    if (std::isfinite(o.value)) SetPairProperty(&experiment, s.name, s.name, s.property, o.value);
+    const std::string calibrated = step.dir + "/calibrated_experiment.json";
+    if (!WriteJsonFile(calibrated, experiment, error)) return false;
+    nlohmann::json entry = o.ToJson();
+    entry["property"] = s.property;
+    entry["calibrated_experiment"] = calibrated;
+    species[s.name] = entry;
+    values["angle_" + s.name + "_deg"] =
+        ValueJson(o.simulated, o.sem, o.termination == "within_noise"
+                                          ? "calibrated to it (" + s.property + ")"
+                                          : "not matched: " + o.termination + ": " + o.message);
+    values["clump_count_" + s.name] = ValueJson(
+        o.clump_count > 0 ? o.clump_count : NAN, NAN,
+        s.clump_counts.empty() ? "shape fixed by the workflow file: " + w.shape_assumption : "");
+  }
+  *result = {{"species", species}, {"values", values}};
+  return true;
+}
+
+}  // namespace demcal::workflow

@@ -1,0 +1,227 @@
+#include "workflow/reproduce/workflow_file.h"
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <sstream>
+
+#include "workflow/files/json_document.h"
+#include "workflow/files/json_fields.h"
+
+namespace demcal::workflow {
+namespace {
+
+namespace fs = std::filesystem;
+using Parse = std::function<void(const nlohmann::json&, const std::string&)>;
+
+std::string Resolve(const std::string& file, const std::string& relative) {
+  if (relative.empty() || fs::path(relative).is_absolute()) return relative;
+  return (fs::path(file).parent_path() / relative).lexically_normal().string();
+}
+
+void ForEach(JsonFields& f, const std::string& key, Presence presence, const Parse& parse) {
+  const nlohmann::json* a = f.Array(key, presence);
+  if (!a) return;
+  if (a->empty() && presence == kRequired) f.Fail(key, "must not be empty");
+  for (size_t i = 0; i < a->size() && f.ok(); ++i) parse((*a)[i], IndexPath(f.PathOf(key), i));
+}
+
+// A list of numbers each in `range`, at least `min_size` of them.
+void NumberList(JsonFields& f, const std::string& key, Presence presence, Range range,
+                size_t min_size, std::vector<double>* out, JsonStatus* status) {
+  const nlohmann::json* a = f.Array(key, presence);
+  if (!a) return;
+  if (a->size() < min_size) f.Fail(key, "needs at least " + std::to_string(min_size) + " numbers");
+  out->clear();
+  for (size_t i = 0; i < a->size() && status->ok(); ++i) {
+    const std::string at = IndexPath(f.PathOf(key), i);
+    if (!(*a)[i].is_number())
+      status->Fail(at + ": expected a number, got " + JsonTypeName((*a)[i]));
+    else if (!range.Contains((*a)[i].get<double>()))
+      status->Fail(at + ": must be in " + range.Describe());
+    else
+      out->push_back((*a)[i].get<double>());
+  }
+}
+
+void ParseSpecies(const nlohmann::json& j, const std::string& path, const std::string& file,
+                  WorkflowSpecies* s, JsonStatus* status) {
+  JsonFields f(j, path, {"name", "experiment_file", "property", "min", "max", "start",
+                         "clump_counts", "semi_axes"}, status);
+  f.String("name", &s->name, kRequired);
+  f.String("experiment_file", &s->experiment_file, kRequired);
+  s->experiment_file = Resolve(file, s->experiment_file);
+  f.String("property", &s->property, kOptional, {"rolling_friction", "sliding_friction"});
+  f.Number("min", &s->min, kRequired, Range::Closed(0, 10));
+  f.Number("max", &s->max, kRequired, Range::Closed(0, 10));
+  s->start = 0.5 * (s->min + s->max);
+  f.Number("start", &s->start, kOptional, Range::Closed(0, 10));
+  if (f.ok() && !(s->min < s->max && s->start >= s->min && s->start <= s->max))
+    f.Fail("start", "needs min < max and min <= start <= max");
+  std::vector<double> counts;
+  NumberList(f, "clump_counts", kOptional, Range::Closed(1, 5), 1, &counts, status);
+  for (double c : counts) s->clump_counts.push_back(static_cast<int>(c));
+  NumberList(f, "semi_axes", s->clump_counts.empty() ? kOptional : kRequired,
+             Range::LeftOpen(0, 1e3), 3, &s->semi_axes, status);
+}
+
+void ParseCoating(const nlohmann::json& j, const std::string& path, const std::string& file,
+                  WorkflowCoating* c, JsonStatus* status) {
+  JsonFields f(j, path, {"material", "experiment_file", "covariate", "levels_wt_pct",
+                         "gamma_min_J_m2", "gamma_max_J_m2", "curve_form", "partners",
+                         "partner_radii_m", "coated_radius_m"}, status);
+  f.String("material", &c->material, kRequired);
+  f.String("experiment_file", &c->experiment_file, kRequired);
+  c->experiment_file = Resolve(file, c->experiment_file);
+  f.String("covariate", &c->covariate, kOptional);
+  NumberList(f, "levels_wt_pct", kRequired, Range::LeftOpen(0, 100), 1, &c->levels, status);
+  f.Number("gamma_min_J_m2", &c->gamma_min_J_m2, kOptional, Range::Closed(0, 10, "J/m2"));
+  f.Number("gamma_max_J_m2", &c->gamma_max_J_m2, kOptional, Range::LeftOpen(0, 10, "J/m2"));
+  if (f.ok() && c->gamma_min_J_m2 >= c->gamma_max_J_m2)
+    f.Fail("gamma_max_J_m2", "must be larger than gamma_min_J_m2");
+  std::string form = "linear";
+  f.String("curve_form", &form, kOptional, calibrate::CurveFormKeys());
+  if (f.ok()) calibrate::CurveFormFromKey(form, &c->curve_form);
+  if (const nlohmann::json* p = f.Array("partners", kRequired)) {
+    for (size_t i = 0; i < p->size() && status->ok(); ++i) {
+      if (!(*p)[i].is_string()) status->Fail(IndexPath(f.PathOf("partners"), i) + ": expected a string");
+      else c->partners.push_back((*p)[i].get<std::string>());
+    }
+  }
+  NumberList(f, "partner_radii_m", kRequired, Range::LeftOpen(0, 1, "m"), 1, &c->partner_radii_m,
+             status);
+  if (f.ok() && c->partner_radii_m.size() != c->partners.size())
+    f.Fail("partner_radii_m", "needs one radius per partner");
+  f.Number("coated_radius_m", &c->coated_radius_m, kRequired, Range::LeftOpen(0, 1, "m"));
+}
+
+void ParseCohesion(const nlohmann::json& j, const std::string& path,
+                   calibrate::CohesionInputs* c, JsonStatus* status) {
+  JsonFields f(j, path, {"gamma_J_m2", "youngs_real_Pa", "youngs_sim_Pa", "poisson_ratio",
+                         "radius_m", "density_kg_m3", "reference_gamma_sim_J_m2"}, status);
+  f.Number("gamma_J_m2", &c->gamma_J_m2, kRequired, Range::LeftOpen(0, 100, "J/m2"));
+  f.Number("youngs_real_Pa", &c->youngs_real_Pa, kRequired, Range::LeftOpen(0, 1e13, "Pa"));
+  f.Number("youngs_sim_Pa", &c->youngs_sim_Pa, kRequired, Range::LeftOpen(0, 1e13, "Pa"));
+  f.Number("poisson_ratio", &c->poisson_ratio, kRequired, Range::Open(-1, 0.5));
+  f.Number("radius_m", &c->radius_m, kRequired, Range::LeftOpen(0, 1, "m"));
+  f.Number("density_kg_m3", &c->density_kg_m3, kRequired, Range::LeftOpen(0, 1e5, "kg/m3"));
+  f.Number("reference_gamma_sim_J_m2", &c->reference_gamma_sim_J_m2, kOptional,
+           Range::LeftOpen(0, 100, "J/m2"));
+}
+
+void ParseSegregation(const nlohmann::json& j, const std::string& path, const std::string& file,
+                      WorkflowSegregation* s, JsonStatus* status) {
+  JsonFields f(j, path, {"experiment_file", "replicates", "quick_replicates", "coated_wt_pct",
+                         "excessive_gamma_J_m2", "enabled"}, status);
+  f.String("experiment_file", &s->experiment_file, kRequired);
+  s->experiment_file = Resolve(file, s->experiment_file);
+  int64_t n = s->replicates, q = s->quick_replicates;
+  f.Integer("replicates", &n, kOptional, Range::Closed(1, 100));
+  f.Integer("quick_replicates", &q, kOptional, Range::Closed(1, 100));
+  s->replicates = static_cast<int>(n);
+  s->quick_replicates = static_cast<int>(q);
+  f.Number("coated_wt_pct", &s->coated_wt_pct, kOptional, Range::LeftOpen(0, 100));
+  f.Number("excessive_gamma_J_m2", &s->excessive_gamma_J_m2, kOptional,
+           Range::LeftOpen(0, 10, "J/m2"));
+  f.Bool("enabled", &s->enabled, kOptional);
+}
+
+void ParseFidelityCheck(const nlohmann::json& j, const std::string& path,
+                        WorkflowFidelityCheck* c, JsonStatus* status) {
+  JsonFields f(j, path, {"wt_pct", "size_scale", "stiffness_scale", "replicates", "enabled"},
+               status);
+  f.Number("wt_pct", &c->wt_pct, kOptional, Range::LeftOpen(0, 100));
+  f.Number("size_scale", &c->size_scale, kOptional, Range::Closed(1, 20));
+  f.Number("stiffness_scale", &c->stiffness_scale, kOptional, Range::LeftOpen(0, 1));
+  int64_t n = c->replicates;
+  f.Integer("replicates", &n, kOptional, Range::Closed(1, 100));
+  c->replicates = static_cast<int>(n);
+  f.Bool("enabled", &c->enabled, kOptional);
+}
+
+void ParseReference(const nlohmann::json& j, const std::string& path, ReferenceValue* r,
+                    JsonStatus* status) {
+  JsonFields f(j, path, {"key", "quantity", "value", "uncertainty", "comparison", "unit", "source"},
+               status);
+  f.String("key", &r->key, kRequired, ReferenceKeys());
+  f.String("quantity", &r->quantity, kRequired);
+  f.Number("value", &r->value, kOptional);
+  f.Number("uncertainty", &r->uncertainty, kOptional, Range::Closed(0, 1e30));
+  f.String("comparison", &r->comparison, kOptional, {"equal", "at_least", "at_most"});
+  f.String("unit", &r->unit, kRequired);
+  f.String("source", &r->source, kRequired);
+}
+
+std::string Fingerprint(const std::string& text) {
+  return std::to_string(std::hash<std::string>{}(text));
+}
+
+}  // namespace
+
+bool LoadWorkflowFile(const std::string& path, WorkflowFile* out, std::string* error) {
+  nlohmann::json doc;
+  if (!ReadJsonFile(path, "workflow file", &doc, error)) return false;
+  *out = WorkflowFile{};
+  out->source = path;
+  out->fingerprint = Fingerprint(doc.dump());
+  JsonStatus status;
+  JsonFields f(doc, "", {"format", "name", "description", "shape_assumption", "measurements",
+                         "synthetic_measurements", "angle_uncertainty_deg",
+                         "angle_uncertainty_note", "replicates", "species", "cohesion", "coating",
+                         "segregation", "fidelity_check", "reference"}, &status);
+  std::string format;
+  f.String("format", &format, kRequired, {kWorkflowFormat});
+  f.String("name", &out->name, kRequired);
+  f.String("description", &out->description, kOptional);
+  f.String("shape_assumption", &out->shape_assumption, kRequired);
+  f.String("measurements", &out->measurements, kRequired);
+  out->measurements = Resolve(path, out->measurements);
+  f.String("synthetic_measurements", &out->synthetic_measurements, kOptional);
+  out->synthetic_measurements = Resolve(path, out->synthetic_measurements);
+  f.Number("angle_uncertainty_deg", &out->angle_uncertainty_deg, kRequired,
+           Range::LeftOpen(0, 20, "deg"));
+  f.String("angle_uncertainty_note", &out->angle_uncertainty_note, kRequired);
+  int64_t replicates = out->replicates;
+  f.Integer("replicates", &replicates, kOptional, Range::Closed(1, 100));
+  out->replicates = static_cast<int>(replicates);
+  ForEach(f, "species", kRequired, [&](const nlohmann::json& j, const std::string& p) {
+    out->species.emplace_back();
+    ParseSpecies(j, p, path, &out->species.back(), &status);
+  });
+  if (const nlohmann::json* c = f.Object("cohesion", kRequired); c && status.ok())
+    ParseCohesion(*c, "cohesion", &out->cohesion, &status);
+  if (const nlohmann::json* c = f.Object("coating", kRequired); c && status.ok())
+    ParseCoating(*c, "coating", path, &out->coating, &status);
+  if (const nlohmann::json* s = f.Object("segregation", kOptional); s && status.ok())
+    ParseSegregation(*s, "segregation", path, &out->segregation, &status);
+  else if (!s) out->segregation.enabled = false;
+  if (const nlohmann::json* c = f.Object("fidelity_check", kOptional); c && status.ok())
+    ParseFidelityCheck(*c, "fidelity_check", &out->fidelity_check, &status);
+  else if (!c) out->fidelity_check.enabled = false;
+  ForEach(f, "reference", kOptional, [&](const nlohmann::json& j, const std::string& p) {
+    out->reference.emplace_back();
+    ParseReference(j, p, &out->reference.back(), &status);
+  });
+  if (!status.ok()) return *error = path + ": " + status.message(), false;
+  for (const std::string& p : {out->measurements, out->synthetic_measurements,
+                               out->coating.experiment_file, out->segregation.experiment_file}) {
+    if (!p.empty() && !fs::is_regular_file(p))
+      return *error = path + ": file '" + p + "' not found", false;
+  }
+  for (const WorkflowSpecies& s : out->species)
+    if (!fs::is_regular_file(s.experiment_file))
+      return *error = path + ": file '" + s.experiment_file + "' not found", false;
+  return true;
+}
+
+std::string ResolveWorkflowName(const std::string& name_or_path, const std::string& repo_root) {
+  if (name_or_path.find('/') != std::string::npos || name_or_path.ends_with(".json"))
+    return name_or_path;
+  for (const fs::path& root : {fs::path("."), fs::path(repo_root)}) {
+    fs::path p = root / "datasets" / name_or_path / "workflow.json";
+    if (fs::is_regular_file(p)) return p.lexically_normal().string();
+  }
+  return name_or_path;
+}
+
+}  // namespace demcal::workflow
