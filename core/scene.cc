@@ -2,6 +2,7 @@
 
 #include "core/contact/jkr.h"
 #include "core/triangle_mesh.h"
+#include "core/scene_overlaps.h"
 #include "core/wall_extent.h"
 
 #include <algorithm>
@@ -236,6 +237,10 @@ void CheckParticles(const Scene& s, Checker& c) {
     if (p.fixed && p.species >= 0 && p.species < ns && !s.species[p.species].clump_shape.empty())
       c.Fail("field '" + f + ".fixed': only spheres can be fixed, species '" +
              s.species[p.species].name + "' is a clump");
+  }
+  if (c.ok()) {
+    const std::string overlap = ExplicitOverlapError(s);
+    if (!overlap.empty()) c.Fail(overlap);
   }
   for (size_t i = 0; i < s.fills.size(); ++i) {
     const FillSpec& fl = s.fills[i];

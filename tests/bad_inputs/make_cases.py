@@ -234,6 +234,11 @@ table_case("table_overflow", HEADER + ROW.format(v="1e999"), "value")
 # --- command line -----------------------------------------------------------------------------
 case("cli_unknown_command", {}, "frobnicate", 2, "unknown command 'frobnicate'")
 case("cli_no_command", {}, "", 2, "subcommand")
+case("scene_particles_coincident", {"scene_particles_coincident.json": scene(
+    fills=[], particles=[{"species": "beads", "position_m": [0.01, 0.01, 0.01]},
+                         {"species": "beads", "position_m": [0.0101, 0.01, 0.01]}])},
+     S % "scene_particles_coincident.json", 2,
+     "field 'particles[0]' and 'particles[1]': centres 0.0001 m apart, inside one another")
 # --- walls across periodic axes: every shape, not only planes ------------------------------
 PERIODIC_X = {"x": True}
 case("scene_cylinder_across_periodic", {"scene_cylinder_across_periodic.json": scene(
