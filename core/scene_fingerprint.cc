@@ -34,6 +34,11 @@ void AddShape(const WallShape& shape, Fnv1a64& h) {
   }
 }
 
+void AddRegion(const InsertionRegion& r, Fnv1a64& h) {
+  h.Field(static_cast<int>(r.shape)), h.Field(r.min_m), h.Field(r.max_m);
+  h.Field(r.axis_point_m), h.Field(r.radius_m);
+}
+
 template <class AddAll>
 FingerprintPart Part(const char* name, AddAll&& add) {
   Fnv1a64 h;
@@ -91,14 +96,11 @@ std::vector<FingerprintPart> SceneFingerprint(const Scene& s, double timestep_s,
     }
     h.Field(s.particles.size());
     for (const FillSpec& f : s.fills)
-      h.Field(f.species), h.Field(static_cast<int>(f.region.shape)), h.Field(f.region.min_m),
-          h.Field(f.region.max_m), h.Field(f.region.axis_point_m), h.Field(f.region.radius_m),
-          h.Field(f.count), h.Field(f.velocity_m_s);
+      h.Field(f.species), AddRegion(f.region, h), h.Field(f.count), h.Field(f.velocity_m_s);
   }));
   parts.push_back(Part("factories", [&](Fnv1a64& h) {
     for (const FactorySpec& f : s.factories) {
-      h.Text(f.name), h.Field(static_cast<int>(f.region.shape)), h.Field(f.region.min_m);
-      h.Field(f.region.max_m), h.Field(f.region.axis_point_m), h.Field(f.region.radius_m);
+      h.Text(f.name), AddRegion(f.region, h);
       h.Field(f.species.size());
       for (size_t k = 0; k < f.species.size(); ++k) h.Field(f.species[k]);
       for (double x : f.mass_fractions) h.Field(x);
