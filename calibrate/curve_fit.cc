@@ -19,12 +19,17 @@ T CurveValue(CurveForm form, const T* c, double x) {
   return T(0);
 }
 
+// N: the form's coefficient count (its parameter block size). The coefficients are copied into
+// a block of two so that no instantiation reads past its block (CurveValue indexes c[1] for the
+// two-coefficient forms; the one-coefficient form never reaches that branch).
+template <int N>
 struct PointResidual {
   CurveForm form;
   CurvePoint p;
   template <typename T>
   bool operator()(const T* c, T* residual) const {
-    residual[0] = (CurveValue(form, c, p.x) - T(p.y)) / T(p.sigma);
+    const T both[2] = {c[0], N > 1 ? c[N > 1 ? 1 : 0] : T(0)};
+    residual[0] = (CurveValue(form, both, p.x) - T(p.y)) / T(p.sigma);
     return true;
   }
 };
@@ -108,9 +113,9 @@ bool FitCurve(CurveForm form, const std::vector<CurvePoint>& points, CurveFitRes
   for (const CurvePoint& p : points) {
     ceres::CostFunction* cost = nullptr;
     if (n == 1) {
-      cost = new ceres::AutoDiffCostFunction<PointResidual, 1, 1>(new PointResidual{form, p});
+      cost = new ceres::AutoDiffCostFunction<PointResidual<1>, 1, 1>(new PointResidual<1>{form, p});
     } else {
-      cost = new ceres::AutoDiffCostFunction<PointResidual, 1, 2>(new PointResidual{form, p});
+      cost = new ceres::AutoDiffCostFunction<PointResidual<2>, 1, 2>(new PointResidual<2>{form, p});
     }
     problem.AddResidualBlock(cost, nullptr, r.coefficients.data());
   }
