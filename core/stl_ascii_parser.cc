@@ -70,7 +70,7 @@ class Parser {
   Parser(std::string_view text, std::string* error) : cursor_(text), error_(error) {}
 
   MeshIoStatus Run(std::vector<StlTriangle>* triangles, std::string* name,
-                   std::vector<std::string>* warnings) {
+                   std::vector<std::string>* /*warnings: none raised yet*/) {
     cursor_.Next();  // "solid", checked by the caller
     *name = std::string(Trim(cursor_.RestOfLine()));
     bool in_solid = true;
