@@ -241,8 +241,9 @@ TEST_CASE("hand-edited checkpoints with a valid checksum are refused by the stat
              Catch::Contains("the payload ends before the state is complete"));
   CHECK_THAT(Load(FrameCheckpoint(payload + "junk")), Catch::Contains("4 bytes left over"));
   // The factory's next batch far in the past would loop over batches for ever.
-  // The factory's 7 progress values, then (no sinks here) the step of the last sink pass.
-  CHECK_THAT(Load(Edited(payload, payload.size() - 56 - 8, -1e300)),
+  // The factory's 8 progress values (next batch, owed mass, particles, inserted and requested
+  // mass, active time, full batches, region lift), then (no sinks here) the last sink pass step.
+  CHECK_THAT(Load(Edited(payload, payload.size() - 64 - 8, -1e300)),
              Catch::Contains("factories[0] 'feed': next batch time -1e+300 s outside"));
   CHECK_THAT(Load(Edited(payload, 0, uint64_t{1} << 40)),
              Catch::Contains("the scene fingerprint claims 1099511627776 parts"));
