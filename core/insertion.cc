@@ -42,9 +42,11 @@ class OccupancyGrid {
   bool CellOf(const Vec3& x, int c[3]) const {
     bool inside = true;
     for (int a = 0; a < 3; ++a) {
-      c[a] = static_cast<int>(std::floor((x[a] - origin_[a]) / cell_));
-      if (c[a] < 0 || c[a] >= dims_[a]) inside = false;
-      c[a] = std::clamp(c[a], 0, dims_[a] - 1);
+      // Clamped as a double first: a far or non-finite position must not overflow the int
+      // conversion (undefined behaviour; found by fuzz_checkpoint under UBSan).
+      const double f = std::floor((x[a] - origin_[a]) / cell_);
+      if (!(f >= 0 && f < dims_[a])) inside = false;
+      c[a] = static_cast<int>(std::clamp(std::isnan(f) ? 0.0 : f, 0.0, double(dims_[a] - 1)));
     }
     return inside;
   }

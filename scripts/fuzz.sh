@@ -44,7 +44,10 @@ for h in "${harnesses[@]}"; do
      ${parallel[@]+"${parallel[@]}"} -print_final_stats=1 "../$corpus" 2>&1 |
      grep -E "stat::number_of_executed_units|Done|ERROR|SUMMARY|crash-|timeout-|oom-" || true)
 done
-if ls "$build"/crash-* "$build"/timeout-* "$build"/oom-* >/dev/null 2>&1; then
+# Any one kind of finding fails (ls of the three globs failed unless all three kinds existed).
+shopt -s nullglob
+findings=("$build"/crash-* "$build"/timeout-* "$build"/oom-*)
+if ((${#findings[@]})); then
   echo "fuzz: findings in $build (crash-*, timeout-*, oom-*)" >&2
   exit 1
 fi
