@@ -156,7 +156,8 @@ void ContactForces::PlanChunks(const NeighbourList& list) {
 void ContactForces::Compute(Particles& p, const NeighbourList& list,
                             const std::vector<Wall>& walls, double time_s,
                             const InteractionTable& table, const RollingModel& rolling,
-                            bool adhesive, const Vec3& gravity, double dt) {
+                            bool adhesive, JkrRollingLoad jkr_rolling_load, const Vec3& gravity,
+                            double dt) {
   if (pair_history_.size() != list.PairCount()) {
     pair_history_.resize(list.PairCount());
     pair_active_.resize(list.PairCount(), 0);
@@ -181,7 +182,7 @@ void ContactForces::Compute(Particles& p, const NeighbourList& list,
   std::visit(
       [&](const auto& rolling_model) {
         using R = std::decay_t<decltype(rolling_model)>;
-        if (adhesive) run(ContactModel<JkrNormal, R>{rolling_model});
+        if (adhesive) run(ContactModel<JkrNormal, R>{rolling_model, jkr_rolling_load});
         else run(ContactModel<HertzMindlinNormal, R>{rolling_model});
       },
       rolling);

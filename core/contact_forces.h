@@ -28,12 +28,13 @@ namespace demcal::core {
 class ContactForces {
  public:
   // Sets all forces and torques of `p` (gravity included). `adhesive` selects the JKR normal
-  // model (needed when any pair has Γ > 0; pairs with Γ = 0 still get plain Hertz–Mindlin).
+  // model (needed when any pair has Γ > 0; pairs with Γ = 0 still get plain Hertz–Mindlin) and
+  // `jkr_rolling_load` the load its rolling limit multiplies.
   // `walls` are placed where they are at time_s (the time of the positions in `p`), which also
   // selects their velocities.
   void Compute(Particles& p, const NeighbourList& list, const std::vector<Wall>& walls,
                double time_s, const InteractionTable& table, const RollingModel& rolling,
-               bool adhesive, const Vec3& gravity, double dt);
+               bool adhesive, JkrRollingLoad jkr_rolling_load, const Vec3& gravity, double dt);
 
   // Called after every neighbour-list rebuild: carries pair histories over to the new list and
   // lists, per moving particle, the walls within its radius + skin (moving walls always), keeping

@@ -359,6 +359,10 @@ bool Scene::IsValid(std::string* error) const {
   if (c.ok() && !MakeRollingModel(rolling, &model))
     c.Fail("field 'contact_model.rolling' = '" + rolling.name + "' is not one of none|cdt|epsd|epsd2");
   if (c.ok()) c.Range("contact_model.epsd_damping_ratio", rolling.epsd_damping_ratio, 0, 1, false, false);
+  JkrRollingLoad load;
+  if (c.ok() && !ParseJkrRollingLoad(rolling.jkr_rolling_load, &load))
+    c.Fail("field 'contact_model.jkr_rolling_load' = '" + rolling.jkr_rolling_load +
+           "' is not one of net|repulsive");
   if (c.ok() && species.empty() && (!particles.empty() || !fills.empty() || !factories.empty()))
     c.Fail("field 'species' must list at least one species");
   if (c.ok()) CheckTime(*this, c);

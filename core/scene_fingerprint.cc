@@ -64,7 +64,7 @@ std::vector<FingerprintPart> SceneFingerprint(const Scene& s, double timestep_s,
     for (const PairParameters& p : s.pair_parameters)
       h.Field(p.sliding_friction), h.Field(p.rolling_friction), h.Field(p.restitution),
           h.Field(p.interfacial_energy_J_m2);
-    h.Text(s.rolling.name), h.Field(s.rolling.epsd_damping_ratio);
+    h.Text(s.rolling.name), h.Field(s.rolling.epsd_damping_ratio), h.Text(s.rolling.jkr_rolling_load);
   }));
   parts.push_back(Part("walls", [&](Fnv1a64& h) {
     for (const Wall& w : s.walls)

@@ -57,6 +57,7 @@ bool Simulation::Initialize(std::string* error) {
   if (!scene_.IsValid(error)) return false;
   table_ = InteractionTable(scene_.materials, scene_.pair_parameters);
   MakeRollingModel(scene_.rolling, &rolling_);
+  ParseJkrRollingLoad(scene_.rolling.jkr_rolling_load, &jkr_rolling_load_);
   dt_ = scene_.time.timestep_s > 0 ? scene_.time.timestep_s
                                    : scene_.time.rayleigh_fraction * RayleighTime(scene_);
   if (!system_.SetSpecies(scene_.species, error)) return false;
@@ -250,7 +251,7 @@ void Simulation::AddWallWork(double time_s) {
 
 void Simulation::ComputeForces(double time_s) {
   forces_.Compute(system_.spheres, list_, walls_, time_s, table_, rolling_, adhesive_,
-                  scene_.gravity_m_s2, dt_);
+                  jkr_rolling_load_, scene_.gravity_m_s2, dt_);
 }
 
 void Simulation::Step() {

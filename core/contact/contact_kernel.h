@@ -1,4 +1,6 @@
 #pragma once
+#include <algorithm>
+
 // One contact evaluation: the normal, tangential and rolling slots composed. Templated on the
 // normal and rolling models so the force loop is instantiated once per combination (no
 // per-contact dispatch).
@@ -6,6 +8,7 @@
 #include "core/contact/hertz_mindlin.h"
 #include "core/contact/jkr.h"
 #include "core/contact/mindlin_tangential.h"
+#include "core/contact/rolling_model.h"
 
 namespace demcal::core {
 
@@ -15,6 +18,7 @@ template <class NormalModel, class RollingModelT>
 struct ContactModel {
   using Normal = NormalModel;
   RollingModelT rolling;
+  JkrRollingLoad jkr_rolling_load = JkrRollingLoad::kNet;  // used with an adhesive normal model
 
   // Whether a pair at this overlap is in contact. Without adhesion: when pressed (δ > 0). With
   // JKR: a new contact forms at δ > 0 and an existing one survives until δ <= −BreakGap.
@@ -29,7 +33,11 @@ struct ContactModel {
 
   DEMCAL_HOT_INLINE ContactResult Evaluate(const ContactGeometry& g, const ResolvedPair& p, double dt,
                          ContactHistory& h) const {
-    const NormalForce n = Normal::Compute(g, p, h);
+    NormalForce n = Normal::Compute(g, p, h);
+    if constexpr (Normal::kAdhesive) {
+      // Γ = 0 pairs: Hertz's elastic force, which is the rolling load already (δ > 0).
+      if (jkr_rolling_load == JkrRollingLoad::kNet) n.rolling_load_N = std::max(0.0, n.elastic_N);
+    }
     const Vec3 f_t = MindlinTangential::Compute(g, p, n, dt, h);
     ContactResult r;
     r.force_i = n.total_N * g.normal + f_t;

@@ -9,8 +9,10 @@
 //    polished by one Newton step, for a new contact; afterwards Newton steps on the stable branch
 //    from the previous step's radius (kept in the contact history), which costs a fraction of it;
 //  * normal damping as Hertz–Mindlin with S_n = 2 E* a (equal to HM's when a² = R* δ);
-//  * Coulomb and rolling limits use the repulsive (Hertz) part 4E*a³/(3R*) of the force
-//    (EDEM: friction "depends on the positive repulsive part of the JKR normal force").
+//  * the Coulomb limit uses the repulsive (Hertz) part 4E*a³/(3R*) of the force (EDEM: friction
+//    "depends on the positive repulsive part of the JKR normal force"); so does rolling_load_N
+//    here, which ContactModel replaces by the transmitted load max(0, F) unless the scene asks
+//    for "repulsive" (JkrRollingLoad, rolling_model.h, explains why "net" is the default).
 // With Γ = 0 it is exactly Hertz–Mindlin (the same function is called).
 #include <algorithm>
 #include <bit>

@@ -13,10 +13,33 @@ namespace demcal::core {
 
 using RollingModel = std::variant<RollingNone, RollingCdt, RollingEpsd>;
 
+// The load the rolling limit μ_r multiplies in an adhesive (JKR) contact (physics.md §3).
+//  kNet: the compressive force the contact transmits, max(0, F_JKR) (default). At zero load an
+//    adhesive contact then has no rolling limit beyond the dashpot/spring, as a smooth sphere.
+//  kRepulsive: the repulsive Hertz part 4E*a³/(3R*), as the Coulomb limit. At zero load this is
+//    4× the pull-off force, so μ_r R* × (4 F_c) locks rolling: measured 2026-12-02, EP spheres
+//    (μ_r 0.25, Γ 0.046 J/m², calibration fidelity) stand at 58.8 ± 1.8° and at Γ ≥ 0.1 J/m²
+//    as columns, where "net" gives 35.9 ± 0.8° (Alizadeh et al. 2018, EDEM: 37.6°).
+enum class JkrRollingLoad { kNet, kRepulsive };
+
 struct RollingModelSpec {
   std::string name = "epsd2";   // none | cdt | epsd | epsd2
   double epsd_damping_ratio = 0.3;  // η_r for "epsd", in [0, 1]
+  std::string jkr_rolling_load = "net";  // net | repulsive (JkrRollingLoad)
 };
+
+inline const std::vector<std::string>& JkrRollingLoadNames() {
+  static const std::vector<std::string> names = {"net", "repulsive"};
+  return names;
+}
+
+// Returns false (and leaves `load` untouched) for an unknown name.
+inline bool ParseJkrRollingLoad(const std::string& name, JkrRollingLoad* load) {
+  if (name == "net") *load = JkrRollingLoad::kNet;
+  else if (name == "repulsive") *load = JkrRollingLoad::kRepulsive;
+  else return false;
+  return true;
+}
 
 inline const std::vector<std::string>& RollingModelNames() {
   static const std::vector<std::string> names = {"none", "cdt", "epsd", "epsd2"};

@@ -239,8 +239,11 @@ void ParseInteractions(JsonFields& top, core::Scene* scene, JsonStatus* status) 
 void ParseContactModel(JsonFields& top, core::Scene* scene, JsonStatus* status) {
   const json* section = top.Object("contact_model", kOptional);
   if (!section) return;
-  JsonFields f(*section, "contact_model", {"rolling", "epsd_damping_ratio"}, status);
+  JsonFields f(*section, "contact_model", {"rolling", "epsd_damping_ratio", "jkr_rolling_load"},
+               status);
   f.String("rolling", &scene->rolling.name, kOptional, core::RollingModelNames());
+  f.String("jkr_rolling_load", &scene->rolling.jkr_rolling_load, kOptional,
+           core::JkrRollingLoadNames());
   f.Number("epsd_damping_ratio", &scene->rolling.epsd_damping_ratio, kOptional);
   if (f.ok() && f.Has("epsd_damping_ratio") && scene->rolling.name != "epsd")
     f.Fail("epsd_damping_ratio",

@@ -103,6 +103,39 @@ TEST_CASE("EPSD rolling resistance holds a sphere on an incline iff tan(theta) <
   }
 }
 
+TEST_CASE("An adhesive sphere's rolling limit: the transmitted load (net) or the JKR repulsive part",
+          "[physics]") {
+  // Rolling-slot load of a JKR contact (rolling_model.h, JkrRollingLoad). On an incline the
+  // contact transmits N = m g cos θ whatever Γ is (the adhesion is internal to the contact), so
+  // with "net" the EPSD limit μ_r R N gives the non-adhesive law: at tan θ = 1.5 μ_r the sphere
+  // rolls with a = (5/7) g (sin θ − μ_r cos θ). With "repulsive" the limit multiplies the Hertz
+  // part 4E*a³/(3R*) ≈ N + 4F_c (F_c = 3πΓR* ≈ 1.8 m g here, at zero load the Hertz part is
+  // 4F_c), more than 1.5 N, so the same sphere is held.
+  const double mu_r = 0.1, theta = std::atan(1.5 * mu_r);
+  const Vec3 gravity{kG * std::sin(theta), 0, -kG * std::cos(theta)};
+  for (const char* load : {"net", "repulsive"}) {
+    DYNAMIC_SECTION("jkr_rolling_load " << load) {
+      Scene scene = SphereOnFloor("epsd2", mu_r, gravity, {}, {}, 0.2);
+      scene.pair_parameters[0].interfacial_energy_J_m2 = 0.5;
+      scene.rolling.jkr_rolling_load = load;
+      Simulation sim(scene, {.threads = 1});
+      InitializeOrFail(sim);
+      RunOrFail(sim, 0.3);
+      const double x1 = sim.particles().position_m[0].x, v1 = sim.particles().velocity_m_s[0].x;
+      RunOrFail(sim, 0.3);
+      const double x2 = sim.particles().position_m[0].x, v2 = sim.particles().velocity_m_s[0].x;
+      INFO("x = " << x1 << ", " << x2 << " m; v = " << v1 << ", " << v2 << " m/s");
+      if (std::string(load) == "net") {
+        const double a = 5.0 / 7.0 * kG * (std::sin(theta) - mu_r * std::cos(theta));
+        CHECK((v2 - v1) / 0.3 == Approx(a).epsilon(0.03));
+      } else {
+        CHECK(std::abs(x2 - x1) < 1e-4 * kRadius);
+        CHECK(std::abs(v2) < 1e-5);
+      }
+    }
+  }
+}
+
 TEST_CASE("CDT rolling friction stops a rolling sphere after 7 v0^2 / (10 mu_r g)", "[physics]") {
   // physics.md §2.1 (EDEM standard rolling friction, constant torque) and "Analytic rolling
   // checks": a = −(5/7) μ_r g, s = 7 v0² / (10 μ_r g) for a sphere rolling without slip.
