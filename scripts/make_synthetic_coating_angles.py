@@ -7,28 +7,31 @@ at those levels. They are NOT measurements: every row says synthetic, and so doe
 built on them.
 
 Recipe (re-runnable: `python3 scripts/make_synthetic_coating_angles.py BUILD_DIR [quick|default]`,
-the fidelity of the heaps, quick by default):
- 1. The model of examples/aor_ep.json (EP of Table 1 as spheres) with the EP-EP rolling friction
-    ROLLING (the value at which the uncoated heap stands near the measured 31.0 deg at quick
-    fidelity) and the EP-EP interfacial energy Gamma(w) = 0.046 + 0.102 (w - 0.5) J/m2: the line
-    through the paper's 0.046 J/m2 at 0.5 wt% (section 2.5.2) and 0.250 J/m2 at 2.5 wt% (section
-    2.5.3, read from its Fig. 6).
- 2. `demcal experiment aor` (--quick unless FIDELITY is default), REPLICATES replicates with base seed SEED (not the
-    workflow's seed: the "measurement" has its own packings); the mean angle is the noise-free
-    value.
+the fidelity of the heaps, default (examples/aor_ep.json's calibration fidelity) if not given):
+ 1. The model of examples/aor_ep.json (EP of Table 1 as spheres; its angle reading: the fit, else
+    the paper's two points) with the EP-EP rolling friction ROLLING (0.25: the uncoated heap
+    stands at 31.5 +- 1.4 deg at the calibration fidelity, measured 2026-12-02 with
+    bench/jkr_rolling_load.sh; the measured value is 31.0) and the EP-EP interfacial energy
+    Gamma(w) = 0.046 + 0.102 (w - 0.5) J/m2: the line through the paper's 0.046 J/m2 at 0.5 wt%
+    (section 2.5.2) and 0.250 J/m2 at 2.5 wt% (section 2.5.3, read from its Fig. 6).
+ 2. `demcal experiment aor` (--quick only if FIDELITY is quick), REPLICATES replicates with base
+    seed SEED (not the workflow's seed: the "measurement" has its own packings); the mean over
+    the replicates with an angle is the noise-free value.
  3. Measurement noise: plus a seeded Gaussian draw (random.Random(NOISE_SEED)) of 1.0 deg, the
-    repeatability the workflow assumes for every angle.
+    repeatability the workflow assumes for every angle. The row's uncertainty combines that noise
+    with the replicate mean's standard error; its `repeats` is the number of replicates with an
+    angle.
 Writes datasets/synthetic/alizadeh2018_coating_angles/measurements.csv (provenance: synthetic)
 and truth.json (the Gamma used, the noise-free angles and the runs' statuses) beside it. A level
-whose heaps give no angle (no flanks: the grains stand as a column) gets no row; truth.json and
-the dataset's README say so.
+where fewer than 2 heaps give an angle (rough adhesive flanks that neither a fit nor the two
+points can read) gets no row, since no spread can be stated; truth.json and the README say so.
 """
 import json, os, random, subprocess, sys, tempfile
 
 LEVELS = [1.5, 2.5, 3.5]
 ROLLING = 0.25
-SEED, REPLICATES, NOISE_SEED, NOISE_DEG = 9001, 4, 1, 1.0
-FIDELITY = sys.argv[2] if len(sys.argv) > 2 else "quick"
+SEED, REPLICATES, NOISE_SEED, NOISE_DEG = 9001, 6, 1, 1.0
+FIDELITY = sys.argv[2] if len(sys.argv) > 2 else "default"
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OUT = os.path.join(ROOT, "datasets", "synthetic", "alizadeh2018_coating_angles")
 
@@ -51,33 +54,38 @@ def angle(demcal, w, tmp):
                     str(REPLICATES), "--quiet"] + quick, stdout=subprocess.DEVNULL)
     result = json.load(open(os.path.join(out, "result.json")))
     statuses = sorted({run["status"] for run in result["runs"]})
-    return result["angle_deg"], statuses
+    return result["angle_deg"], statuses, result["angle_sem_deg"], result["replicates_ok"]
 
 
 def main():
     demcal = os.path.join(sys.argv[1] if len(sys.argv) > 1 else "build", "apps", "demcal")
     rng = random.Random(NOISE_SEED)
     os.makedirs(OUT, exist_ok=True)
-    noise_free, statuses = {}, {}
+    noise_free, statuses, sem, ok = {}, {}, {}, {}
     with tempfile.TemporaryDirectory() as tmp:
         for w in LEVELS:
-            noise_free[w], statuses[w] = angle(demcal, w, tmp)
+            noise_free[w], statuses[w], sem[w], ok[w] = angle(demcal, w, tmp)
     recipe = (f"SYNTHETIC (not measured): demcal aor at the {FIDELITY} fidelity on examples/aor_ep.json with EP-EP "
               f"rolling friction {ROLLING} and Gamma(w) = 0.046 + 0.102 (w - 0.5) J/m2, mean of "
-              f"{REPLICATES} replicates (seed {SEED}) plus seeded Gaussian noise of {NOISE_DEG} deg; "
+              f"{REPLICATES} replicates (seed {SEED}) plus seeded Gaussian noise of {NOISE_DEG} deg (uncertainty: that noise and the replicate mean's standard error combined); "
               "scripts/make_synthetic_coating_angles.py")
     with open(os.path.join(OUT, "measurements.csv"), "w") as f:
         f.write("observable,unit,material,coating_PEG_wt_pct,test,value,uncertainty,repeats,"
                 "provenance,source\n")
         for w in LEVELS:
-            if noise_free[w] is None:  # no heap with flanks: no row (truth.json says why)
+            if noise_free[w] is None or ok[w] < 2:  # no spread to state: no row (see truth.json)
                 continue
             v = noise_free[w] + rng.gauss(0, NOISE_DEG)
-            f.write(f'angle_deg,deg,EP,{w},pseudo-2D heap,{v:.4g},{NOISE_DEG},{REPLICATES},'
+            # The stand-in differs from demcal's expected angle by the noise and by the standard
+            # error of the replicate mean: both go into the stated uncertainty.
+            u = (NOISE_DEG ** 2 + (sem[w] or 0.0) ** 2) ** 0.5
+            f.write(f'angle_deg,deg,EP,{w},pseudo-2D heap,{v:.4g},{u:.3g},{ok[w]},'
                     f'synthetic,"{recipe}"\n')
     json.dump({"gamma_J_m2": {str(w): gamma(w) for w in LEVELS},
                "noise_free_angle_deg": {str(w): noise_free[w] for w in LEVELS},
                "run_statuses": {str(w): statuses[w] for w in LEVELS},
+               "replicate_mean_sem_deg": {str(w): sem[w] for w in LEVELS},
+               "replicates_with_an_angle": {str(w): ok[w] for w in LEVELS},
                "rolling_friction_EP_EP": ROLLING, "fidelity": FIDELITY, "recipe": recipe},
               open(os.path.join(OUT, "truth.json"), "w"), indent=2)
 

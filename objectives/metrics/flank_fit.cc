@@ -35,11 +35,14 @@ bool OutwardCrossing(const std::vector<SurfacePoint>& profile, const HeightWindo
 
 // Paper Fig. 5: the height difference between the window's two levels over the horizontal
 // distance between the surface points at those heights.
+// s_high, s_low: where the two levels are crossed (set when the angle is ok).
 void TwoPointAngle(const std::vector<SurfacePoint>& profile, const HeightWindow& w,
-                   FlankFit* flank) {
+                   FlankFit* flank, double* s_high_m = nullptr, double* s_low_m = nullptr) {
   double s_high = 0, s_low = 0;
   flank->two_point_ok = OutwardCrossing(profile, w, w.high, &s_high) &&
                         OutwardCrossing(profile, w, w.low, &s_low) && s_low > s_high;
+  if (s_high_m) *s_high_m = s_high;
+  if (s_low_m) *s_low_m = s_low;
   flank->two_point_angle_deg =
       flank->two_point_ok
           ? Degrees(std::atan((w.high - w.low) * w.heap_height_m / (s_low - s_high)))
@@ -77,6 +80,27 @@ bool FitFlank(const std::vector<SurfacePoint>& outward_profile, const HeightWind
   flank->s_min_m = *std::min_element(s.begin(), s.end());
   flank->s_max_m = *std::max_element(s.begin(), s.end());
   TwoPointAngle(outward_profile, window, flank);
+  return true;
+}
+
+bool TwoPointFlank(const std::vector<SurfacePoint>& outward_profile, const HeightWindow& window,
+                   FlankFit* flank, std::string* why_not) {
+  double s_high = 0, s_low = 0;
+  TwoPointAngle(outward_profile, window, flank, &s_high, &s_low);
+  if (!flank->two_point_ok) {
+    *why_not = "the surface does not fall through both window heights walking out from the apex";
+    return false;
+  }
+  flank->angle_deg = flank->two_point_angle_deg;
+  flank->slope = -(window.high - window.low) * window.heap_height_m / (s_low - s_high);
+  flank->intercept_m = window.base_z_m + window.high * window.heap_height_m - flank->slope * s_high;
+  flank->s_min_m = s_high;
+  flank->s_max_m = s_low;
+  flank->points = 0;
+  for (const SurfacePoint& p : outward_profile) {
+    const double h = RelativeHeight(p, window);
+    flank->points += h >= window.low && h <= window.high;
+  }
   return true;
 }
 

@@ -21,4 +21,11 @@ struct HeightWindow {
 bool FitFlank(const std::vector<SurfacePoint>& outward_profile, const HeightWindow& window,
               int min_points, FlankFit* flank, std::string* why_not);
 
+// The paper's two-point reading alone (Fig. 5), for rough heaps whose window holds too few points
+// for a fit: angle_deg = two_point_angle_deg, and slope/intercept/s range describe the segment
+// between the two surface points (for plots). False (with the reason) when the profile does not
+// cross both window heights walking outward.
+bool TwoPointFlank(const std::vector<SurfacePoint>& outward_profile, const HeightWindow& window,
+                   FlankFit* flank, std::string* why_not);
+
 }  // namespace demcal::objectives

@@ -67,7 +67,15 @@ void AddFlank(const std::vector<SurfacePoint>& outward, const HeightWindow& wind
               const ReposeAngleOptions& options, FlankFit flank, ReposeAngle* result,
               std::string* skipped) {
   std::string why_not;
-  if (FitFlank(outward, window, options.min_flank_points, &flank, &why_not)) {
+  using Method = ReposeAngleOptions::Method;
+  bool ok = options.method != Method::kTwoPoint &&
+            FitFlank(outward, window, options.min_flank_points, &flank, &why_not);
+  if (!ok && options.method != Method::kFit) {
+    std::string two_point_why_not;
+    ok = TwoPointFlank(outward, window, &flank, &two_point_why_not);
+    why_not += (why_not.empty() ? "" : "; two points: ") + two_point_why_not;
+  }
+  if (ok) {
     result->flanks.push_back(std::move(flank));
   } else {
     *skipped += (skipped->empty() ? "" : "; ") + flank.label + ": " + why_not;

@@ -29,6 +29,15 @@ struct ReposeAngleOptions {
   double cell_m = 0;         // profile cell width; 0: 1.5 × mean sphere diameter
   int sectors = 16;          // conical heap: azimuthal sectors
   int min_flank_points = 5;  // a flank/sector with fewer points in the window is left out
+  // kFit: least squares over the window points (needs min_flank_points). kTwoPoint: the paper's
+  // reading for rough heaps (section 2.5.2: "for the higher levels of coating, due to the
+  // fluctuations on the heap surface", the horizontal distance between the surface points at 10%
+  // and 90% of H) alone; a steep, rough cohesive flank often has too few window points to fit.
+  // kFitElseTwoPoint: per flank the fit, and the two-point reading where the fit has too few
+  // points — the paper's own practice (fits the sharp flanks of low coating levels, reads two
+  // points on the rough ones); a two-point reading needs the toe below window_low·H, which a
+  // run-out layer against the box wall can deny, so neither method alone covers every heap.
+  enum class Method { kFit, kTwoPoint, kFitElseTwoPoint } method = Method::kFit;
 
   // False (with the field and bound in *error) for an unusable configuration.
   bool IsValid(std::string* error) const;

@@ -11,7 +11,14 @@ using nlohmann::json;
 
 void ParseAngleOptions(const json& value, objectives::ReposeAngleOptions* a, JsonStatus* status) {
   JsonFields f(value, "aor.angle",
-               {"window_low", "window_high", "cell_m", "sectors", "min_flank_points"}, status);
+               {"window_low", "window_high", "cell_m", "sectors", "min_flank_points", "method"},
+               status);
+  std::string method = "fit";
+  f.String("method", &method, kOptional, {"fit", "two_point", "fit_else_two_point"});
+  using Method = objectives::ReposeAngleOptions::Method;
+  a->method = method == "two_point"            ? Method::kTwoPoint
+              : method == "fit_else_two_point" ? Method::kFitElseTwoPoint
+                                               : Method::kFit;
   f.Number("window_low", &a->window_low, kOptional, Range::Closed(0, 1));
   f.Number("window_high", &a->window_high, kOptional, Range::Closed(0, 1));
   f.Number("cell_m", &a->cell_m, kOptional, Range::Closed(0, 1, "m"));

@@ -199,3 +199,29 @@ TEST_CASE("repose angle: unusable input is refused with a message", "[unit]") {
     CHECK_FALSE(MeasureSlotHeapAngle(bad, {}).ok);
   }
 }
+
+TEST_CASE("slot heap: a steep flank too short to fit is read by the paper's two points", "[unit]") {
+  // A 70° flank spans 0.8 H / tan 70° = 11.6 mm of window, under 4 cells of 3 mm: fewer than the
+  // 5 points a fit needs. The two-point reading (paper section 2.5.2, Fig. 5) needs only the two
+  // crossings. Each is interpolated between cell points and can be off by half a cell c/2 in s
+  // (the 10% crossing here falls between the flank and the one-layer run-out), so
+  // |δθ| <= sinθ cosθ · c / Δs (rad), Δs = 0.8 H / tanθ: the bound checked.
+  const Snapshot heap = SlotHeap({.left_deg = 70, .right_deg = 70}, kDiameter, {});
+  const ReposeAngle fit = MeasureSlotHeapAngle(heap, {});
+  CHECK_FALSE(fit.ok);
+  ReposeAngleOptions options;
+  options.method = ReposeAngleOptions::Method::kTwoPoint;
+  const ReposeAngle a = MeasureSlotHeapAngle(heap, options);
+  INFO(a.message);
+  REQUIRE(a.ok);
+  REQUIRE(a.flanks.size() == 2);
+  const double t = 70 * std::numbers::pi / 180;
+  const double bound_deg = std::sin(t) * std::cos(t) * a.cell_m /
+                           (0.8 * a.heap_height_m / std::tan(t)) * 180 / std::numbers::pi;
+  for (const FlankFit& f : a.flanks) {
+    CHECK(f.angle_deg == Approx(70).margin(bound_deg));
+    // The drawn segment runs from the 90% to the 10% crossing.
+    CHECK(f.intercept_m + f.slope * f.s_min_m == Approx(0.9 * a.heap_height_m).margin(1e-9));
+    CHECK(f.intercept_m + f.slope * f.s_max_m == Approx(0.1 * a.heap_height_m).margin(1e-9));
+  }
+}
