@@ -6,6 +6,7 @@
 
 #include "calibrate/cohesion_scaling.h"
 #include "workflow/exit_codes.h"
+#include "workflow/reproduce/cohesion_json.h"
 
 namespace demcal::apps {
 namespace {
@@ -22,29 +23,13 @@ int Run(const CohesionOptions& o) {
     return workflow::kExitInvalidInput;
   }
   const calibrate::CohesionReport r = calibrate::EvaluateCohesion(o.in);
-  const char* convention = "E* = E/(2(1-nu^2)) (two like particles), R* = the granule radius R";
   if (o.json) {
-    nlohmann::ordered_json j{{"format", "demcal-cohesion/1"},
-                             {"convention", convention},
-                             {"gamma_J_m2", o.in.gamma_J_m2},
-                             {"youngs_real_Pa", o.in.youngs_real_Pa},
-                             {"youngs_sim_Pa", o.in.youngs_sim_Pa},
-                             {"poisson_ratio", o.in.poisson_ratio},
-                             {"radius_m", o.in.radius_m},
-                             {"density_kg_m3", o.in.density_kg_m3},
-                             {"gravity_m_s2", o.in.gravity_m_s2},
-                             {"effective_youngs_real_Pa", r.effective_youngs_real_Pa},
-                             {"effective_youngs_sim_Pa", r.effective_youngs_sim_Pa},
-                             {"effective_radius_m", r.effective_radius_m},
-                             {"cohesion_number", r.cohesion_number},
-                             {"cohesion_number_pair_radius", r.cohesion_number_pair_radius},
-                             {"gamma_sim_J_m2", r.gamma_sim_J_m2},
-                             {"reference_gamma_sim_J_m2", o.in.reference_gamma_sim_J_m2},
-                             {"youngs_sim_for_reference_Pa", r.youngs_sim_for_reference_Pa}};
+    nlohmann::ordered_json j{{"format", "demcal-cohesion/1"}};
+    j.update(workflow::CohesionJson<nlohmann::ordered_json>(o.in, r));
     std::cout << j.dump(2) << "\n";
     return workflow::kExitOk;
   }
-  std::cout << "Convention: " << convention << "\n"
+  std::cout << "Convention: " << workflow::kCohesionConvention << "\n"
             << "Cohesion number Coh = " << r.cohesion_number << " (with R* = R/2: "
             << r.cohesion_number_pair_radius << ")\n"
             << "Gamma at E = " << o.in.youngs_sim_Pa / 1e9 << " GPa (constant Coh): "

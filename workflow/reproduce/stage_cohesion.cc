@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "calibrate/cohesion_scaling.h"
+#include "workflow/reproduce/cohesion_json.h"
 #include "workflow/reproduce/stages.h"
 
 namespace demcal::workflow {
@@ -26,24 +27,11 @@ bool RunCohesionStage(ReproduceContext& ctx, nlohmann::json* result, std::string
                 in.youngs_sim_Pa / 1e9);
   *ctx.log << "reproduce: Coh = " << r.cohesion_number << ", Γ at the simulation stiffness "
            << r.gamma_sim_J_m2 << " J/m2\n";
-  *result = {
-      {"convention", "E* = E/(2(1-nu^2)) (two like particles); R* = the granule radius R"},
-      {"inputs", {{"gamma_J_m2", in.gamma_J_m2}, {"youngs_real_Pa", in.youngs_real_Pa},
-                  {"youngs_sim_Pa", in.youngs_sim_Pa}, {"poisson_ratio", in.poisson_ratio},
-                  {"radius_m", in.radius_m}, {"density_kg_m3", in.density_kg_m3},
-                  {"gravity_m_s2", in.gravity_m_s2},
-                  {"reference_gamma_sim_J_m2", in.reference_gamma_sim_J_m2}}},
-      {"effective_youngs_real_Pa", r.effective_youngs_real_Pa},
-      {"effective_youngs_sim_Pa", r.effective_youngs_sim_Pa},
-      {"effective_radius_m", r.effective_radius_m},
-      {"cohesion_number", r.cohesion_number},
-      {"cohesion_number_pair_radius", r.cohesion_number_pair_radius},
-      {"gamma_sim_J_m2", r.gamma_sim_J_m2},
-      {"youngs_sim_for_reference_Pa", r.youngs_sim_for_reference_Pa},
-      {"explanation", why},
-      {"values",
-       {{"coh_coated_EP", ValueJson(r.cohesion_number, NAN, "R* = R, E* = E/(2(1-ν²))")},
-        {"gamma_sim_J_m2", ValueJson(r.gamma_sim_J_m2, NAN, why)}}}};
+  *result = CohesionJson<nlohmann::json>(in, r);
+  (*result)["explanation"] = why;
+  (*result)["values"] = {
+      {"coh_coated_EP", ValueJson(r.cohesion_number, NAN, "R* = R, E* = E/(2(1-ν²))")},
+      {"gamma_sim_J_m2", ValueJson(r.gamma_sim_J_m2, NAN, why)}};
   return true;
 }
 
