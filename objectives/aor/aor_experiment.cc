@@ -103,7 +103,11 @@ core::Scene BuildAorScene(const core::Scene& model, const AorSettings& s, uint64
     AddSlotGeometry(s, top, &scene);
   else
     AddConicalGeometry(s, top, &scene);
-  if (s.glued_base) scene.particles = GluedBase(BaseSpec(model, s, seed));
+  if (s.glued_base) {
+    GluedBaseSpec base = BaseSpec(model, s, seed);
+    UseSphereSpeciesForBase(&scene, &base);
+    scene.particles = GluedBase(base);
+  }
   *fixed_count = static_cast<int64_t>(scene.particles.size());
   scene.factories.push_back(MakeFeedFactory(model, s.feed, FeedRegion(model, s)));
   scene.time.duration_s = s.settle.max_time_s;

@@ -15,6 +15,17 @@ GluedBaseSpec GluedBaseOfFeed(const core::Scene& model, const Feed& feed, uint64
   return base;
 }
 
+void UseSphereSpeciesForBase(core::Scene* scene, GluedBaseSpec* spec) {
+  const core::Species& feed = scene->species[spec->species];
+  if (feed.clump_shape.empty()) return;
+  core::Species base;
+  base.name = feed.name + " glued base";
+  base.material = feed.material;
+  base.size.diameter_m = spec->diameter_m;
+  scene->species.push_back(base);
+  spec->species = static_cast<int>(scene->species.size()) - 1;
+}
+
 std::vector<core::ParticleSpec> GluedBase(const GluedBaseSpec& spec) {
   const double d = spec.diameter_m, r = 0.5 * d;
   const core::Vec3 centre = 0.5 * (spec.min_m + spec.max_m);

@@ -23,6 +23,11 @@ struct GluedBaseSpec {
 // the caller sets the extent (min_m, max_m, disc_radius_m).
 GluedBaseSpec GluedBaseOfFeed(const core::Scene& model, const Feed& feed, uint64_t seed);
 
+// Fixed particles are spheres: when spec->species is a clump species, appends to `scene` a sphere
+// species of the same material at spec->diameter_m (named "<species> glued base") and points
+// spec->species at it, so a clump feed (the clump-count calibration) still gets its glued layer.
+void UseSphereSpeciesForBase(core::Scene* scene, GluedBaseSpec* spec);
+
 // The fixed particles of the layer (ParticleSpec::fixed = true).
 std::vector<core::ParticleSpec> GluedBase(const GluedBaseSpec& spec);
 

@@ -118,3 +118,21 @@ TEST_CASE("the aor scene holds a glued base, a box and a feed factory", "[unit]"
   CHECK(scene.factories[0].total_mass_kg == 0.010);
   CHECK(scene.factories[0].velocity_m_s.z <= 0);
 }
+
+TEST_CASE("aor: a clump feed species gets a glued base of spheres of its material", "[unit]") {
+  // Fixed particles are spheres; the clump-count calibration pours clumps (issue 10).
+  core::Scene model = Model(0.5, 0.1, 0);
+  model.species[0].clump_shape = {{{-0.5, 0, 0}, 0.6}, {{0.5, 0, 0}, 0.6}};  // a 2-sphere rod
+  int64_t fixed = 0;
+  const core::Scene scene = BuildAorScene(model, SmallSlotHeap(), 7, &fixed);
+  REQUIRE(fixed > 0);
+  REQUIRE(scene.species.size() == 2);
+  const core::Species& base = scene.species[1];
+  CHECK(base.clump_shape.empty());
+  CHECK(base.material == model.species[0].material);
+  CHECK(base.size.diameter_m == Approx(3e-3));  // the feed's mean sieve diameter
+  for (const core::ParticleSpec& p : scene.particles) CHECK(p.species == 1);
+  std::string error;
+  CHECK(scene.IsValid(&error));
+  INFO(error);
+}
