@@ -38,6 +38,13 @@ bool BuildScenarios(const ReproduceContext& ctx, std::vector<Scenario>* out, std
   const WorkflowFile& w = *ctx.workflow;
   nlohmann::ordered_json base;
   if (!ReadExperimentJson(w.segregation.experiment_file, &base, error)) return false;
+  if (w.segregation.size_scale > 0) {  // the workflow's own default fidelity (issue 15's study)
+    nlohmann::ordered_json& fidelity = base["fidelity"];
+    if (!fidelity.is_object()) fidelity = nlohmann::ordered_json::object();
+    fidelity["name"] = "workflow";
+    fidelity["size_scale"] = w.segregation.size_scale;
+    fidelity["stiffness_scale"] = w.segregation.stiffness_scale;
+  }
   for (const auto& [name, s] : ctx.results["species"]["species"].items())
     if (s["value"].is_number())
       SetPairProperty(&base, name, name, s["property"].get<std::string>(), s["value"].get<double>());

@@ -112,7 +112,14 @@ void ParseCohesion(const nlohmann::json& j, const std::string& path,
 void ParseSegregation(const nlohmann::json& j, const std::string& path, const std::string& file,
                       WorkflowSegregation* s, JsonStatus* status) {
   JsonFields f(j, path, {"experiment_file", "replicates", "quick_replicates", "coated_wt_pct",
-                         "excessive_gamma_J_m2", "enabled"}, status);
+                         "excessive_gamma_J_m2", "size_scale", "stiffness_scale", "enabled"},
+               status);
+  f.Number("size_scale", &s->size_scale, kOptional, Range::Closed(1, 20));
+  f.Number("stiffness_scale", &s->stiffness_scale, kOptional, Range::LeftOpen(0, 1));
+  if (status->ok() && (s->size_scale > 0) != (s->stiffness_scale > 0))
+    f.Fail(s->size_scale > 0 ? "stiffness_scale" : "size_scale",
+           "must be given together with " +
+               std::string(s->size_scale > 0 ? "size_scale" : "stiffness_scale"));
   f.String("experiment_file", &s->experiment_file, kRequired);
   s->experiment_file = Resolve(file, s->experiment_file);
   int64_t n = s->replicates, q = s->quick_replicates;

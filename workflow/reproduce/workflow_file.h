@@ -50,6 +50,9 @@ struct WorkflowSegregation {
   int quick_replicates = 1;     // with --quick
   double coated_wt_pct = 2.5;   // the "coated" scenario's level (Γ from the curve)
   double excessive_gamma_J_m2 = 0.25;  // every EP contact in the "excessive" scenario
+  // > 0: the default fidelity's coarse-graining and stiffness factor, replacing the experiment
+  // file's (its quick fidelity stays); 0: the file's own.
+  double size_scale = 0, stiffness_scale = 0;
   bool enabled = true;
 };
 

@@ -53,6 +53,7 @@ TEST_CASE("the bundled alizadeh2018 workflow loads with its paths resolved", "[u
   CHECK(w.coating.curve_form == demcal::calibrate::CurveForm::kLinear);
   CHECK(w.cohesion.gamma_J_m2 == Approx(0.086));
   CHECK(w.reference.size() >= 30);
+  CHECK(w.segregation.size_scale == 5);  // issue 15's choice, see docs/reproduce.md
   CHECK(ResolveWorkflowName("alizadeh2018", Root().string()).ends_with(
       "datasets/alizadeh2018/workflow.json"));
   CHECK(ResolveWorkflowName("my/flow.json", "") == "my/flow.json");
@@ -76,6 +77,9 @@ TEST_CASE("workflow file errors name the file, the key and the allowed values", 
       {[](nlohmann::json& d) { d["reference"][0]["key"] = "nonsense"; }, "reference[0].key"},
       {[](nlohmann::json& d) { d["coating"]["partner_radii_m"] = {1e-4}; }, "one radius per partner"},
       {[](nlohmann::json& d) { d["segregation"]["replicates"] = 0; }, "segregation.replicates"},
+      {[](nlohmann::json& d) { d["segregation"].erase("stiffness_scale"); },
+       "segregation.stiffness_scale' must be given together with size_scale"},
+      {[](nlohmann::json& d) { d["segregation"]["size_scale"] = 0.5; }, "segregation.size_scale"},
       {[](nlohmann::json& d) { d["unexpected"] = 1; }, "unexpected"},
   };
   for (const Case& c : cases) {
