@@ -1,6 +1,7 @@
 #include "workflow/reproduce/segregation_metrics.h"
 
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 #include "objectives/common/replicates.h"
@@ -35,8 +36,13 @@ nlohmann::json ExtractSegregationMetrics(const nlohmann::json& r) {
   m["particles"] = run.is_object() && run.contains("particles") ? run["particles"] : nlohmann::json();
   if (r.contains("species"))
     for (const nlohmann::json& s : r["species"])
-      for (const char* index : kIndices)
-        m[s["species"].get<std::string>() + "." + index] = MeanOf(s[index]);
+      for (const char* index : kIndices) {
+        const std::string key = s["species"].get<std::string>() + "." + index;
+        m[key] = MeanOf(s[index]);
+        // The random-mixture noise floor of the same heap (issue 15), where the run has one.
+        const std::string floor = std::string(index) + "_floor";
+        if (s.contains(floor)) m[key + "_floor"] = MeanOf(s[floor]);
+      }
   m["mixture_angle_deg"] = r.contains("mixture_angle_deg") ? MeanOf(r["mixture_angle_deg"]) : nlohmann::json();
   m["discharge_time_s"] = r.contains("discharge_time_s") ? MeanOf(r["discharge_time_s"]) : nlohmann::json();
   std::vector<double> peaks;
@@ -81,7 +87,15 @@ nlohmann::json SegregationSummaryValues(const nlohmann::json& scenarios, const s
                  const std::string& note = "") {
     auto [mean, sem] = Get(scenario(name), metric);
     const bool synthetic = scenario(name).value("synthetic", false);
-    v[key] = ValueJson(mean, sem, std::isfinite(mean) ? note : std::string("no value in the ") + name + " runs",
+    std::string text = note;
+    if (const double floor = Get(scenario(name), metric + "_floor").first; std::isfinite(floor)) {
+      char buffer[160];
+      std::snprintf(buffer, sizeof(buffer),
+                    "%srandom-mixture floor %.3g (the same heap with its labels shuffled)",
+                    note.empty() ? "" : "; ", floor);
+      text += buffer;
+    }
+    v[key] = ValueJson(mean, sem, std::isfinite(mean) ? text : std::string("no value in the ") + name + " runs",
                        synthetic);
   };
   for (const char* s : {"uncoated", "coated"}) {
