@@ -1,8 +1,10 @@
 #include "calibrate/calibration.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <set>
 
 #include "calibrate/jacobian_svd.h"
@@ -28,6 +30,26 @@ TrialResult Standardise(const CandidateResult& c, const std::vector<Target>& tar
   return t;
 }
 
+// Re-runs an inconclusive candidate with more replicates until it is conclusive or has
+// `factor` times the replicates it came with (CalibrationOptions::max_replicate_factor).
+void Sharpen(CandidateEvaluator& evaluator, const std::vector<Target>& targets, int factor,
+             Candidate* c, CalibrationSummary* s) {
+  int base = 0;
+  for (const TargetValue& v : c->result.targets) base = std::max(base, v.replicates);
+  const int cap = factor * base;
+  for (int n = base; c->trial.Inconclusive() && n < cap;) {
+    double worst = 0;
+    for (double noise : c->trial.noise) worst = std::max(worst, noise / kMatchNoise);
+    n = std::min(cap, std::max(n + 1, static_cast<int>(std::ceil(n * worst * worst))));
+    std::optional<CandidateResult> more = evaluator.AddReplicates(c->parameters, n);
+    if (!more) return;
+    c->result = std::move(*more);
+    c->trial = Standardise(c->result, targets);
+    c->replicates_added = n - base;
+    s->replicates_run += c->result.replicates_run;
+  }
+}
+
 std::string Validate(const ParameterSpace& space, const std::vector<Target>& targets,
                      const CalibrationOptions& options, Optimiser* optimise) {
   std::string error;
@@ -45,6 +67,8 @@ std::string Validate(const ParameterSpace& space, const std::vector<Target>& tar
       return at + ".name: '" + targets[k].name + "' is used twice";
   }
   if (!options.optimiser_options.IsValid(&error)) return error;
+  if (options.max_replicate_factor < 1 || options.max_replicate_factor > 100)
+    return "max_replicate_factor: must be in [1, 100]";
   if (!options.response_surface.IsValid(&error)) return "response_surface." + error;
   return "";
 }
@@ -136,6 +160,7 @@ CalibrationSummary Calibrate(CandidateEvaluator& evaluator, const ParameterSpace
       c.trial = Standardise(c.result, targets);
       s.replicates_run += c.result.replicates_run;
       s.replicates_reused += c.result.replicates_reused;
+      Sharpen(evaluator, targets, options.max_replicate_factor, &c, &s);
       if (s.journal_error.empty()) s.journal_error = c.result.journal_error;
       trials.push_back(c.trial);
       if (progress)

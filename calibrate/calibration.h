@@ -35,6 +35,11 @@ struct CalibrationOptions {
   std::string optimiser = "bracket";
   OptimiserOptions optimiser_options;
   ResponseSurfaceOptions response_surface;
+  // A candidate within noise but less precise than a measurement (TrialResult::Inconclusive) is
+  // re-run with the replicates that bring its sem to the measurement uncertainty (sem ∝ 1/√n),
+  // at most this multiple of the replicates it had (1: never). Such a candidate is no match
+  // until then: it would be "within noise" of almost anything.
+  int max_replicate_factor = 4;
 };
 
 // One candidate the optimiser asked for.
@@ -44,6 +49,7 @@ struct Candidate {
   std::vector<double> unit;        // unit cube
   CandidateResult result;
   TrialResult trial;  // standardised residuals (ok = false: infeasible)
+  int replicates_added = 0;  // per group, beyond the evaluator's count (CalibrationOptions)
 };
 
 struct TargetResidual {

@@ -12,6 +12,7 @@
 //   };
 //
 // Thread-safety: the driver calls EvaluateBatch from one thread, one batch at a time.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,15 @@ class CandidateEvaluator {
   // status.
   virtual std::vector<CandidateResult> EvaluateBatch(
       const std::vector<std::vector<double>>& si_parameters) = 0;
+  // Re-runs the last candidate evaluated with these parameters at `replicates` replicates in
+  // all (those already run are reused), its sem then from its own spread. For a candidate too
+  // noisy to confirm a match (TrialResult::Inconclusive). Empty: this evaluator cannot (the
+  // default) or no such candidate was evaluated.
+  virtual std::optional<CandidateResult> AddReplicates(const std::vector<double>& si_parameters,
+                                                       int replicates) {
+    (void)si_parameters, (void)replicates;
+    return std::nullopt;
+  }
 };
 
 }  // namespace demcal::calibrate

@@ -4,7 +4,11 @@
 // standardised residuals (simulated − measured) / measurement uncertainty, with the simulation's
 // own noise (its standard error, in the same units) alongside, or reports a failed sample.
 // A candidate whose every |residual| is within sqrt(1 + noise²) matches "within noise", and no
-// optimiser refines beyond that: two numbers closer than their noise are not told apart.
+// optimiser refines beyond that: two numbers closer than their noise are not told apart. A match
+// also needs a simulation at least as precise as the measurement (every noise ≤ 1): a candidate
+// whose replicates scatter more than the measurement's uncertainty would be "within noise" of
+// almost anything, so it confirms nothing (Inconclusive; the driver re-runs such a candidate
+// with more replicates, calibration.h).
 //
 // The black box takes a *batch* of points (BatchTrialFunction): the caller evaluates them
 // concurrently (replicates and candidates of a batch side by side). Sequential optimisers ask
@@ -27,13 +31,20 @@
 
 namespace demcal::calibrate {
 
+// The largest simulation noise (sem / measurement uncertainty) of a match: the simulation may
+// not be the less precise of the two numbers compared.
+inline constexpr double kMatchNoise = 1.0;
+
 // One candidate's answer. Thread-safety: a plain value.
 struct TrialResult {
   bool ok = false;                // false: the simulation gave no value here (infeasible)
   std::vector<double> residuals;  // (simulated − measured) / measurement uncertainty
   std::vector<double> noise;      // simulation standard error / measurement uncertainty
-  // Every residual within sqrt(1 + noise²).
+  // Every residual within sqrt(1 + noise²) and every noise ≤ kMatchNoise: a match.
   bool WithinNoise() const;
+  // Every residual within sqrt(1 + noise²), but some noise > kMatchNoise: more replicates
+  // would tell whether this is a match.
+  bool Inconclusive() const;
   double Cost() const;  // Σ residual²
 };
 

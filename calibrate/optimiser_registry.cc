@@ -20,15 +20,28 @@ constexpr Entry kOptimisers[] = {
     {"differential_evolution", DifferentialEvolution},
 };
 
+// Every residual within sqrt(1 + noise²); `precise`: every noise ≤ kMatchNoise.
+bool ResidualsWithinNoise(const TrialResult& t, bool* precise) {
+  *precise = true;
+  if (!t.ok) return false;
+  for (size_t k = 0; k < t.residuals.size(); ++k) {
+    const double n = k < t.noise.size() ? t.noise[k] : 0.0;
+    if (std::abs(t.residuals[k]) > std::sqrt(1 + n * n)) return false;
+    *precise = *precise && n <= kMatchNoise;
+  }
+  return true;
+}
+
 }  // namespace
 
 bool TrialResult::WithinNoise() const {
-  if (!ok) return false;
-  for (size_t k = 0; k < residuals.size(); ++k) {
-    const double n = k < noise.size() ? noise[k] : 0.0;
-    if (std::abs(residuals[k]) > std::sqrt(1 + n * n)) return false;
-  }
-  return true;
+  bool precise = false;
+  return ResidualsWithinNoise(*this, &precise) && precise;
+}
+
+bool TrialResult::Inconclusive() const {
+  bool precise = true;
+  return ResidualsWithinNoise(*this, &precise) && !precise;
 }
 
 double TrialResult::Cost() const {

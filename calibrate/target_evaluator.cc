@@ -24,9 +24,36 @@ TargetEvaluator::TargetEvaluator(const ParameterSpace& space, std::vector<RunGro
 
 std::vector<CandidateResult> TargetEvaluator::EvaluateBatch(
     const std::vector<std::vector<double>>& si_parameters) {
+  std::vector<CandidateRuns> batch;
+  std::vector<CandidateResult> results = Run(si_parameters, options_.replicates, true, &batch);
+  for (CandidateRuns& runs : batch) history_.push_back(std::move(runs));
+  return results;
+}
+
+// The earlier runs of the candidate leave the pool: with enough replicates of its own, its
+// spread is its own (a candidate whose heaps scatter far more than the others' would otherwise
+// inflate every other candidate's sem).
+std::optional<CandidateResult> TargetEvaluator::AddReplicates(
+    const std::vector<double>& si_parameters, int replicates) {
+  size_t h = history_.size();
+  while (h > 0 && history_[h - 1].parameters != si_parameters) --h;
+  if (h == 0 || replicates < 1) return std::nullopt;
+  CandidateRuns& earlier = history_[h - 1];
+  if (earlier.pooled)
+    for (size_t k = 0; k < targets_.size(); ++k) pool_[k].Remove(Sample(earlier, targets_[k]).values);
+  std::vector<CandidateRuns> batch;
+  std::vector<CandidateResult> results = Run({si_parameters}, replicates, false, &batch, &earlier);
+  earlier = std::move(batch[0]);
+  return results[0];
+}
+
+std::vector<CandidateResult> TargetEvaluator::Run(const std::vector<std::vector<double>>& si_parameters,
+                                                  int replicates, bool pooled,
+                                                  std::vector<CandidateRuns>* out_runs,
+                                                  const CandidateRuns* prior) {
   const int n = static_cast<int>(si_parameters.size()), g = static_cast<int>(groups_.size());
-  const int replicates = options_.replicates;
-  std::vector<CandidateRuns> batch(n);
+  std::vector<CandidateRuns>& batch = *out_runs;
+  batch.assign(n, CandidateRuns{});
   std::vector<std::string> infeasible(n);
   std::vector<core::Scene> models(static_cast<size_t>(n) * g);
   std::vector<Task> pending;
@@ -34,6 +61,7 @@ std::vector<CandidateResult> TargetEvaluator::EvaluateBatch(
   for (int c = 0; c < n; ++c) {
     const std::vector<double>& p = si_parameters[c];
     batch[c].parameters = p;
+    batch[c].pooled = pooled;
     batch[c].runs.assign(g, std::vector<ReplicateRecord>(replicates));
     if (!space_.Feasible(p, &infeasible[c])) continue;
     for (int k = 0; k < g && infeasible[c].empty(); ++k) {  // every group's model first
@@ -48,6 +76,8 @@ std::vector<CandidateResult> TargetEvaluator::EvaluateBatch(
         const uint64_t seed = objectives::ReplicateSeed(options_.seed, r);
         ReplicateRecord& record = batch[c].runs[k][r];
         const ReplicateRecord* done = journal_ ? journal_->Find(groups_[k].key, p, r, seed) : nullptr;
+        if (!done && prior && r < static_cast<int>(prior->runs[k].size()))
+          done = &prior->runs[k][r];  // run before this candidate was given more replicates
         if (done) {
           record = *done;
           ++reused[c];
@@ -77,18 +107,18 @@ std::vector<CandidateResult> TargetEvaluator::EvaluateBatch(
   for (int c = 0; c < n; ++c) {
     if (!infeasible[c].empty()) continue;
     for (const TargetBinding& target : targets_) samples[c].push_back(Sample(batch[c], target));
-    for (size_t k = 0; k < targets_.size(); ++k) pool_[k].Add(samples[c][k].values);
+    if (pooled)
+      for (size_t k = 0; k < targets_.size(); ++k) pool_[k].Add(samples[c][k].values);
   }
   std::vector<CandidateResult> results;
   for (int c = 0; c < n; ++c) {
-    CandidateResult result = Summarise(samples[c], infeasible[c]);
+    CandidateResult result = Summarise(samples[c], infeasible[c], replicates, pooled);
     result.replicates_reused = reused[c];
     int run = 0;
     for (const Task& t : pending) run += t.candidate == c;
     result.replicates_run = run;
     result.journal_error = journal_errors[c];
     results.push_back(std::move(result));
-    history_.push_back(std::move(batch[c]));
   }
   return results;
 }
@@ -104,15 +134,17 @@ TargetEvaluator::TargetSample TargetEvaluator::Sample(const CandidateRuns& runs,
   return s;
 }
 
-void TargetEvaluator::Pool::Add(const std::vector<double>& values) {
+void TargetEvaluator::Pool::Add(const std::vector<double>& values, int sign) {
   if (values.size() < 2) return;
   const objectives::Summary s = objectives::Summarise(values);
-  squares += s.stddev * s.stddev * (s.n - 1);
-  dof += s.n - 1;
+  squares += sign * s.stddev * s.stddev * (s.n - 1);
+  dof += sign * (s.n - 1);
+  if (dof <= 0) squares = 0, dof = 0;  // rounding must not leave a negative remainder
 }
 
 CandidateResult TargetEvaluator::Summarise(const std::vector<TargetSample>& samples,
-                                           const std::string& infeasible) const {
+                                           const std::string& infeasible, int replicates,
+                                           bool pooled) const {
   CandidateResult result;
   if (!infeasible.empty()) {
     result.status = "infeasible: " + infeasible;
@@ -122,9 +154,9 @@ CandidateResult TargetEvaluator::Summarise(const std::vector<TargetSample>& samp
   for (size_t k = 0; k < targets_.size(); ++k) {
     const objectives::Summary s = objectives::Summarise(samples[k].values);
     TargetValue value{s.mean, s.sem, s.n, "ok"};
-    if (options_.pool_spread && pool_[k].dof > 0 && s.n > 0)
+    if (pooled && options_.pool_spread && pool_[k].dof > 0 && s.n > 0)
       value.sem = std::sqrt(pool_[k].squares / pool_[k].dof / s.n);
-    if (s.n < 1 || 2 * s.n < options_.replicates)
+    if (s.n < 1 || 2 * s.n < replicates)
       value.status = samples[k].failure.empty() ? "no_value" : samples[k].failure;
     if (result.status == "ok" && value.status != "ok") result.status = value.status;
     result.targets.push_back(value);

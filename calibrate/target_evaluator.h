@@ -55,6 +55,7 @@ struct TargetEvaluatorOptions {
   // with R = 2 one candidate's spread has one degree of freedom and swings by a factor 10 from
   // candidate to candidate, which would make "within noise" a coin toss. Packing noise depends
   // little on the parameters over a calibration's range, so pooling is the better estimate.
+  // A candidate given more replicates (AddReplicates) leaves the pool and uses its own spread.
   bool pool_spread = true;
 };
 
@@ -62,6 +63,7 @@ struct TargetEvaluatorOptions {
 struct CandidateRuns {
   std::vector<double> parameters;
   std::vector<std::vector<ReplicateRecord>> runs;  // [group][replicate]
+  bool pooled = true;  // its spread is in the pool (false once it has replicates added)
 };
 
 class TargetEvaluator final : public CandidateEvaluator {
@@ -71,6 +73,8 @@ class TargetEvaluator final : public CandidateEvaluator {
                   EvaluationJournal* journal);
   std::vector<CandidateResult> EvaluateBatch(
       const std::vector<std::vector<double>>& si_parameters) override;
+  std::optional<CandidateResult> AddReplicates(const std::vector<double>& si_parameters,
+                                               int replicates) override;
   const std::vector<CandidateRuns>& history() const { return history_; }
   const std::vector<RunGroup>& groups() const { return groups_; }
 
@@ -83,10 +87,18 @@ class TargetEvaluator final : public CandidateEvaluator {
   struct Pool {
     double squares = 0;  // Σ (n_i − 1) s_i²
     int dof = 0;         // Σ (n_i − 1)
-    void Add(const std::vector<double>& values);
+    void Add(const std::vector<double>& values, int sign = 1);
+    void Remove(const std::vector<double>& values) { Add(values, -1); }
   };
+  // Runs (or finds in the journal) `replicates` replicates per group of each candidate; sem
+  // from the pool (`pooled`, which then takes their spread) or from each candidate's own.
+  // `prior`: the one candidate's earlier runs, reused (the journal may be off).
+  std::vector<CandidateResult> Run(const std::vector<std::vector<double>>& si_parameters,
+                                   int replicates, bool pooled, std::vector<CandidateRuns>* runs,
+                                   const CandidateRuns* prior = nullptr);
   TargetSample Sample(const CandidateRuns& runs, const TargetBinding& target) const;
-  CandidateResult Summarise(const std::vector<TargetSample>& samples, const std::string& infeasible) const;
+  CandidateResult Summarise(const std::vector<TargetSample>& samples, const std::string& infeasible,
+                            int replicates, bool pooled) const;
 
   const ParameterSpace& space_;
   std::vector<RunGroup> groups_;

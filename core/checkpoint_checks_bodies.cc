@@ -155,6 +155,22 @@ bool Simulation::CheckRestoredProgress(std::string* error) const {
   }
   if (!std::isfinite(energy_budget_J_) || !(std::isfinite(energy_scale_J_) && energy_scale_J_ >= 0))
     return Fail("energy budget not finite", error);
+  // The sink pass runs every sink_every_steps steps counted from the last one: a step ahead of
+  // the step counter would postpone every later pass.
+  if (last_sink_pass_step_ < 0 || last_sink_pass_step_ > steps_)
+    return Fail("last sink pass at step " + std::to_string(last_sink_pass_step_) +
+                    ", outside [0, " + std::to_string(steps_) + "]",
+                error);
+  for (const SinkReport& r : sink_reports_) {
+    bool ok = r.particles.size() == scene_.species.size() && r.mass_kg.size() == scene_.species.size() &&
+              (r.last_removal_s == -1 || (r.last_removal_s >= 0 && r.last_removal_s <= time_s_));
+    for (size_t k = 0; ok && k < r.particles.size(); ++k)
+      ok = r.particles[k] >= 0 && std::isfinite(r.mass_kg[k]) && r.mass_kg[k] >= 0;
+    if (!ok)
+      return Fail("sink '" + r.name + "': removed counts or masses are not one non-negative "
+                  "value per species, or its last removal is not within the run",
+                  error);
+  }
   for (size_t f = 0; f < factories_.size(); ++f) {
     std::string why;
     if (!factories_[f].CheckRestored(time_s_, &why))

@@ -15,7 +15,7 @@ bash scripts/install_deps.sh --fuzz
 start=$(date +%s)
 CXX=clang++-14 cmake -S fuzz -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 harnesses=(fuzz_stl fuzz_json_document fuzz_scene_json fuzz_experiment_json fuzz_measurement_table
-           fuzz_study fuzz_journal fuzz_checkpoint)
+           fuzz_study fuzz_journal fuzz_workflow fuzz_checkpoint)
 cmake --build "$build" --parallel "${BUILD_JOBS:-$(nproc)}" --target demcal_sanitized_tests \
   "${harnesses[@]}"
 echo "sanitize: build $(($(date +%s) - start)) s"

@@ -26,6 +26,17 @@ rc=$?
 cat "$work/third.err"
 [[ $rc == 2 ]] && grep -q "in use by another demcal process" "$work/third.err" ||
   { echo "FAIL: experiment on a held --out: exit $rc"; exit 1; }
+# The workflows take the same lock: a valid workflow and a valid study are refused too.
+"$demcal" reproduce alizadeh2018 --out "$work/run" --quick 2>"$work/fourth.err"
+rc=$?
+cat "$work/fourth.err"
+[[ $rc == 2 ]] && grep -q "in use by another demcal process" "$work/fourth.err" ||
+  { echo "FAIL: reproduce on a held --out: exit $rc"; exit 1; }
+"$demcal" diagnose "$files/diagnose_study.json" --out "$work/run" --quick 2>"$work/fifth.err"
+rc=$?
+cat "$work/fifth.err"
+[[ $rc == 2 ]] && grep -q "in use by another demcal process" "$work/fifth.err" ||
+  { echo "FAIL: diagnose on a held --out: exit $rc"; exit 1; }
 kill "$first"
 wait "$first" 2>/dev/null
 # The kernel dropped the lock with the process: the directory is free again.

@@ -280,6 +280,67 @@ case("cli_restart_missing", {"cli_restart_missing.json": scene()},
 case("cli_out_is_file", {}, "simulate {files}/scene_top_array.json --out "
      "{files}/scene_top_array.json", 2, "Not a directory")
 
+# --- workflow files (demcal reproduce) and diagnose ----------------------------------------
+WORKFLOW = json.load(open(os.path.join(HERE, "..", "..", "datasets", "alizadeh2018", "workflow.json")))
+
+
+def workflow(edit=None, **changes):
+    """The bundled workflow with its paths made relative to files/, then changed."""
+    w = copy.deepcopy(WORKFLOW)
+    up = "../../../datasets/alizadeh2018/"
+    w["measurements"] = up + w["measurements"]
+    w["synthetic_measurements"] = up + w["synthetic_measurements"]
+    for s in w["species"]:
+        s["experiment_file"] = up + s["experiment_file"]
+    w["coating"]["experiment_file"] = up + w["coating"]["experiment_file"]
+    w["segregation"]["experiment_file"] = up + w["segregation"]["experiment_file"]
+    w.update(changes)
+    if edit:
+        edit(w)
+    return json.dumps(w, indent=1)
+
+
+R = "reproduce {files}/%s --out {out}"
+case("workflow_deep_nesting", {"workflow_deep_nesting.json": workflow(description="@")
+                               .replace('"@"', "[" * 100000 + "]" * 100000)},
+     R % "workflow_deep_nesting.json", 2, "nesting deeper than 64 levels")
+case("workflow_overflow", {"workflow_overflow.json": workflow(replicates=2).replace(
+    '"replicates": 2,', '"replicates": 1e999,', 1)}, R % "workflow_overflow.json", 2,
+     "number '1e999' is out of range")
+case("workflow_wrong_format", {"workflow_wrong_format.json": workflow(format="demcal-workflow/9")},
+     R % "workflow_wrong_format.json", 2, "demcal-workflow/1")
+case("workflow_unknown_key", {"workflow_unknown_key.json": workflow(replicats=3)},
+     R % "workflow_unknown_key.json", 2, "replicats")
+case("workflow_level_negative", {"workflow_level_negative.json": workflow(
+    lambda w: w["coating"].update(levels_wt_pct=[0.5, -1]))},
+     R % "workflow_level_negative.json", 2, "coating.levels_wt_pct[1]")
+case("workflow_species_bounds", {"workflow_species_bounds.json": workflow(
+    lambda w: w["species"][0].update(min=0.9, max=0.1, start=0.5))},
+     R % "workflow_species_bounds.json", 2, "species[0]")
+case("workflow_poisson", {"workflow_poisson.json": workflow(
+    lambda w: w["cohesion"].update(poisson_ratio=0.7))},
+     R % "workflow_poisson.json", 2, "cohesion.poisson_ratio")
+case("workflow_string_number", {"workflow_string_number.json": workflow(
+    lambda w: w["cohesion"].update(youngs_real_Pa="1.6e9"))},
+     R % "workflow_string_number.json", 2, "cohesion.youngs_real_Pa")
+case("workflow_reference_key", {"workflow_reference_key.json": workflow(
+    lambda w: w["reference"][0].update(key="angle_of_everything"))},
+     R % "workflow_reference_key.json", 2, "angle_of_everything")
+case("workflow_missing_experiment", {"workflow_missing_experiment.json": workflow(
+    lambda w: w["species"][0].update(experiment_file="no_such_aor.json"))},
+     R % "workflow_missing_experiment.json", 2, "no_such_aor.json")
+case("workflow_missing_table", {"workflow_missing_table.json": workflow(measurements="no_such.csv")},
+     R % "workflow_missing_table.json", 2, "no_such.csv")
+case("workflow_directory", {}, "reproduce {files} --out {out}", 2, "directory")
+case("workflow_unknown_name", {}, "reproduce no_such_workflow --out {out}", 2, "no_such_workflow")
+D = "diagnose {files}/%s --out {out} --quick"
+case("diagnose_deep_nesting", {}, D % "study_deep_nesting.json", 2, "nesting deeper than 64 levels")
+case("diagnose_significance", {}, D % "study_overflow.json" + " --significance 2", 2,
+     "significance")
+case("diagnose_unknown_effect", {"diagnose_study.json": study()},
+     D % "diagnose_study.json" + " --effects jkr_adhesion,telekinesis", 2, "telekinesis")
+case("diagnose_refits_negative", {}, D % "diagnose_study.json" + " --refits -1", 2, "refits")
+case("diagnose_directory", {}, "diagnose {files} --out {out}", 2, "directory")
 
 # Not cases: the scenes of checkpoint_test.sh (a base run, and others its checkpoint must not fit).
 CHECKPOINT_SCENES = {

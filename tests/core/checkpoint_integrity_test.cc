@@ -245,6 +245,11 @@ TEST_CASE("hand-edited checkpoints with a valid checksum are refused by the stat
   // mass, active time, full batches, region lift), then (no sinks here) the last sink pass step.
   CHECK_THAT(Load(Edited(payload, payload.size() - 64 - 8, -1e300)),
              Catch::Contains("factories[0] 'feed': next batch time -1e+300 s outside"));
+  // A last sink pass ahead of the step counter would postpone every later pass.
+  CHECK_THAT(Load(Edited(payload, payload.size() - 8, int64_t{1} << 50)),
+             Catch::Contains("last sink pass at step 1125899906842624, outside [0, "));
+  CHECK_THAT(Load(Edited(payload, payload.size() - 8, int64_t{-3})),
+             Catch::Contains("last sink pass at step -3"));
   CHECK_THAT(Load(Edited(payload, 0, uint64_t{1} << 40)),
              Catch::Contains("the scene fingerprint claims 1099511627776 parts"));
 }

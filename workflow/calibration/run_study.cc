@@ -31,23 +31,37 @@ class StudyEvaluator final : public calibrate::CandidateEvaluator {
   StudyEvaluator(calibrate::TargetEvaluator* inner, size_t targets) : inner_(inner), targets_(targets) {}
   std::vector<calibrate::CandidateResult> EvaluateBatch(const std::vector<std::vector<double>>& p) override {
     std::vector<calibrate::CandidateResult> results = inner_->EvaluateBatch(p);
-    for (calibrate::CandidateResult& r : results) {
-      extra_.emplace_back(r.targets.begin() + targets_, r.targets.end());
-      r.targets.resize(targets_);
-      if (r.status != "ok" && r.status.rfind("infeasible", 0) != 0) {  // a failure of a candidate target only
-        r.status = "ok";
-        for (const calibrate::TargetValue& t : r.targets)
-          if (!t.ok()) r.status = t.status;
-      }
+    for (size_t i = 0; i < results.size(); ++i) {
+      Split(&results[i], &extra_.emplace_back());
+      asked_.push_back(p[i]);
     }
     return results;
+  }
+  std::optional<calibrate::CandidateResult> AddReplicates(const std::vector<double>& p, int replicates) override {
+    std::optional<calibrate::CandidateResult> r = inner_->AddReplicates(p, replicates);
+    size_t k = asked_.size();
+    while (k > 0 && asked_[k - 1] != p) --k;  // the last candidate asked with these parameters
+    if (r && k > 0) Split(&*r, &extra_[k - 1]);
+    return r;
   }
   const std::vector<std::vector<calibrate::TargetValue>>& extra() const { return extra_; }
 
  private:
+  // The candidate targets' values go to `extra`; a failure of those only is not the candidate's.
+  void Split(calibrate::CandidateResult* r, std::vector<calibrate::TargetValue>* extra) const {
+    extra->assign(r->targets.begin() + targets_, r->targets.end());
+    r->targets.resize(targets_);
+    if (r->status != "ok" && r->status.rfind("infeasible", 0) != 0) {
+      r->status = "ok";
+      for (const calibrate::TargetValue& t : r->targets)
+        if (!t.ok()) r->status = t.status;
+    }
+  }
+
   calibrate::TargetEvaluator* inner_;
   size_t targets_;
-  std::vector<std::vector<calibrate::TargetValue>> extra_;
+  std::vector<std::vector<calibrate::TargetValue>> extra_;  // per candidate asked, in order
+  std::vector<std::vector<double>> asked_;                   // its parameters
 };
 
 // One line per candidate: what was tried, what came out per target, and the time left at most.

@@ -89,10 +89,14 @@ int RunReproduce(const ReproduceOptions& options, std::ostream& log) {
   }
   std::error_code ec;
   fs::create_directories(options.out_dir, ec);
-  OutputLock lock;
-  if (ec || !LockOutputDirectory(options.out_dir, "demcal reproduce", &lock, &error)) {
-    log << "error: " << (ec ? "cannot create '" + options.out_dir + "': " + ec.message() : error) << "\n";
+  if (ec) {
+    log << "error: cannot create '" << options.out_dir << "': " << ec.message() << "\n";
     return kExitOutputError;
+  }
+  OutputLock lock;  // a held --out is a usage error, as for every command (exit 2)
+  if (!LockOutputDirectory(options.out_dir, "demcal reproduce " + options.workflow, &lock, &error)) {
+    log << "error: " << error << "\n";
+    return kExitInvalidInput;
   }
   StageJournal journal;
   const std::string fingerprint = workflow.fingerprint + (options.quick ? "/quick" : "/default");
