@@ -1,24 +1,18 @@
-// libFuzzer harness: the measurement table reader (CSV). The bytes go to a file because
-// LoadMeasurementTable reads a path. Never crashes; a failure names the file.
-#include <unistd.h>
-
+// libFuzzer harness: the measurement table reader (CSV), which reads a path. Never crashes; a
+// failure names the file.
 #include <cstdint>
-#include <cstdio>
 #include <cstdlib>
 #include <string>
 
+#include "fuzz/fuzz_input_file.h"
 #include "workflow/files/measurement_table.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  static const std::string path = "/tmp/demcal_fuzz_table_" + std::to_string(::getpid()) + ".csv";
-  FILE* f = std::fopen(path.c_str(), "wb");
-  if (!f) return 0;
-  std::fwrite(data, 1, size, f);
-  std::fclose(f);
+  const std::string path = demcal::fuzz::WriteFuzzInput("table.csv", data, size);
+  if (path.empty()) return 0;
   demcal::workflow::MeasurementTable table;
   std::string error;
-  if (!demcal::workflow::LoadMeasurementTable(path, &table, &error) &&
-      error.rfind(path, 0) != 0)
+  if (!demcal::workflow::LoadMeasurementTable(path, &table, &error) && error.rfind(path, 0) != 0)
     std::abort();
   return 0;
 }

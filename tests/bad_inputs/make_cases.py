@@ -5,7 +5,7 @@ cases.txt (run by run_case.sh through ctest). Run it after editing a case:
 Each case: name, the files it needs, the demcal arguments ({files} = this folder's files/,
 {out} = a fresh output directory), the expected exit code, a fragment the message must contain
 and, optionally, one it must not contain."""
-import copy, json, os, random
+import copy, json, os, random, re
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 FILES = os.path.join(HERE, "files")
@@ -208,13 +208,18 @@ def study(**changes):
     return json.dumps(s, indent=1)
 
 
+def nesting_and_overflow(kind, make, command):
+    """Two cases every JSON file kind gets: a 100,000-deep description and a 1e999 number."""
+    case(kind + "_deep_nesting", {kind + "_deep_nesting.json": make(description="@")
+                                  .replace('"@"', "[" * 100000 + "]" * 100000)},
+         command % (kind + "_deep_nesting.json"), 2, "nesting deeper than 64 levels")
+    overflow = re.sub(r'"replicates": 2\b', '"replicates": 1e999', make(replicates=2), count=1)
+    case(kind + "_overflow", {kind + "_overflow.json": overflow}, command % (kind + "_overflow.json"),
+         2, "replicates: number '1e999' is out of range")
+
+
 C = "calibrate {files}/%s --out {out} --max-evaluations 1"
-case("study_deep_nesting", {"study_deep_nesting.json": study(description="@")
-                            .replace('"@"', "[" * 100000 + "]" * 100000)},
-     C % "study_deep_nesting.json", 2, "nesting deeper than 64 levels")
-case("study_overflow", {"study_overflow.json": study(replicates=2).replace(
-    '"replicates": 2', '"replicates": 1e999')}, C % "study_overflow.json", 2,
-     "replicates: number '1e999' is out of range")
+nesting_and_overflow("study", study, C)
 case("study_directory", {}, "calibrate {files} --out {out}", 2, "it is a directory")
 HEADER = "observable,unit,material,coating_PEG_wt_pct,test,value,uncertainty,repeats,provenance,source\n"
 ROW = "angle_deg,deg,BP,0,pseudo-2D heap,{v},,,measured,test\n"
@@ -301,12 +306,7 @@ def workflow(edit=None, **changes):
 
 
 R = "reproduce {files}/%s --out {out}"
-case("workflow_deep_nesting", {"workflow_deep_nesting.json": workflow(description="@")
-                               .replace('"@"', "[" * 100000 + "]" * 100000)},
-     R % "workflow_deep_nesting.json", 2, "nesting deeper than 64 levels")
-case("workflow_overflow", {"workflow_overflow.json": workflow(replicates=2).replace(
-    '"replicates": 2,', '"replicates": 1e999,', 1)}, R % "workflow_overflow.json", 2,
-     "number '1e999' is out of range")
+nesting_and_overflow("workflow", workflow, R)
 case("workflow_wrong_format", {"workflow_wrong_format.json": workflow(format="demcal-workflow/9")},
      R % "workflow_wrong_format.json", 2, "demcal-workflow/1")
 case("workflow_unknown_key", {"workflow_unknown_key.json": workflow(replicats=3)},
