@@ -32,6 +32,7 @@
 #include "core/scene.h"
 #include "objectives/aor/aor_experiment.h"
 #include "objectives/common/feed.h"
+#include "objectives/metrics/discharge_metrics.h"
 #include "objectives/metrics/granule_tracking.h"
 #include "objectives/metrics/heap_segregation.h"
 #include "objectives/metrics/repose_angle.h"
@@ -96,6 +97,11 @@ struct SegregationRun {
   double discharge_time_s = 0;  // see the file comment; 0 when the funnel did not empty
   double first_out_s = 0, empty_s = 0;
   int64_t spheres_left_above = 0;  // at or above the orifice at the end
+  // What left the funnel (grains first seen below the orifice plane), in time bins from the
+  // first grain out to the discharge end: the paper's Fig. 16 (pre-segregation in the funnel
+  // shows as a drift of a species' fraction). Empty without a funnel or when nothing left.
+  std::vector<CompositionBin> outflow;
+  std::vector<double> outflow_mass_fraction;  // per species, of all that left the funnel
   Snapshot heap;                   // the settled heap below the funnel (glued base excluded)
   std::optional<HeapSegregationAnalysis> analysis;
   std::string analysis_message;  // why analysis is empty

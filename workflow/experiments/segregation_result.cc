@@ -99,6 +99,11 @@ ordered_json SpeciesJson(const std::vector<SegregationRun>& runs, int k, const s
   j["cov_r_3d"] = IndexStat(runs, k, whole, &SegregationIndex::cov_r);
   j["s_n_3d"] = IndexStat(runs, k, whole, &SegregationIndex::s_n);
   j["mean_mass_fraction_3d"] = IndexStat(runs, k, whole, &SegregationIndex::mean_fraction);
+  std::vector<double> outflow;  // of all that left the funnel (Fig. 16's average level)
+  for (const SegregationRun& run : runs)
+    if (run.ok() && k < static_cast<int>(run.outflow_mass_fraction.size()))
+      outflow.push_back(run.outflow_mass_fraction[k]);
+  j["outflow_mass_fraction"] = Stat(outflow);
   using objectives::HeapFloor;
   AddFloor(
       runs, k, "2d_front", [](const HeapFloor& f, int s) { return FloorNumber(f.front, s); }, &j);
@@ -167,6 +172,7 @@ ordered_json RunJson(int replicate, const SegregationRun& run) {
   j["funnel_first_out_s"] = run.first_out_s;
   j["funnel_empty_s"] = run.funnel_emptied ? ordered_json(run.empty_s) : nullptr;
   j["discharge_time_s"] = run.funnel_emptied ? ordered_json(run.discharge_time_s) : nullptr;
+  j["outflow_mass_fraction"] = run.outflow_mass_fraction;
   j["settle_time_s"] = run.settle.settle_time_s;
   j["settled_by"] = run.settle.settled_by.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(run.settle.settled_by);
   j["surface_change_d"] = run.settle.surface_change_d >= 0 ? nlohmann::ordered_json(run.settle.surface_change_d) : nlohmann::ordered_json();

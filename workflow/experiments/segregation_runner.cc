@@ -10,6 +10,8 @@
 #include "workflow/files/segregation_json.h"
 #include "workflow/experiments/segregation_result.h"
 #include "objectives/report/cov_layer_plot_svg.h"
+#include "objectives/report/discharge_csv.h"
+#include "objectives/report/discharge_svg.h"
 #include "objectives/report/heap_face_svg.h"
 #include "objectives/common/replicates.h"
 #include "objectives/report/segregation_csv.h"
@@ -34,6 +36,15 @@ bool WriteRunFiles(const std::string& dir, int r, const SegregationRun& run,
   const std::string k = "_r" + std::to_string(r);
   if (!objectives::WriteGranuleTracksCsv(dir + "/granule_tracks" + k + ".csv", Tracks(run), error))
     return false;
+  if (!run.outflow.empty()) {  // Fig. 16: what left the funnel, from the first grain out
+    objectives::DischargeMetrics m;
+    m.composition = run.outflow;
+    if (!objectives::WriteCompositionCsv(dir + "/outflow_composition" + k + ".csv", run.outflow, names,
+                                         error) ||
+        !objectives::WriteSvg(dir + "/outflow_composition" + k + ".svg",
+                              objectives::DischargeCompositionPlot(m, run.first_out_s, names), error))
+      return false;
+  }
   if (!run.analysis) return true;
   const objectives::HeapSegregationAnalysis& a = *run.analysis;
   return objectives::WriteBinCsv(dir + "/segregation_bins" + k + ".csv", a.grid, a.counts, names,

@@ -121,6 +121,20 @@ TEST_CASE("a tiny segregation heap run gives a defined analysis", "[physics][slo
   CHECK(run.spheres_left_above == 0);
   CHECK(run.discharge_time_s > 0);
   CHECK(run.first_out_s < run.empty_s);
+  // Fig. 16's outflow: every heap grain passed the orifice once, so the outflow's composition
+  // is the heap's (mass conservation), and each bin's fractions sum to 1 (or 0 if empty).
+  REQUIRE(run.outflow_mass_fraction.size() == 3);
+  std::vector<double> heap_kg(3, 0);
+  double heap_total = 0;
+  for (const auto& g : run.heap.grains) heap_kg[g.species] += g.mass_kg, heap_total += g.mass_kg;
+  for (int k = 0; k < 3; ++k)
+    CHECK(run.outflow_mass_fraction[k] == Approx(heap_kg[k] / heap_total).epsilon(1e-9));
+  REQUIRE(run.outflow.size() == 20);
+  for (const CompositionBin& bin : run.outflow) {
+    double sum = 0;
+    for (double f : bin.mass_fraction) sum += f;
+    CHECK((sum == Approx(1.0) || (sum == 0 && bin.mass_kg == 0)));
+  }
   REQUIRE(run.analysis.has_value());
   CHECK(run.analysis->grid.face_bin_count() == 21);
   CHECK(run.analysis->grid.layers() == 8);

@@ -17,7 +17,8 @@ json Run(double s_n, double floor) {
            {{{"species", "EP"},
              {"s_n_3d", {{"mean", s_n}}},
              {"s_n_3d_floor", {{"mean", floor}, {"low", 0.9 * floor}, {"high", 1.2 * floor}}},
-             {"cov_3d", {{"mean", 0.5}}}}}}};
+             {"cov_3d", {{"mean", 0.5}}},
+             {"outflow_mass_fraction", {{"mean", 0.02}}}}}}};
 }
 }  // namespace
 
@@ -31,6 +32,8 @@ TEST_CASE("segregation rows carry the replicates' mean and sem and the noise flo
   const json values = SegregationSummaryValues({{"uncoated", uncoated}}, "EP");
   const std::string note = values["s_n_EP_3d_uncoated"]["note"].get<std::string>();
   CHECK(note.find("random-mixture floor 1.5") != std::string::npos);
+  // Fig. 16's level: EP's share of what left the funnel.
+  CHECK(values["ep_outflow_fraction"]["mean"].get<double>() == Approx(0.02));
   // A scenario that did not run gives no value, and says so.
   CHECK(values["s_n_EP_3d_coated"]["mean"].is_null());
   CHECK(values["s_n_EP_3d_coated"]["note"].get<std::string>().find("no value") != std::string::npos);
