@@ -42,6 +42,20 @@ std::string ReadText(const std::string& path) {
   return text.str();
 }
 
+// One figure per scenario from replicate 0's file `name` (skipped where the run wrote none);
+// `caption` holds one %s for the scenario's name.
+bool ScenarioFigures(const nlohmann::json& seg, const std::string& name, const std::string& caption,
+                     HtmlReport* r, std::string* error) {
+  for (const auto& [scenario, s] : At(seg, "scenarios").items()) {
+    const std::string path = At(s, "dir").get<std::string>() + "/r0/" + name;
+    if (!fs::exists(path)) continue;
+    std::string text = caption;
+    text.replace(text.find("%s"), 2, scenario);
+    if (!r->Figure(ReadText(path), text, s.value("synthetic", false), error)) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 bool SegregationSection(const ReportInputs& in, HtmlReport* r, std::string* error) {
@@ -74,13 +88,14 @@ bool SegregationSection(const ReportInputs& in, HtmlReport* r, std::string* erro
   if (!bars.empty() && !r->Figure(bars, m + " CoV and S_n per scenario ± sem", synthetic, error))
     return false;
   r->Subheading("Heap front faces (replicate 0 of each scenario)");
-  for (const auto& [name, s] : At(seg, "scenarios").items()) {
-    const std::string face = At(s, "dir").get<std::string>() + "/r0/heap_front_r0.svg";
-    if (!fs::exists(face)) continue;
-    if (!r->Figure(ReadText(face), "front face of the " + name + " heap, coloured by species",
-                   s.value("synthetic", false), error))
-      return false;
-  }
+  if (!ScenarioFigures(seg, "heap_front_r0.svg", "front face of the %s heap, coloured by species", r, error))
+    return false;
+  r->Subheading("Outflow composition of the funnel (Fig. 16; replicate 0 of each scenario)");
+  if (!ScenarioFigures(seg, "outflow_composition_r0.svg",
+                       "mass fraction per species of what left the funnel, %s (a drift would be "
+                       "pre-segregation in the funnel)",
+                       r, error))
+    return false;
   std::vector<std::string> vtk;
   for (const auto& [name, s] : At(seg, "scenarios").items())
     for (int k = 0; k < At(seg, "replicates").get<int>(); ++k)
