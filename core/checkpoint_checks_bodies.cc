@@ -187,6 +187,17 @@ bool ParticleFactory::CheckRestored(double time_s, std::string* error) const {
         r.full_batches >= 0 && r.inserted_mass_kg >= 0 && r.requested_mass_kg >= 0 &&
         r.active_time_s >= 0 && owed_kg_ <= r.requested_mass_kg * (1 + 1e-9) + 1e-300))
     return Fail("inserted, requested or owed mass, active time or counts out of range", error);
+  // The region rises only after the heap, and only for a factory that follows it; a NaN or far
+  // lift would put the insertion region (and its occupancy grid) nowhere. 1e6 m: the coordinate
+  // bound of the scene's geometry (mesh vertices, scene_limits).
+  const double lift = r.region_lift_m;
+  if (!(std::isfinite(lift) && lift >= 0 && lift <= 1e6) ||
+      (lift > 0 && !(spec_.follow_heap_clearance_m > 0))) {
+    std::ostringstream os;
+    os << "region lift " << lift << " m outside [0, 1e+06] m, or set on a factory that does not "
+       << "follow the heap";
+    return Fail(os.str(), error);
+  }
   // Batches are due every interval from start_s on, and all those due by now were inserted.
   const double latest = std::max(spec_.start_s, time_s) + interval_;
   if (!(next_batch_s_ >= spec_.start_s && next_batch_s_ <= latest + 1e-9 * std::abs(latest))) {

@@ -245,6 +245,11 @@ TEST_CASE("hand-edited checkpoints with a valid checksum are refused by the stat
   // mass, active time, full batches, region lift), then (no sinks here) the last sink pass step.
   CHECK_THAT(Load(Edited(payload, payload.size() - 64 - 8, -1e300)),
              Catch::Contains("factories[0] 'feed': next batch time -1e+300 s outside"));
+  // A NaN region lift gave the insertion grid NaN bounds (found by fuzz_checkpoint, UBSan); a lift
+  // on a factory that does not follow the heap is not a state a run can reach.
+  CHECK_THAT(Load(Edited(payload, payload.size() - 16, nan)), Catch::Contains("region lift nan m"));
+  CHECK_THAT(Load(Edited(payload, payload.size() - 16, 0.5)),
+             Catch::Contains("set on a factory that does not follow the heap"));
   // A last sink pass ahead of the step counter would postpone every later pass.
   CHECK_THAT(Load(Edited(payload, payload.size() - 8, int64_t{1} << 50)),
              Catch::Contains("last sink pass at step 1125899906842624, outside [0, "));
