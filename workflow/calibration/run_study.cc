@@ -31,16 +31,15 @@ class StudyEvaluator final : public calibrate::CandidateEvaluator {
   StudyEvaluator(calibrate::TargetEvaluator* inner, size_t targets) : inner_(inner), targets_(targets) {}
   std::vector<calibrate::CandidateResult> EvaluateBatch(const std::vector<std::vector<double>>& p) override {
     std::vector<calibrate::CandidateResult> results = inner_->EvaluateBatch(p);
-    for (size_t i = 0; i < results.size(); ++i) {
-      Split(&results[i], &extra_.emplace_back());
-      asked_.push_back(p[i]);
-    }
+    for (calibrate::CandidateResult& r : results) Split(&r, &extra_.emplace_back());
     return results;
   }
   std::optional<calibrate::CandidateResult> AddReplicates(const std::vector<double>& p, int replicates) override {
     std::optional<calibrate::CandidateResult> r = inner_->AddReplicates(p, replicates);
-    size_t k = asked_.size();
-    while (k > 0 && asked_[k - 1] != p) --k;  // the last candidate asked with these parameters
+    // extra_ runs parallel to the inner evaluator's history: one entry per candidate asked.
+    const std::vector<calibrate::CandidateRuns>& asked = inner_->history();
+    size_t k = asked.size();
+    while (k > 0 && asked[k - 1].parameters != p) --k;  // the last candidate with these parameters
     if (r && k > 0) Split(&*r, &extra_[k - 1]);
     return r;
   }
@@ -61,7 +60,6 @@ class StudyEvaluator final : public calibrate::CandidateEvaluator {
   calibrate::TargetEvaluator* inner_;
   size_t targets_;
   std::vector<std::vector<calibrate::TargetValue>> extra_;  // per candidate asked, in order
-  std::vector<std::vector<double>> asked_;                   // its parameters
 };
 
 // One line per candidate: what was tried, what came out per target, and the time left at most.
