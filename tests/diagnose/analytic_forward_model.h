@@ -51,13 +51,15 @@ class AnalyticForwardModel final : public ForwardModel {
   static double Coating(int i) { return kCoating[i / 3]; }
   static int Count() { return 9; }
 
-  // Noise-free value with mu and the effects (candidate index -> value).
-  static double Exact(int i, double mu, const std::vector<std::pair<int, double>>& effects) {
+  // Noise-free value with mu and the effects (candidate index -> value). `curvature` c makes
+  // every effect nonlinear, acting as v + c·v² (0: linear).
+  static double Exact(int i, double mu, const std::vector<std::pair<int, double>>& effects, double curvature = 0) {
     const int k = Kind(i);
     double y = std::vector<double>{20, 0.012, 4e-3}[k] + mu * std::vector<double>{50, 5e-3, -5e-3}[k];
-    for (const auto& [e, v] : effects) y += EffectChange(e, k, Coating(i), v);
+    for (const auto& [e, v] : effects) y += EffectChange(e, k, Coating(i), v + curvature * v * v);
     return y;
   }
+  double curvature = 0;
   // An effect no candidate has: grows with the square of the coating, only in the flow.
   static double Foreign(int i, double v) { return Kind(i) == 2 ? v * Coating(i) * Coating(i) * 1e-4 : 0; }
 
@@ -72,7 +74,7 @@ class AnalyticForwardModel final : public ForwardModel {
       Prediction pr{true, "ok"};
       for (int i = 0; i < Count(); ++i) {
         const double s = kScatter[Kind(i)];
-        pr.mean.push_back(Exact(i, 0.2 + 0.8 * p.base_unit[0], effects) +
+        pr.mean.push_back(Exact(i, 0.2 + 0.8 * p.base_unit[0], effects, curvature) +
                           s / std::sqrt(replicates) * calibrate::testing::Normal(seed, i));
         pr.sem.push_back(s / std::sqrt(replicates));
         pr.spread.push_back(s);
@@ -115,7 +117,7 @@ inline std::vector<Observation> MakeObservations(AnalyticForwardModel* model, do
   model->measured.clear();
   for (int i = 0; i < AnalyticForwardModel::Count(); ++i) {
     const int k = AnalyticForwardModel::Kind(i);
-    const double y = AnalyticForwardModel::Exact(i, mu, hidden) + AnalyticForwardModel::Foreign(i, foreign) +
+    const double y = AnalyticForwardModel::Exact(i, mu, hidden, model->curvature) + AnalyticForwardModel::Foreign(i, foreign) +
                      kUncertainty[k] * calibrate::testing::Normal(noise_seed, i);
     model->measured.push_back(y);
     Observation o{kKinds[k] + " w=" + std::to_string(AnalyticForwardModel::Coating(i)), kKinds[k],
