@@ -121,7 +121,7 @@ AorRun RunAor(const core::Scene& model, const AorSettings& settings, uint64_t se
   out.seed = seed;
   int64_t fixed = 0;
   core::Scene scene = BuildAorScene(model, settings, seed, &fixed);
-  core::Simulation sim(scene, {.threads = 1});
+  core::Simulation sim(scene, {.threads = std::max(1, hooks.threads)});
   if (!InitializeSettledRun(sim, &out.settle)) return out;
   SettleCriteria criteria = settings.settle;
   criteria.feed_end_s = settings.feed.EndS();

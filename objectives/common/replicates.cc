@@ -1,5 +1,6 @@
 #include "objectives/common/replicates.h"
 
+#include <algorithm>
 #include <cmath>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -26,6 +27,11 @@ Summary Summarise(const std::vector<double>& values) {
 
 uint64_t ReplicateSeed(uint64_t base_seed, int replicate) {
   return core::DeriveSeed(base_seed, 1000 + static_cast<uint64_t>(replicate));
+}
+
+int ThreadsPerReplicate(int count, int workers) {
+  const int cores = workers > 0 ? workers : tbb::this_task_arena::max_concurrency();
+  return std::max(1, cores / std::max(1, count));
 }
 
 void RunReplicates(int count, uint64_t base_seed, int workers,

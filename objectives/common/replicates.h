@@ -24,6 +24,11 @@ Summary Summarise(const std::vector<double>& values);
 // The seed of replicate r.
 uint64_t ReplicateSeed(uint64_t base_seed, int replicate);
 
+// Threads each of `count` side-by-side simulations gets on `workers` cores (0: all): 1 when the
+// replicates fill the cores, else the cores shared out (⌊workers / count⌋), since results do not
+// depend on the thread count and an idle core is wasted wall time.
+int ThreadsPerReplicate(int count, int workers);
+
 // Calls run(r, ReplicateSeed(base_seed, r)) for r = 0..count−1 on up to `workers` threads
 // (0: all cores); returns when all are done. `run` must be thread-safe across replicates.
 void RunReplicates(int count, uint64_t base_seed, int workers,

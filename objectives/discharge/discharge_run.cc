@@ -74,11 +74,11 @@ std::string TemporaryCheckpointPath(uint64_t seed) {
 // A simulation of `scene` with the gate opening now, continuing the settled state of `filled`
 // (the gate's motion is part of the scene, fixed at initialisation: hand over by checkpoint).
 std::unique_ptr<core::Simulation> OpenGateNow(core::Scene scene, const core::Simulation& filled,
-                                              double budget_s, std::string* error) {
+                                              double budget_s, int threads, std::string* error) {
   OpenGateAt(filled.time_s(), &scene);
   if (budget_s > 0) scene.max_wall_time_s = std::max(1.0, budget_s);
   const std::string path = TemporaryCheckpointPath(scene.seed);
-  auto sim = std::make_unique<core::Simulation>(scene, core::Simulation::Options{.threads = 1});
+  auto sim = std::make_unique<core::Simulation>(scene, core::Simulation::Options{.threads = threads});
   const bool ok = filled.SaveCheckpoint(path, error) && sim->Initialize(error) &&
                   sim->LoadCheckpoint(path, error, {"wall motion"});
   std::error_code ignored;
@@ -153,7 +153,7 @@ DischargeRun RunDischarge(const core::Scene& model, const DischargeSettings& set
   DischargeRun out;
   out.seed = seed;
   const core::Scene scene = BuildDischargeScene(model, settings, seed);
-  auto sim = std::make_unique<core::Simulation>(scene, core::Simulation::Options{.threads = 1});
+  auto sim = std::make_unique<core::Simulation>(scene, core::Simulation::Options{.threads = std::max(1, hooks.threads)});
   std::string error;
   if (!sim->Initialize(&error)) {
     out.status = "invalid_scene";
@@ -162,7 +162,8 @@ DischargeRun RunDischarge(const core::Scene& model, const DischargeSettings& set
   }
   bool ok = Fill(*sim, model, settings, hooks, &out);
   if (ok && settings.gate_open_s <= 0) {
-    sim = OpenGateNow(scene, *sim, settings.max_wall_time_s - SecondsSince(start), &error);
+    sim = OpenGateNow(scene, *sim, settings.max_wall_time_s - SecondsSince(start),
+                      std::max(1, hooks.threads), &error);
     if (!sim) out.status = "invalid_scene", out.message = error;
     ok = sim != nullptr;
   }

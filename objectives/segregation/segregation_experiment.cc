@@ -236,7 +236,7 @@ SegregationRun RunSegregation(const core::Scene& model, const SegregationSetting
   SegregationRun out;
   out.seed = seed;
   int64_t fixed = 0;
-  core::Simulation sim(BuildSegregationScene(model, settings, seed, &fixed), {.threads = 1});
+  core::Simulation sim(BuildSegregationScene(model, settings, seed, &fixed), {.threads = std::max(1, hooks.threads)});
   if (!InitializeSettledRun(sim, &out.settle)) return out;
   SettleCriteria criteria = settings.settle;
   criteria.feed_end_s = settings.feed.EndS();

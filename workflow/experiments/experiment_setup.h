@@ -57,7 +57,8 @@ bool PrepareExperiment(const ExperimentFile& file, const ExperimentContext& cont
 objectives::RunHooks ReplicateHooks(ReplicateProgress& progress, int r, const std::string& out_dir,
                                     const std::string& vtk_stem, std::string* output_error);
 
-// Runs context.replicates replicates side by side (one per worker): run(model, settings, seed,
+// Runs context.replicates replicates side by side (one per worker; fewer replicates than
+// workers share the idle cores as simulation threads): run(model, settings, seed,
 // hooks) reporting to one progress line and leaving its final state as
 // DIR/<vtk_stem>_r<r>.vtk, then finish(r, result, &error) writes that replicate's own files.
 // Returns the results in replicate order; (*output_errors)[r] holds replicate r's first output
@@ -72,11 +73,13 @@ auto RunPreparedReplicates(const ExperimentFile& file, const ExperimentContext& 
   std::vector<Result> results(context.replicates);
   output_errors->assign(context.replicates, "");
   ReplicateProgress progress(log, file.experiment, context.replicates, !context.quiet);
+  const int threads = objectives::ThreadsPerReplicate(context.replicates, context.threads);
   objectives::RunReplicates(
       context.replicates, file.seed, context.threads, [&](int r, uint64_t seed) {
         std::string* error = &(*output_errors)[r];
-        results[r] = run(prepared.model, prepared.settings, seed,
-                         ReplicateHooks(progress, r, context.out_dir, vtk_stem, error));
+        objectives::RunHooks hooks = ReplicateHooks(progress, r, context.out_dir, vtk_stem, error);
+        hooks.threads = threads;
+        results[r] = run(prepared.model, prepared.settings, seed, hooks);
         progress.Finish(r);
         finish(r, results[r], error);
       });

@@ -72,7 +72,7 @@ bool BuildScenarios(const ReproduceContext& ctx, std::vector<Scenario>* out, std
 }
 
 // One replicate: its own experiment file (seed replaced) and output folder.
-bool RunReplicate(const ReproduceContext& ctx, const Scenario& s, int r, const std::string& dir,
+bool RunReplicate(const ReproduceContext& ctx, const Scenario& s, int r, int threads, const std::string& dir,
                   nlohmann::json* metrics, std::string* error) {
   nlohmann::ordered_json file = s.experiment;
   const uint64_t seed = objectives::ReplicateSeed(file.value("seed", uint64_t{1}), r);
@@ -84,7 +84,7 @@ bool RunReplicate(const ReproduceContext& ctx, const Scenario& s, int r, const s
   if (!WriteJsonFile(path, file, error)) return false;
   std::ostringstream log;
   ExperimentOptions options{.kind = "segregation", .params_path = path, .out_dir = dir,
-                            .replicates = 1, .quick = ctx.quick, .threads = 1, .quiet = true};
+                            .replicates = 1, .quick = ctx.quick, .threads = threads, .quiet = true};
   const int code = RunExperiment(options, log);
   nlohmann::json result;
   if (!ReadJsonFile(dir + "/result.json", "segregation result", &result, error)) {
@@ -127,14 +127,14 @@ bool RunSegregationStage(ReproduceContext& ctx, nlohmann::json* result, std::str
   std::mutex mutex;
   std::string first_error;
   const auto start = std::chrono::steady_clock::now();
-  auto worker = [&] {
-    for (size_t j; (j = next++) < jobs.size();) {
+  auto worker = [&](size_t end, int threads) {
+    for (size_t j; (j = next++) < end;) {
       const Scenario& s = scenarios[jobs[j].scenario];
       const int r = jobs[j].replicate;
       const std::string dir = ctx.StageDir("segregation") + "/" + s.name + "/r" + std::to_string(r);
       nlohmann::json metrics;
       std::string why;
-      bool ok = RunReplicate(ctx, s, r, dir, &metrics, &why) &&
+      bool ok = RunReplicate(ctx, s, r, threads, dir, &metrics, &why) &&
                 ctx.journal->Record("segregation/" + s.name + "/r" + std::to_string(r), metrics, &why);
       std::lock_guard lock(mutex);
       if (!ok && first_error.empty()) first_error = why;
@@ -146,12 +146,20 @@ bool RunSegregationStage(ReproduceContext& ctx, nlohmann::json* result, std::str
                  << std::lround(elapsed / n * (jobs.size() - n)) << " s\n" << std::flush;
     }
   };
-  const int workers = std::max(1, std::min<int>(ctx.threads > 0 ? ctx.threads
-                                                                : std::thread::hardware_concurrency(),
-                                                static_cast<int>(jobs.size())));
-  std::vector<std::thread> pool;
-  for (int i = 0; i < workers; ++i) pool.emplace_back(worker);
-  for (std::thread& t : pool) t.join();
+  // Heaps run one per core, single-threaded. When the heaps do not divide into full rounds, the
+  // odd ones go first, sharing all cores as simulation threads (results do not depend on the
+  // thread count): 3 heaps on 2 cores take one 2-thread heap and one 2-heap round, not two rounds
+  // of which the second leaves a core idle.
+  const int cores = std::max(1, ctx.threads > 0 ? ctx.threads : static_cast<int>(std::thread::hardware_concurrency()));
+  const size_t odd = jobs.size() % cores;
+  auto run_round = [&](size_t end, int workers, int threads) {
+    std::vector<std::thread> pool;
+    for (int i = 0; i < workers; ++i) pool.emplace_back(worker, end, threads);
+    for (std::thread& t : pool) t.join();
+  };
+  if (odd > 0) run_round(odd, static_cast<int>(odd), std::max(1, cores / static_cast<int>(odd)));
+  next = odd;  // a worker that found the first round empty still took an index
+  run_round(jobs.size(), std::min<int>(cores, static_cast<int>(jobs.size() - odd)), 1);
   if (!first_error.empty()) return *error = first_error, false;
   nlohmann::json per_scenario = nlohmann::json::object();
   for (const Scenario& s : scenarios) {

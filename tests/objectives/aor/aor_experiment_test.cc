@@ -136,3 +136,24 @@ TEST_CASE("aor: a clump feed species gets a glued base of spheres of its materia
   CHECK(scene.IsValid(&error));
   INFO(error);
 }
+
+TEST_CASE("replicates share idle cores as simulation threads, with the same heap bit for bit", "[dem]") {
+  CHECK(ThreadsPerReplicate(1, 2) == 2);
+  CHECK(ThreadsPerReplicate(2, 2) == 1);
+  CHECK(ThreadsPerReplicate(3, 2) == 1);
+  CHECK(ThreadsPerReplicate(3, 8) == 2);
+  CHECK(ThreadsPerReplicate(0, 4) == 4);
+  CHECK(ThreadsPerReplicate(1, 0) >= 1);  // 0: all cores
+  // core/simulation.h: every particle sums its contacts in serial order, so the thread count
+  // changes nothing in the result.
+  const core::Scene model = Model(0.5, 0.1, 0);
+  RunHooks two;
+  two.threads = 2;
+  const AorRun a = RunAor(model, SmallSlotHeap(), 5, {}), b = RunAor(model, SmallSlotHeap(), 5, two);
+  REQUIRE(a.ok());
+  REQUIRE(b.ok());
+  CHECK(a.angle.angle_deg == b.angle.angle_deg);
+  CHECK(a.settle.settle_time_s == b.settle.settle_time_s);
+  REQUIRE(a.heap.grains.size() == b.heap.grains.size());
+  for (size_t i = 0; i < a.heap.grains.size(); ++i) CHECK(a.heap.grains[i].position_m == b.heap.grains[i].position_m);
+}
