@@ -34,16 +34,23 @@ namespace demcal::calibrate {
 // The largest simulation noise (sem / measurement uncertainty) of a match: the simulation may
 // not be the less precise of the two numbers compared.
 inline constexpr double kMatchNoise = 1.0;
+// P(|z| ≤ 1) for a standard normal z: the confidence of "within noise" (1σ), in any number of
+// targets (TrialResult::WithinNoise).
+inline constexpr double kWithinNoiseProbability = 0.6826894921370859;
 
 // One candidate's answer. Thread-safety: a plain value.
 struct TrialResult {
   bool ok = false;                // false: the simulation gave no value here (infeasible)
   std::vector<double> residuals;  // (simulated − measured) / measurement uncertainty
   std::vector<double> noise;      // simulation standard error / measurement uncertainty
-  // Every residual within sqrt(1 + noise²) and every noise ≤ kMatchNoise: a match.
+  // The m residuals agree within noise jointly — Σ residual² / (1 + noise²) no larger than the
+  // χ²_m quantile at 68.27 %, the probability of |z| ≤ 1 — and every noise ≤ kMatchNoise: a
+  // match. For one target this is |residual| ≤ sqrt(1 + noise²), the 1σ rule; for m targets
+  // it keeps the same confidence (asking each of m targets to lie within its own 1σ would
+  // reject the true parameters with probability 1 − 0.68^m: 90 % for six targets).
   bool WithinNoise() const;
-  // Every residual within sqrt(1 + noise²), but some noise > kMatchNoise: more replicates
-  // would tell whether this is a match.
+  // Within noise jointly, but some noise > kMatchNoise: more replicates would tell whether this
+  // is a match.
   bool Inconclusive() const;
   double Cost() const;  // Σ residual²
 };

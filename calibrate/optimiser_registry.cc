@@ -1,6 +1,7 @@
 #include <cmath>
 #include <utility>
 
+#include "calibrate/chi_square.h"
 #include "calibrate/optimiser.h"
 
 namespace demcal::calibrate {
@@ -20,16 +21,22 @@ constexpr Entry kOptimisers[] = {
     {"differential_evolution", DifferentialEvolution},
 };
 
-// Every residual within sqrt(1 + noise²); `precise`: every noise ≤ kMatchNoise.
+// Σ residual² / (1 + noise²) within the χ²_m quantile at kWithinNoiseProbability (for m = 1:
+// |residual| ≤ sqrt(1 + noise²)); `precise`: every noise ≤ kMatchNoise.
 bool ResidualsWithinNoise(const TrialResult& t, bool* precise) {
   *precise = true;
   if (!t.ok) return false;
+  double chi2 = 0;
   for (size_t k = 0; k < t.residuals.size(); ++k) {
     const double n = k < t.noise.size() ? t.noise[k] : 0.0;
-    if (std::abs(t.residuals[k]) > std::sqrt(1 + n * n)) return false;
+    chi2 += t.residuals[k] * t.residuals[k] / (1 + n * n);
     *precise = *precise && n <= kMatchNoise;
   }
-  return true;
+  const size_t m = t.residuals.size();
+  if (m == 0) return true;
+  // One target: the 1σ rule exactly (the quantile's bisection would blur the boundary).
+  const double limit = m == 1 ? 1.0 : ChiSquareQuantile(kWithinNoiseProbability, static_cast<double>(m));
+  return chi2 <= limit;
 }
 
 }  // namespace

@@ -5,9 +5,11 @@
 #include <map>
 #include <set>
 
-#include "diagnose/gap/chi_square.h"
+#include "calibrate/chi_square.h"
 
 namespace demcal::diagnose {
+
+using calibrate::ChiSquareSurvival;
 namespace {
 
 // Slope of r on x: var(slope) = s² / Σ(x − x̄)² with s² the scatter about the line, never

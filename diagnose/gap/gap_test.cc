@@ -5,9 +5,13 @@
 #include <map>
 #include <sstream>
 
-#include "diagnose/gap/chi_square.h"
+#include "calibrate/chi_square.h"
 
 namespace demcal::diagnose {
+
+using calibrate::ChiSquareSurvival;
+using calibrate::ChiSquareQuantile;
+using calibrate::NormalTwoSidedQuantile;
 
 bool GapOptions::IsValid(std::string* error) const {
   if (significance > 0 && significance < 0.5) return true;

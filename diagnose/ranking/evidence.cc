@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "diagnose/gap/chi_square.h"
+#include "calibrate/chi_square.h"
 
 namespace demcal::diagnose {
+
+using calibrate::ChiSquareSurvival;
 
 Evidence EvidenceOf(double chi2_base, double chi2_effect, int k, int n, double significance) {
   Evidence e;

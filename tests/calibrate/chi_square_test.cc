@@ -1,9 +1,9 @@
-#include "diagnose/gap/chi_square.h"
+#include "calibrate/chi_square.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 
-namespace demcal::diagnose {
+namespace demcal::calibrate {
 
 // Reference values: the chi-square and normal tables (e.g. Abramowitz & Stegun 1964, Tables
 // 26.8 and 26.1): P(χ²_1 > 3.841) = 0.05, P(χ²_10 > 23.209) = 0.01, P(χ²_30 > 50.892) = 0.01.
@@ -22,4 +22,4 @@ TEST_CASE("chi-square quantile inverts the tail and the normal quantile is two-s
   CHECK(NormalTwoSidedQuantile(0.01) == Approx(2.575829).epsilon(1e-6));
 }
 
-}  // namespace demcal::diagnose
+}  // namespace demcal::calibrate

@@ -1,9 +1,9 @@
-#include "diagnose/gap/chi_square.h"
+#include "calibrate/chi_square.h"
 
 #include <cmath>
 #include <limits>
 
-namespace demcal::diagnose {
+namespace demcal::calibrate {
 namespace {
 
 constexpr double kEps = 1e-15;
@@ -67,4 +67,4 @@ double NormalTwoSidedQuantile(double alpha) {
   return std::sqrt(ChiSquareQuantile(1 - alpha, 1));
 }
 
-}  // namespace demcal::diagnose
+}  // namespace demcal::calibrate
