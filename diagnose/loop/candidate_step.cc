@@ -199,12 +199,12 @@ StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>
     for (size_t k = 0; k < probed[i].mean.size(); ++k) out.step.signatures[i][k] = probed[i].mean[k] - fit.prediction.mean[k];
   }
   out.step.ranking = RankCandidates(out.step.entries);
-  if (out.step.ranking.winner >= 0 && work[out.step.ranking.winner].simulated) {
+  if (const int top = out.step.ranking.winner; top >= 0 && work[top].simulated) {
     start = Clock::now();
     const int sims2 = model.SimulationsRun();
-    if (progress) progress("recalibrating the model with " + candidates[work[out.step.ranking.winner].candidate].key);
-    Recalibrate(model, f, fit, candidates, options.winner_refits, &work[out.step.ranking.winner]);
-    Record(f, work[out.step.ranking.winner], candidates, out.step.ranking.winner, &out.step);
+    if (progress) progress("recalibrating the model with " + candidates[work[top].candidate].key);
+    Recalibrate(model, f, fit, candidates, options.winner_refits, &work[top]);
+    Record(f, work[top], candidates, top, &out.step);
     out.step.ranking = RankCandidates(out.step.entries);
     out.phases.push_back({"recalibration", model.SimulationsRun() - sims2, Since(start)});
   }
