@@ -187,40 +187,4 @@ bool WriteCalibrationOutputs(const std::string& dir, const CalibrationRunInfo& i
          WriteCalibrationPlots(dir, *info.study, s, error);
 }
 
-ClumpCountRow ClumpCountRowOf(int count, const CalibrationSummary& s, double wall_per_run_s) {
-  ClumpCountRow row{count, s.termination, NAN, false, wall_per_run_s, s.replicates_run};
-  if (s.best >= 0) row.cost = s.candidates[s.best].trial.Cost(), row.within_noise = s.ok();
-  return row;
-}
-
-bool WriteClumpCountOutputs(const std::string& dir, const StudyFile& study, const std::vector<ClumpCountRow>& rows,
-                            int chosen, std::string* error) {
-  Json list = Json::array();
-  std::vector<int> matching;
-  for (const ClumpCountRow& r : rows) {
-    list.push_back({{"count", r.count}, {"termination", r.termination}, {"cost", Finite(r.cost)},
-                    {"within_noise", r.within_noise}, {"replicate_runs", r.runs},
-                    {"wall_per_run_s", r.wall_per_run_s}});
-    if (r.within_noise) matching.push_back(r.count);
-  }
-  std::string note = chosen > 0 ? "chose the smallest count that matches every target within noise"
-                                : "no count matched every target within noise";
-  if (matching.size() > 1) note += "; counts that all match are not told apart by these targets";
-  const Json j{{"format", "demcal-clump-count/1"}, {"species", study.clump_count.species},
-               {"semi_axes", {study.clump_count.semi_axes.x, study.clump_count.semi_axes.y,
-                              study.clump_count.semi_axes.z}},
-               {"chosen", chosen > 0 ? Json(chosen) : Json(nullptr)}, {"matching", matching},
-               {"note", note}, {"counts", list}};
-  if (!WriteJsonFile(dir + "/clump_count.json", j, error)) return false;
-  return objectives::WriteTextFile(
-      dir + "/clump_count.csv",
-      [&](std::ostream& out) {
-        out << "count,termination,cost,within_noise,replicate_runs,wall_per_run_s\n";
-        for (const ClumpCountRow& r : rows)
-          out << r.count << "," << r.termination << "," << r.cost << "," << (r.within_noise ? 1 : 0) << ","
-              << r.runs << "," << r.wall_per_run_s << "\n";
-      },
-      error);
-}
-
 }  // namespace demcal::workflow

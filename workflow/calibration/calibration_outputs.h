@@ -38,16 +38,4 @@ struct CalibrationRunInfo {
 bool WriteCalibrationOutputs(const std::string& dir, const CalibrationRunInfo& info,
                              const calibrate::CalibrationSummary& summary, std::string* error);
 
-struct ClumpCountRow {
-  int count = 0;
-  std::string termination;
-  double cost = 0;            // Σ standardised residual² at the best candidate (NaN: none)
-  bool within_noise = false;
-  double wall_per_run_s = 0;  // mean wall time of one replicate run (cost per heap)
-  int runs = 0;
-};
-ClumpCountRow ClumpCountRowOf(int count, const calibrate::CalibrationSummary& s, double wall_per_run_s);
-bool WriteClumpCountOutputs(const std::string& dir, const StudyFile& study,
-                            const std::vector<ClumpCountRow>& rows, int chosen, std::string* error);
-
 }  // namespace demcal::workflow

@@ -10,6 +10,7 @@
 #include "calibrate/parameter_covariance.h"
 #include "calibrate/response_surface.h"
 #include "workflow/calibration/calibration_outputs.h"
+#include "workflow/calibration/clump_count_table.h"
 #include "workflow/calibration/study_runs.h"
 #include "workflow/exit_codes.h"
 #include "workflow/outputs/output_lock.h"
@@ -176,29 +177,25 @@ Outcome CalibrateInto(const StudyFile& st, const CalibrateOptions& o, int clumps
   return out;
 }
 
-// The paper's section 2.4: calibrate at each clump count; keep the smallest count whose best
-// candidate matches every target within noise (counts that all match are not told apart by the
-// data: the table says so, and the smallest is the cheapest per heap).
+// The paper's section 2.4: calibrate at each clump count, then judge the table: the smallest
+// count that matches is chosen, and the counts the data do not exclude are named as not told
+// apart (JudgeClumpCounts).
 int RunClumpCountLoop(const StudyFile& st, const CalibrateOptions& o, std::ostream& log) {
   std::vector<ClumpCountRow> rows;
-  int chosen = -1;
   for (int n : st.clump_count.counts) {
     if (!o.quiet) log << "calibrate: clump count " << n << " (" << st.clump_count.species << ")\n";
     const Outcome r = CalibrateInto(st, o, n, o.out_dir + "/clumps_" + std::to_string(n), log);
     if (r.exit_code == kExitInvalidInput || r.exit_code == kExitOutputError) return r.exit_code;
     rows.push_back(ClumpCountRowOf(n, r.summary, r.wall_per_run_s));
-    if (r.summary.ok() && chosen < 0) chosen = n;  // the smallest count that matches
-
   }
+  const ClumpCountVerdict verdict = JudgeClumpCounts(rows);
   std::string error;
-  if (!WriteClumpCountOutputs(o.out_dir, st, rows, chosen, &error)) {
+  if (!WriteClumpCountOutputs(o.out_dir, st, rows, verdict, &error)) {
     log << "error: " << error << "\n";
     return kExitOutputError;
   }
-  if (!o.quiet)
-    log << "calibrate: clump count: " << (chosen > 0 ? "chose " + std::to_string(chosen) : "no count matched")
-        << " (clump_count.csv)\n";
-  return chosen > 0 ? kExitOk : kExitRunFailed;
+  if (!o.quiet) log << "calibrate: clump count: " << verdict.note << " (clump_count.csv)\n";
+  return verdict.chosen > 0 ? kExitOk : kExitRunFailed;
 }
 
 }  // namespace
