@@ -71,6 +71,8 @@ bool WallContacts::CheckRestored(size_t particles, size_t first_fixed,
   if (!ValidRows(start_, particles, entries) || history_.size() != entries ||
       active_.size() != entries || mesh_slots_.size() != entries || load_.size() != entries)
     return Fail("wall contacts: candidate rows do not match the particles", error);
+  if (!ValidRows(mesh_near_start_, mesh_history_.size(), mesh_near_.size()))
+    return Fail("wall contacts: near-triangle rows do not match the mesh candidates", error);
   uint32_t meshes = 0;
   for (size_t i = 0; i < particles; ++i) {
     if (i >= first_fixed && start_[i] != start_[i + 1])
@@ -89,6 +91,10 @@ bool WallContacts::CheckRestored(size_t particles, size_t first_fixed,
                     error);
       if (!Finite(history_[e]) || !IsFinite(load_[e].force_N) || !IsFinite(load_[e].moment_N_m))
         return Fail(at + "non-finite contact history or load", error);
+      if (mesh && !NearTrianglesFit(mesh_slots_[e], walls[index_[e]]))
+        return Fail(at + "near triangles outside mesh wall " + std::to_string(index_[e]) +
+                        " (or not ascending)",
+                    error);
     }
   }
   if (mesh_history_.size() != meshes)
@@ -100,6 +106,19 @@ bool WallContacts::CheckRestored(size_t particles, size_t first_fixed,
                   error);
     for (uint32_t s = 0; s < m.count; ++s)
       if (!Finite(m.slot[s].history)) return Fail("wall contacts: non-finite mesh history", error);
+  }
+  return true;
+}
+
+bool WallContacts::NearTrianglesFit(uint32_t slot, const Wall& wall) const {
+  if (slot + 1 >= mesh_near_start_.size()) return false;
+  const auto& mesh = std::get<MeshRef>(wall.shape).mesh;
+  if (!mesh) return false;
+  const int64_t triangles = static_cast<int64_t>(mesh->NumTriangles());
+  int64_t previous = -1;
+  for (uint32_t k = mesh_near_start_[slot]; k < mesh_near_start_[slot + 1]; ++k) {
+    if (mesh_near_[k] <= previous || mesh_near_[k] >= triangles) return false;
+    previous = mesh_near_[k];
   }
   return true;
 }

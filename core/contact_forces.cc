@@ -190,10 +190,10 @@ void ContactForces::Compute(Particles& p, const NeighbourList& list,
 
 void ContactForces::Rebuild(const Particles& p, const NeighbourList& old_list,
                             const NeighbourList& new_list, const std::vector<uint32_t>& order,
-                            const std::vector<Wall>& walls, double skin_m) {
+                            const std::vector<Wall>& walls, double skin_m, double adhesive_gap_m) {
   RemapPairs(old_list, new_list, order);
   plan_stale_ = true;
-  walls_.Rebuild(p, order, walls, skin_m, new_list.FirstFixed());
+  walls_.Rebuild(p, order, walls, skin_m, new_list.FirstFixed(), adhesive_gap_m);
 }
 
 void ContactForces::RemapPairs(const NeighbourList& old_list, const NeighbourList& new_list,

@@ -39,10 +39,11 @@ class ContactForces {
   // Called after every neighbour-list rebuild: carries pair histories over to the new list and
   // lists, per moving particle, the walls within its radius + skin (moving walls always), keeping
   // their histories. `order[new_slot] = old_slot` describes a particle permutation applied together
-  // with the rebuild (identity if empty).
+  // with the rebuild (identity if empty). adhesive_gap_m: the largest JKR break gap of the scene
+  // (an adhesive contact reaches that far beyond touching; WallContacts::Rebuild).
   void Rebuild(const Particles& p, const NeighbourList& old_list, const NeighbourList& new_list,
                const std::vector<uint32_t>& order, const std::vector<Wall>& walls,
-               double skin_m);
+               double skin_m, double adhesive_gap_m = 0);
 
   // Hertz elastic energy stored in the overlapping particle pairs, (8/15) E* sqrt(R*) δ^{5/2}
   // summed (J): the energy initial overlaps will release, for the blow-up check's budget.

@@ -70,6 +70,7 @@ bool Simulation::Initialize(std::string* error) {
   adhesive_ = false;
   for (const PairParameters& pair : scene_.pair_parameters)
     adhesive_ = adhesive_ || pair.interfacial_energy_J_m2 > 0;
+  adhesive_gap_m_ = MaxAdhesiveBreakGap(scene_);
   PeriodicBox box{scene_.domain_min_m, {}};
   for (int a = 0; a < 3; ++a)
     if (scene_.periodic[a]) box.length_m[a] = scene_.domain_max_m[a] - scene_.domain_min_m[a];
@@ -225,7 +226,7 @@ void Simulation::RebuildNeighbours(bool allow_reorder, const std::vector<uint32_
                  options_.neighbour_refresh_fraction);
   else
     list_.Build(list_settings_, p.position_m, p.radius_m, body, moving);
-  forces_.Rebuild(p, spare_list_, list_, order, walls_, list_settings_.skin_m);
+  forces_.Rebuild(p, spare_list_, list_, order, walls_, list_settings_.skin_m, adhesive_gap_m_);
 }
 
 void Simulation::PlaceWalls(double time_s) {

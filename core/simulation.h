@@ -168,6 +168,7 @@ class Simulation {
   double energy_scale_J_ = 0;    // energy that gravity and the initial state can release
   Vec3 lowest_point_;            // of the domain along gravity
   bool adhesive_ = false;  // some pair has Γ > 0: use the JKR normal model
+  double adhesive_gap_m_ = 0;  // the largest JKR break gap (MaxAdhesiveBreakGap)
   JkrRollingLoad jkr_rolling_load_ = JkrRollingLoad::kNet;
   bool initialized_ = false;
 };

@@ -40,12 +40,10 @@ void TriangleGrid::Build(const std::vector<Vec3>& lo, const std::vector<Vec3>& h
   cell_m_ = cell;
   inv_cell_ = 1.0 / cell;
   origin_ = box_lo;
-  for (int a = 0; a < 3; ++a) {
-    dims_[a] = static_cast<int>(std::max(1.0, std::ceil(size[a] / cell)));
-    extent_hi_[a] = origin_[a] + dims_[a] * cell;
-  }
-  extent_hi_ = {std::max(extent_hi_.x, box_hi.x), std::max(extent_hi_.y, box_hi.y),
-                std::max(extent_hi_.z, box_hi.z)};
+  for (int a = 0; a < 3; ++a) dims_[a] = static_cast<int>(std::max(1.0, std::ceil(size[a] / cell)));
+  // The boxes' own upper corner, not the last cell's: a query above a flat mesh (one cell thick,
+  // a cell being a triangle long) then visits nothing instead of every triangle of the layer.
+  extent_hi_ = box_hi;
 
   // Two passes: count the entries per cell, then fill the compressed rows.
   const size_t cells = static_cast<size_t>(dims_[0]) * dims_[1] * dims_[2];

@@ -27,7 +27,8 @@ class TriangleGrid {
   void Build(const std::vector<Vec3>& lo, const std::vector<Vec3>& hi, double cell_m);
 
   // Calls visit(item) once for each box that overlaps [lo, hi] in at least one shared cell
-  // (a superset of the boxes that truly overlap it; every such box is visited).
+  // (a superset of the boxes that truly overlap it; every such box is visited); nothing when
+  // [lo, hi] lies outside the bounding box of all boxes.
   template <class Visit>
   void ForEachInBox(const Vec3& lo, const Vec3& hi, Visit&& visit) const;
 
@@ -47,7 +48,7 @@ class TriangleGrid {
                (static_cast<size_t>(y) + static_cast<size_t>(dims_[1]) * z);
   }
 
-  Vec3 origin_, extent_hi_;
+  Vec3 origin_, extent_hi_;  // the boxes' bounding box
   double cell_m_ = 1, inv_cell_ = 1;
   std::array<int, 3> dims_{1, 1, 1};
   std::vector<uint32_t> cell_start_{0};
@@ -59,7 +60,7 @@ template <class Visit>
 void TriangleGrid::ForEachInBox(const Vec3& lo, const Vec3& hi, Visit&& visit) const {
   if (item_lo_cell_.empty() || !IsFinite(lo) || !IsFinite(hi)) return;
   for (int a = 0; a < 3; ++a) {
-    if (hi[a] < origin_[a] || lo[a] > extent_hi_[a]) return;  // no shared cell
+    if (hi[a] < origin_[a] || lo[a] > extent_hi_[a]) return;  // outside every box
   }
   const int x0 = Clamp(0, lo.x), x1 = Clamp(0, hi.x);
   const int y0 = Clamp(1, lo.y), y1 = Clamp(1, hi.y);

@@ -89,9 +89,19 @@ class TriangleMesh {
   // radius that is not finite, or radius <= 0, gives no contacts.
   void SphereContacts(const Vec3& centre_m, double radius_m, std::vector<MeshContact>& out) const;
 
+  // The same, looking only at `near` (ascending triangle indices, as NearTriangles gives them):
+  // the contacts of a sphere whose every triangle within radius_m is listed. A static wall keeps
+  // each particle's near triangles from one neighbour rebuild to the next (WallContacts), so the
+  // force pass tests two or three triangles instead of every one the grid cells hold.
+  void SphereContacts(const Vec3& centre_m, double radius_m, std::span<const int32_t> near,
+                      std::vector<MeshContact>& out) const;
+
   // Clears `out` and fills it with the triangles whose bounding boxes overlap the sphere's box,
   // in ascending order (the broad phase of SphereContacts).
   void CandidateTriangles(const Vec3& centre_m, double radius_m, std::vector<int32_t>& out) const;
+  // Clears `out` and fills it with the triangles whose closest point lies within reach_m of the
+  // centre (plus rounding), in ascending order.
+  void NearTriangles(const Vec3& centre_m, double reach_m, std::vector<int32_t>& out) const;
 
   // Moves the whole mesh rigidly (O(1)); contacts and vertices are reported in the new place.
   void Translate(const Vec3& displacement_m) { offset_ += displacement_m; }
@@ -136,6 +146,10 @@ class TriangleMesh {
   // Candidate → closest point with its feature; false if out of reach or outside its cone.
   bool TriangleCandidate(int32_t t, const Vec3& centre, double radius, double tolerance,
                          MeshContact* contact, bool* in_cone) const;
+  // SphereContacts over the triangles for_each_candidate(visit) visits (mesh coordinates).
+  template <class ForEachCandidate>
+  void CollectContacts(const Vec3& c, double radius, ForEachCandidate&& for_each_candidate,
+                       std::vector<MeshContact>& out) const;
   // Drops features already reported by a neighbour, then maps to patches and world coordinates.
   void ApplyContactRules(const Vec3& centre, double radius, std::vector<MeshContact>& out) const;
 

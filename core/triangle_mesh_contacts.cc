@@ -82,17 +82,15 @@ bool TriangleMesh::TriangleCandidate(int32_t t, const Vec3& c, double radius, do
   return true;
 }
 
-void TriangleMesh::SphereContacts(const Vec3& centre_m, double radius_m,
-                                  std::vector<MeshContact>& out) const {
-  out.clear();
-  if (!IsFinite(centre_m) || !std::isfinite(radius_m) || !(radius_m > 0)) return;
-  const Vec3 c = centre_m - offset_;
+template <class ForEachCandidate>
+void TriangleMesh::CollectContacts(const Vec3& c, double radius_m,
+                                   ForEachCandidate&& for_each_candidate,
+                                   std::vector<MeshContact>& out) const {
   const double tolerance = kConeTolerance * radius_m + kRoundoff * length_scale_m_;
-  const Vec3 reach{radius_m, radius_m, radius_m};
   // The nearest candidate that failed its cone test: in exact arithmetic the nearest point of
   // the mesh always passes, so this only guards against losing a contact to rounding.
   MeshContact fallback;
-  grid_.ForEachInBox(c - reach, c + reach, [&](uint32_t item) {
+  for_each_candidate([&](uint32_t item) {
     MeshContact m;
     bool in_cone = false;
     if (!TriangleCandidate(static_cast<int32_t>(item), c, radius_m, tolerance, &m, &in_cone)) {
@@ -109,6 +107,29 @@ void TriangleMesh::SphereContacts(const Vec3& centre_m, double radius_m,
     out.push_back(fallback);
   }
   ApplyContactRules(c, radius_m, out);
+}
+
+void TriangleMesh::SphereContacts(const Vec3& centre_m, double radius_m,
+                                  std::vector<MeshContact>& out) const {
+  out.clear();
+  if (!IsFinite(centre_m) || !std::isfinite(radius_m) || !(radius_m > 0)) return;
+  const Vec3 c = centre_m - offset_;
+  const Vec3 reach{radius_m, radius_m, radius_m};
+  CollectContacts(
+      c, radius_m, [&](auto&& visit) { grid_.ForEachInBox(c - reach, c + reach, visit); }, out);
+}
+
+void TriangleMesh::SphereContacts(const Vec3& centre_m, double radius_m,
+                                  std::span<const int32_t> near,
+                                  std::vector<MeshContact>& out) const {
+  out.clear();
+  if (!IsFinite(centre_m) || !std::isfinite(radius_m) || !(radius_m > 0)) return;
+  CollectContacts(
+      centre_m - offset_, radius_m,
+      [&](auto&& visit) {
+        for (int32_t t : near) visit(static_cast<uint32_t>(t));
+      },
+      out);
 }
 
 void TriangleMesh::ApplyContactRules(const Vec3& c, double radius,
@@ -199,6 +220,17 @@ void TriangleMesh::CandidateTriangles(const Vec3& centre_m, double radius_m,
                        out.push_back(static_cast<int32_t>(item));
                      });
   std::sort(out.begin(), out.end());
+}
+
+void TriangleMesh::NearTriangles(const Vec3& centre_m, double reach_m,
+                                 std::vector<int32_t>& out) const {
+  CandidateTriangles(centre_m, reach_m, out);
+  const Vec3 c = centre_m - offset_;
+  const double limit = reach_m + kConeTolerance * reach_m + kRoundoff * length_scale_m_;
+  std::erase_if(out, [&](int32_t t) {
+    const Tri& tri = tri_[t];
+    return Norm2(c - ClosestPointOnTriangle(c, tri.v[0], tri.v[1], tri.v[2]).point_m) > limit * limit;
+  });
 }
 
 }  // namespace demcal::core

@@ -6,9 +6,10 @@
 namespace demcal::core {
 namespace {
 
-// Whether a static wall can touch the sphere before the next rebuild (gap below the skin).
+// Whether a static wall can touch the sphere before the next rebuild (gap below the skin). For a
+// mesh, `triangles` receives the near ones, within the skin plus the adhesive break gap.
 bool WithinSkin(const Wall& wall, const Vec3& x, double radius, double skin_m,
-                std::vector<int32_t>& triangles) {
+                double adhesive_gap_m, std::vector<int32_t>& triangles) {
   if (const auto* plane = std::get_if<PlaneSurface>(&wall.shape))
     return Dot(x - plane->point_m, plane->normal) - radius <= skin_m;
   if (const auto* cylinder = std::get_if<CylinderSurface>(&wall.shape))
@@ -16,7 +17,7 @@ bool WithinSkin(const Wall& wall, const Vec3& x, double radius, double skin_m,
   if (const auto* cone = std::get_if<ConeFrustumSurface>(&wall.shape))
     return ShellSide(wall, ClosestOnConeFrustum(*cone, x)).distance_m - radius <= skin_m;
   const MeshRef& mesh = std::get<MeshRef>(wall.shape);
-  mesh.mesh->CandidateTriangles(x - mesh.offset_m, radius + skin_m, triangles);
+  mesh.mesh->NearTriangles(x - mesh.offset_m, radius + skin_m + adhesive_gap_m, triangles);
   return !triangles.empty();
 }
 
@@ -28,12 +29,14 @@ void WallContacts::SetVelocities(const std::vector<Wall>& walls, double time_s) 
 }
 
 void WallContacts::Rebuild(const Particles& p, const std::vector<uint32_t>& order,
-                           const std::vector<Wall>& walls, double skin_m, size_t first_fixed) {
+                           const std::vector<Wall>& walls, double skin_m, size_t first_fixed,
+                           double adhesive_gap_m) {
   const size_t n = p.Size();
   const size_t moving = std::min(n, first_fixed);
   auto old_slot = [&](size_t s) { return order.empty() ? s : order[s]; };
   const size_t old_n = start_.size() - 1;  // particles appended since keep no history
-  std::vector<uint32_t> start(n + 1, 0), index, mesh_slots;
+  std::vector<uint32_t> start(n + 1, 0), index, mesh_slots, near_start{0};
+  std::vector<int32_t> near;
   std::vector<ContactHistory> history;
   std::vector<uint8_t> active;
   std::vector<MeshHistory> mesh_history;
@@ -42,7 +45,9 @@ void WallContacts::Rebuild(const Particles& p, const std::vector<uint32_t>& orde
     for (uint32_t w = 0; i < moving && w < walls.size(); ++w) {
       const Wall& wall = walls[w];
       if (wall.removed) continue;
-      if (!wall.Moves() && !WithinSkin(wall, p.position_m[i], p.radius_m[i], skin_m, triangles))
+      triangles.clear();
+      if (!wall.Moves() &&
+          !WithinSkin(wall, p.position_m[i], p.radius_m[i], skin_m, adhesive_gap_m, triangles))
         continue;
       const bool is_mesh = std::holds_alternative<MeshRef>(wall.shape);
       ContactHistory h;
@@ -61,7 +66,11 @@ void WallContacts::Rebuild(const Particles& p, const std::vector<uint32_t>& orde
       history.push_back(h);
       active.push_back(on);
       mesh_slots.push_back(is_mesh ? static_cast<uint32_t>(mesh_history.size()) : kNoMesh);
-      if (is_mesh) mesh_history.push_back(m);
+      if (is_mesh) {
+        mesh_history.push_back(m);
+        near.insert(near.end(), triangles.begin(), triangles.end());
+        near_start.push_back(static_cast<uint32_t>(near.size()));
+      }
     }
     start[i + 1] = static_cast<uint32_t>(index.size());
   }
@@ -71,6 +80,8 @@ void WallContacts::Rebuild(const Particles& p, const std::vector<uint32_t>& orde
   active_.swap(active);
   mesh_slots_.swap(mesh_slots);
   mesh_history_.swap(mesh_history);
+  mesh_near_start_.swap(near_start);
+  mesh_near_.swap(near);
   load_.resize(index_.size());
 }
 

@@ -3,8 +3,13 @@
 // candidate walls (compressed rows, rebuilt with the neighbour list) and, per candidate, the
 // contact history: one ContactHistory for a plane, cylinder or cone (one contact point), and a
 // small fixed array of {feature key, history} for a mesh, where a sphere may touch several faces,
-// edges and vertices at once (each its own contact, keyed by MeshContact::Key()). It also keeps
-// what each candidate exerted on its wall in the last step, for WallLoads().
+// edges and vertices at once (each its own contact, keyed by MeshContact::Key()). A static mesh
+// candidate also keeps the triangles near the particle (TriangleMesh::NearTriangles within
+// radius + skin + the adhesive break gap at the rebuild): the particle moves less than a skin
+// before the next rebuild (neighbour_list_update.cc), so no other triangle can touch it, and the
+// force pass tests those few instead of every triangle in the mesh grid's cells (on a silo
+// bottom of long fan triangles that was more than half the force pass). It also keeps what each
+// candidate exerted on its wall in the last step, for WallLoads().
 //
 // Hot loop: Sum() is a header template inlined per particle into the force sweep; it branches
 // on the shape kind (no virtual call), inlines the plane/cylinder/cone contact and allocates
@@ -46,8 +51,10 @@ class WallContacts {
   // Lists per particle the walls within its radius + skin (moving walls always), keeping the
   // histories of candidates that persist. `order[new_slot] = old_slot` (identity if empty).
   // Slots from `first_fixed` on (fixed spheres) get no candidates: they are not swept.
+  // adhesive_gap_m: how far beyond touching an adhesive contact lasts (mesh near triangles).
   void Rebuild(const Particles& p, const std::vector<uint32_t>& order,
-               const std::vector<Wall>& walls, double skin_m, size_t first_fixed = SIZE_MAX);
+               const std::vector<Wall>& walls, double skin_m, size_t first_fixed = SIZE_MAX,
+               double adhesive_gap_m = 0);
 
   // Force and torque on each wall in the last force pass (about each wall's load point).
   std::vector<WallLoad> Loads(const Particles& p, const std::vector<Wall>& walls) const;
@@ -58,6 +65,7 @@ class WallContacts {
   void Serialize(A& a) {
     a.Vector(start_), a.Vector(index_), a.Vector(history_), a.Vector(active_);
     a.Vector(mesh_slots_), a.Vector(mesh_history_), a.Vector(load_);
+    a.Vector(mesh_near_start_), a.Vector(mesh_near_);
   }
 
   // After a checkpoint load: rows, wall indices and histories fit the particles and walls.
@@ -79,13 +87,16 @@ class WallContacts {
     Vec3 moment_N_m;
   };
   static constexpr uint32_t kNoMesh = ~uint32_t{0};
+  // Mesh candidate `slot`'s near triangles exist in `wall`'s mesh, ascending (CheckRestored).
+  bool NearTrianglesFit(uint32_t slot, const Wall& wall) const;
 
   template <class Model>
   void SumOne(const Particles& p, uint32_t i, uint32_t e, const Vec3& wall_velocity,
               const Vec3& normal, double overlap, const ResolvedPair& pair, const Model& model,
               double dt, Vec3& fi, Vec3& ti);
+  // `moving`: the mesh moves, so its contacts come from its grid, not the near triangles.
   template <class Model>
-  void SumMesh(const Particles& p, uint32_t i, uint32_t e, const MeshRef& mesh,
+  void SumMesh(const Particles& p, uint32_t i, uint32_t e, const MeshRef& mesh, bool moving,
                const Vec3& wall_velocity, const ResolvedPair& pair, const Model& model, double dt,
                std::vector<MeshContact>& scratch, Vec3& fi, Vec3& ti);
 
@@ -96,6 +107,10 @@ class WallContacts {
   std::vector<uint8_t> active_;          // contacts active last pass (mesh: how many)
   std::vector<uint32_t> mesh_slots_;     // mesh candidates: index into mesh_history_
   std::vector<MeshHistory> mesh_history_;
+  // Near triangles of mesh candidate s (index into mesh_history_): mesh_near_[mesh_near_start_[s]
+  // .. mesh_near_start_[s + 1]), ascending; empty for a moving mesh.
+  std::vector<uint32_t> mesh_near_start_{0};
+  std::vector<int32_t> mesh_near_;
   std::vector<Load> load_;  // valid where active_
   std::vector<Vec3> velocity_;  // per wall, this pass
 };
@@ -147,7 +162,7 @@ DEMCAL_HOT_INLINE void WallContacts::SumOne(const Particles& p, uint32_t i, uint
 
 template <class Model>
 void WallContacts::SumMesh(const Particles& p, uint32_t i, uint32_t e, const MeshRef& mesh,
-                           const Vec3& wall_velocity, const ResolvedPair& pair,
+                           bool moving, const Vec3& wall_velocity, const ResolvedPair& pair,
                            const Model& model, double dt, std::vector<MeshContact>& scratch,
                            Vec3& fi, Vec3& ti) {
   const double radius = p.radius_m[i];
@@ -158,8 +173,15 @@ void WallContacts::SumMesh(const Particles& p, uint32_t i, uint32_t e, const Mes
       reach = Model::Normal::BreakGap(radius, pair.effective_youngs_Pa,
                                       pair.interfacial_energy_J_m2);
   }
-  mesh.mesh->SphereContacts(p.position_m[i] - mesh.offset_m, radius + reach, scratch);
-  MeshHistory& old = mesh_history_[mesh_slots_[e]];
+  const uint32_t slot = mesh_slots_[e];
+  if (moving) {
+    mesh.mesh->SphereContacts(p.position_m[i] - mesh.offset_m, radius + reach, scratch);
+  } else {
+    const std::span<const int32_t> near(mesh_near_.data() + mesh_near_start_[slot],
+                                        mesh_near_start_[slot + 1] - mesh_near_start_[slot]);
+    mesh.mesh->SphereContacts(p.position_m[i] - mesh.offset_m, radius + reach, near, scratch);
+  }
+  MeshHistory& old = mesh_history_[slot];
   MeshHistory now;
   Load load;
   uint32_t evaluated = 0;
@@ -205,8 +227,8 @@ DEMCAL_HOT_INLINE void WallContacts::Sum(const Particles& p, uint32_t i, const s
       SumOne(p, i, e, velocity_[w], near.normal, p.radius_m[i] - near.distance_m, pair, model, dt,
              fi, ti);
     } else {
-      SumMesh(p, i, e, std::get<MeshRef>(wall.shape), velocity_[w], pair, model, dt, scratch, fi,
-              ti);
+      SumMesh(p, i, e, std::get<MeshRef>(wall.shape), wall.Moves(), velocity_[w], pair, model, dt,
+              scratch, fi, ti);
     }
   }
 }

@@ -72,7 +72,9 @@ void ParseCondition(const nlohmann::json& value, const std::string& path, calibr
   for (const auto& [column, cell] : value.items()) {
     if (cell.is_number() && std::isfinite(cell.get<double>())) (*out)[column] = cell.dump();
     else if (cell.is_string() && !cell.get<std::string>().empty()) (*out)[column] = cell.get<std::string>();
-    else return status->Fail("'" + JoinPath(path, column) + "' must be a number or a non-empty string");
+    // (append, not "'" + string: GCC 12 gives a false -Wrestrict on that operator+)
+    else return status->Fail(std::string("'").append(JoinPath(path, column))
+                                 .append("' must be a number or a non-empty string"));
   }
 }
 
