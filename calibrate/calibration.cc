@@ -9,6 +9,7 @@
 
 #include "calibrate/jacobian_svd.h"
 #include "calibrate/parameter_covariance.h"
+#include "calibrate/sensitivity_refinement.h"
 
 namespace demcal::calibrate {
 namespace {
@@ -69,6 +70,8 @@ std::string Validate(const ParameterSpace& space, const std::vector<Target>& tar
   if (!options.optimiser_options.IsValid(&error)) return error;
   if (options.max_replicate_factor < 1 || options.max_replicate_factor > 100)
     return "max_replicate_factor: must be in [1, 100]";
+  if (options.sensitivity_rounds < 0 || options.sensitivity_rounds > 10)
+    return "sensitivity_rounds: must be in [0, 10]";
   if (!options.response_surface.IsValid(&error)) return "response_surface." + error;
   return "";
 }
@@ -110,8 +113,9 @@ void Analyse(const ParameterSpace& space, const std::vector<Target>& targets,
   const double floor = JacobianNoiseFloor(s->jacobian_sigma);
   s->identifiability = AnalyseIdentifiability(s->jacobian, names, scale, floor);
   ParameterCovariance c = CovarianceFromJacobian(s->jacobian, scale, floor);
+  // Ceres' covariance comes from its own stencil: not once refinement points sharpened J.
   const bool ceres_cov = r.covariance_unit.size() == n * n && c.rank == static_cast<int>(n) &&
-                         r.best_unit == best.unit;
+                         r.best_unit == best.unit && s->refinement_points == 0;
   if (ceres_cov) {
     c = CovarianceFromUnit(Eigen::Map<const Eigen::MatrixXd>(r.covariance_unit.data(), n, n),
                            scale);
@@ -119,12 +123,45 @@ void Analyse(const ParameterSpace& space, const std::vector<Target>& targets,
   } else {
     c.note += " (" + surface.message + ")";
   }
+  if (s->refinement_points > 0)
+    c.note += "; " + std::to_string(s->refinement_points) +
+              " refinement candidates around the best sharpened the sensitivities";
   s->covariance_note = c.note;
   s->covariance = c.covariance;
   s->correlation = c.correlation;
   for (size_t k = 0; k < n; ++k) {
     s->estimates[k].sigma = c.sigma[k];
     s->estimates[k].identifiable = c.identifiable[k];
+  }
+}
+
+// Sensitivity refinement (sensitivity_refinement.h): stencil rounds around the best while some σ
+// is +∞, the targets are at least as many as the parameters and the budget allows.
+template <class Batch>
+void RefineSensitivities(Batch& batch, const ParameterSpace& space,
+                         const std::vector<Target>& targets, const CalibrationOptions& options,
+                         const OptimiserResult& r, CalibrationSummary* s) {
+  if (targets.size() < space.Size()) return;  // a valley no stencil can lift
+  for (int round = 0; round < options.sensitivity_rounds; ++round) {
+    CalibrationSummary probe;
+    probe.candidates = s->candidates;
+    probe.best = s->best;
+    probe.refinement_points = s->refinement_points;
+    Analyse(space, targets, options, r, &probe);
+    const bool all_finite =
+        probe.jacobian.size() > 0 &&
+        std::all_of(probe.estimates.begin(), probe.estimates.end(),
+                    [](const ParameterEstimate& e) { return std::isfinite(e.sigma); });
+    if (all_finite) return;
+    const Candidate& best = s->candidates[s->best];
+    double noise_max = 0;
+    for (double noise : best.trial.noise) noise_max = std::max(noise_max, noise);
+    const std::vector<std::vector<double>> units = RefinementStencil(best.unit, noise_max, round);
+    if (units.empty() || s->candidates.size() + units.size() >
+                             static_cast<size_t>(options.optimiser_options.max_evaluations))
+      return;
+    batch(units);  // appends to s->candidates: `best` is not used after this
+    s->refinement_points += static_cast<int>(units.size());
   }
 }
 
@@ -181,7 +218,10 @@ CalibrationSummary Calibrate(CandidateEvaluator& evaluator, const ParameterSpace
     if (c.trial.ok && (!any_within || c.trial.WithinNoise()) &&
         (s.best < 0 || c.trial.Cost() < s.candidates[s.best].trial.Cost()))
       s.best = c.index;
-  if (s.best >= 0) Analyse(space, targets, options, r, &s);
+  if (s.best >= 0) {
+    RefineSensitivities(batch, space, targets, options, r, &s);
+    Analyse(space, targets, options, r, &s);
+  }
   return s;
 }
 

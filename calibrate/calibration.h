@@ -40,6 +40,9 @@ struct CalibrationOptions {
   // at most this multiple of the replicates it had (1: never). Such a candidate is no match
   // until then: it would be "within noise" of almost anything.
   int max_replicate_factor = 4;
+  // Rounds of sensitivity refinement (sensitivity_refinement.h) when a parameter ends with
+  // σ = +∞ although the targets are at least as many as the parameters; in [0, 10].
+  int sensitivity_rounds = 2;
 };
 
 // One candidate the optimiser asked for.
@@ -86,6 +89,7 @@ struct CalibrationSummary {
   IdentifiabilityReport identifiability;
   int replicates_run = 0;
   int replicates_reused = 0;  // found in the journal (resumed work)
+  int refinement_points = 0;  // candidates added after the optimiser to sharpen J (also in candidates)
   std::string journal_error;  // first failure to write the journal ("" if none)
 
   bool ok() const { return best >= 0 && termination == "within_noise"; }

@@ -41,14 +41,11 @@
 
 #include "calibrate/jacobian_svd.h"
 #include "calibrate/optimiser.h"
+#include "calibrate/sensitivity_refinement.h"
 
 namespace demcal::calibrate {
 namespace {
 
-constexpr double kMinSensitivity = 3.4641016151377544;  // sqrt(12)
-constexpr double kSignalToNoise = 4;
-constexpr double kMinStep = 0.01;
-constexpr double kMaxStep = 0.25;
 
 // The candidates asked so far, the budget and the best; shared by the cost function and the
 // callback of one run.
@@ -249,7 +246,7 @@ OptimiserResult CeresOptimise(const BatchTrialFunction& trial,
     weights.push_back(1 / std::sqrt(1 + noise * noise));
     noise_max = std::max(noise_max, noise);
   }
-  const double step = std::clamp(kSignalToNoise * noise_max / kMinSensitivity, kMinStep, kMaxStep);
+  const double step = FiniteDifferenceStep(noise_max);
 
   ceres::Problem problem;
   auto* cost = new FiniteDifferenceCost(&trials, weights, step, n,

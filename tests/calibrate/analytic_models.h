@@ -47,6 +47,9 @@ class LinearTargets final : public CandidateEvaluator {
   std::vector<double> sem;                 // reported simulation sem per target
   uint64_t seed = 1;                       // the simulation-noise offsets
   double nan_above = 1e300;                // theta[0] above this: the mean is NaN (a bug upstream)
+  // true: each candidate draws its own noise (independent runs, as without common random
+  // numbers), so finite differences of the means are noisy too.
+  bool independent_noise = false;
   std::vector<size_t> batch_sizes;
 
   double Exact(size_t k, const std::vector<double>& theta) const {
@@ -59,9 +62,12 @@ class LinearTargets final : public CandidateEvaluator {
     std::vector<CandidateResult> out;
     for (const auto& theta : p) {
       CandidateResult c;
+      uint64_t stream = seed;
+      if (independent_noise)
+        for (double t : theta) stream = stream * 1099511628211ull + static_cast<uint64_t>(std::llround(t * 1e9));
       for (size_t k = 0; k < offset.size(); ++k)
         c.targets.push_back(
-            {Exact(k, theta) + sem[k] * Normal(seed, static_cast<int>(k)), sem[k], 3});
+            {Exact(k, theta) + sem[k] * Normal(stream, static_cast<int>(k)), sem[k], 3});
       if (theta[0] > nan_above) c.targets[0].mean = std::nan("");
       c.replicates_run = 3;
       out.push_back(c);
