@@ -65,7 +65,9 @@ TEST_CASE("response surface fits a quadratic when it has twice its coefficients"
     return std::vector<double>{3 * (u[0] - 0.2) * (u[0] - 0.2) + u[0] * u[1]};
   };
   std::vector<Sample> samples = Cloud(12, {0.55, 0.55}, 0.0, 4, quad);  // off-centre cloud
-  const ResponseSurface q = FitResponseSurface(samples, {0.5, 0.5});
+  // Noise-free runs: the noise floor is the only noise the curvature test sees. At the default
+  // 0.01 this curvature lowers χ² by 6.7 (< 7.81, the 5 % point for 3 terms): not significant.
+  const ResponseSurface q = FitResponseSurface(samples, {0.5, 0.5}, {.noise_floor = 0.001});
   REQUIRE(q.ok);
   CHECK(q.quadratic);
   CHECK(q.points == 12);
@@ -74,6 +76,21 @@ TEST_CASE("response surface fits a quadratic when it has twice its coefficients"
   const ResponseSurface l = FitResponseSurface(samples, {0.5, 0.5}, {.allow_quadratic = false});
   REQUIRE(l.ok);
   CHECK(std::abs(l.jacobian(0, 0) - 2.3) > 1e-3);  // a line through a curve is biased here
+}
+
+TEST_CASE("response surface keeps a noisy linear residual linear when it could fit a quadratic",
+          "[unit][calibrate]") {
+  // Twelve noisy samples of a linear model: enough for a quadratic, but its three curvature
+  // terms would only fit noise; a row keeps them only when they lower χ² significantly (5 %).
+  int linear_rows = 0, rows = 0;
+  for (uint64_t seed = 1; seed <= 10; ++seed) {
+    const std::vector<Sample> samples = Cloud(12, {0.5, 0.5}, 0.3, seed, LinearModel);
+    const ResponseSurface chosen = FitResponseSurface(samples, {0.5, 0.5});
+    REQUIRE(chosen.ok);
+    const ResponseSurface linear = FitResponseSurface(samples, {0.5, 0.5}, {.allow_quadratic = false});
+    for (int i = 0; i < 2; ++i, ++rows) linear_rows += chosen.jacobian.row(i) == linear.jacobian.row(i);
+  }
+  CHECK(linear_rows >= rows * 8 / 10);  // ~95 % expected; a quadratic every time would be 0
 }
 
 TEST_CASE("response surface ignores failed samples and says when it has too few",
