@@ -77,9 +77,13 @@ std::string Validate(const ParameterSpace& space, const std::vector<Target>& tar
 }
 
 // J at the best (response surface, rows weighted by 1/sqrt(1 + noise²)), σ and correlations,
-// identifiability.
+// identifiability. Replaces what an earlier call wrote (refinement analyses again).
 void Analyse(const ParameterSpace& space, const std::vector<Target>& targets,
              const CalibrationOptions& options, const OptimiserResult& r, CalibrationSummary* s) {
+  s->residuals.clear(), s->estimates.clear(), s->covariance_note.clear();
+  s->jacobian.resize(0, 0), s->jacobian_sigma.resize(0, 0);
+  s->covariance.resize(0, 0), s->correlation.resize(0, 0);
+  s->identifiability = {};
   const Candidate& best = s->candidates[s->best];
   const size_t n = space.Size();
   std::vector<std::string> names;
@@ -135,24 +139,19 @@ void Analyse(const ParameterSpace& space, const std::vector<Target>& targets,
   }
 }
 
-// Sensitivity refinement (sensitivity_refinement.h): stencil rounds around the best while some σ
-// is +∞, the targets are at least as many as the parameters and the budget allows.
+// Sensitivity refinement (sensitivity_refinement.h), after a first Analyse: stencil rounds around
+// the best, each analysed again, while some σ is +∞, the targets are at least as many as the
+// parameters and the budget allows.
 template <class Batch>
 void RefineSensitivities(Batch& batch, const ParameterSpace& space,
                          const std::vector<Target>& targets, const CalibrationOptions& options,
                          const OptimiserResult& r, CalibrationSummary* s) {
   if (targets.size() < space.Size()) return;  // a valley no stencil can lift
-  for (int round = 0; round < options.sensitivity_rounds; ++round) {
-    CalibrationSummary probe;
-    probe.candidates = s->candidates;
-    probe.best = s->best;
-    probe.refinement_points = s->refinement_points;
-    Analyse(space, targets, options, r, &probe);
-    const bool all_finite =
-        probe.jacobian.size() > 0 &&
-        std::all_of(probe.estimates.begin(), probe.estimates.end(),
-                    [](const ParameterEstimate& e) { return std::isfinite(e.sigma); });
-    if (all_finite) return;
+  auto any_infinite = [&] {
+    return std::any_of(s->estimates.begin(), s->estimates.end(),
+                       [](const ParameterEstimate& e) { return !std::isfinite(e.sigma); });
+  };
+  for (int round = 0; round < options.sensitivity_rounds && any_infinite(); ++round) {
     const Candidate& best = s->candidates[s->best];
     double noise_max = 0;
     for (double noise : best.trial.noise) noise_max = std::max(noise_max, noise);
@@ -162,6 +161,7 @@ void RefineSensitivities(Batch& batch, const ParameterSpace& space,
       return;
     batch(units);  // appends to s->candidates: `best` is not used after this
     s->refinement_points += static_cast<int>(units.size());
+    Analyse(space, targets, options, r, s);
   }
 }
 
@@ -219,8 +219,8 @@ CalibrationSummary Calibrate(CandidateEvaluator& evaluator, const ParameterSpace
         (s.best < 0 || c.trial.Cost() < s.candidates[s.best].trial.Cost()))
       s.best = c.index;
   if (s.best >= 0) {
-    RefineSensitivities(batch, space, targets, options, r, &s);
     Analyse(space, targets, options, r, &s);
+    RefineSensitivities(batch, space, targets, options, r, &s);
   }
   return s;
 }

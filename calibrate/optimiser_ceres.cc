@@ -9,7 +9,8 @@
 //
 // Derivatives. DEM observables are noisy, so the Jacobian comes from finite differences with a
 // step larger than the noise, chosen from the noise and the bounds:
-//   h = clamp(kSignalToNoise · noise_max / kMinSensitivity, kMinStep, kMaxStep)   (unit cube)
+//   h = clamp(kSignalToNoise · noise_max / kMinSensitivity, kMinStep, kMaxStep)   (unit cube;
+//   FiniteDifferenceStep in sensitivity_refinement.cc, which refines J with the same rule)
 // kMinSensitivity = sqrt(12) is the smallest |d r / d u| that tells a parameter anything beyond its
 // bounds (identifiability.h: a uniform prior on [0, 1] has σ = 1/sqrt(12)); with this h such a
 // sensitivity moves the residual by kSignalToNoise = 4 times the noise over the step, so the
@@ -45,7 +46,6 @@
 
 namespace demcal::calibrate {
 namespace {
-
 
 // The candidates asked so far, the budget and the best; shared by the cost function and the
 // callback of one run.

@@ -229,7 +229,8 @@ void TriangleMesh::NearTriangles(const Vec3& centre_m, double reach_m,
   const double limit = reach_m + kConeTolerance * reach_m + kRoundoff * length_scale_m_;
   std::erase_if(out, [&](int32_t t) {
     const Tri& tri = tri_[t];
-    return Norm2(c - ClosestPointOnTriangle(c, tri.v[0], tri.v[1], tri.v[2]).point_m) > limit * limit;
+    const Vec3 closest = ClosestPointOnTriangle(c, tri.v[0], tri.v[1], tri.v[2]).point_m;
+    return Norm2(c - closest) > limit * limit;
   });
 }
 

@@ -45,7 +45,7 @@ void WallContacts::Rebuild(const Particles& p, const std::vector<uint32_t>& orde
     for (uint32_t w = 0; i < moving && w < walls.size(); ++w) {
       const Wall& wall = walls[w];
       if (wall.removed) continue;
-      triangles.clear();
+      triangles.clear();  // a moving mesh keeps no near triangles (WithinSkin is not asked)
       if (!wall.Moves() &&
           !WithinSkin(wall, p.position_m[i], p.radius_m[i], skin_m, adhesive_gap_m, triangles))
         continue;

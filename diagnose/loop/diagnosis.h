@@ -14,7 +14,8 @@
 //  5. A winner is recalibrated: more secant-corrected Gauss–Newton points of base + effect while
 //     each lowers χ² by at least 1 (at most winner_refits). It is then added (its refitted point
 //     becomes the current fit, its signature a fitted direction), the gap tested again, and 3-5
-//     repeated while a significant gap remains (at most max_effects). No winner: "gap remains, not explained by the library".
+//     repeated while a significant gap remains (at most max_effects). No winner: "gap remains,
+//     not explained by the library".
 // Frugal by construction: one base calibration, one simulated point per candidate and
 // iteration, two per refitted candidate, and at most winner_refits for the winner.
 //

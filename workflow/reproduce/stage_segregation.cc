@@ -157,7 +157,10 @@ bool RunSegregationStage(ReproduceContext& ctx, nlohmann::json* result, std::str
     for (int i = 0; i < workers; ++i) pool.emplace_back(worker, end, threads);
     for (std::thread& t : pool) t.join();
   };
-  if (odd > 0) run_round(odd, static_cast<int>(odd), objectives::ThreadsPerReplicate(static_cast<int>(odd), cores));
+  if (odd > 0) {
+    const int odd_jobs = static_cast<int>(odd);
+    run_round(odd, odd_jobs, objectives::ThreadsPerReplicate(odd_jobs, cores));
+  }
   next = odd;  // a worker that found the first round empty still took an index
   run_round(jobs.size(), std::min<int>(cores, static_cast<int>(jobs.size() - odd)), 1);
   if (!first_error.empty()) return *error = first_error, false;
