@@ -76,40 +76,44 @@ void Clumps::RemapSlots(const std::vector<uint32_t>& order) {
 
 namespace {
 template <typename T>
-void KeepMarked(std::vector<T>& v, const std::vector<int>& new_index, size_t kept) {
-  std::vector<T> out(kept);
-  for (size_t c = 0; c < new_index.size(); ++c)
-    if (new_index[c] >= 0) out[new_index[c]] = v[c];
+void ApplyClumpOrder(std::vector<T>& v, const std::vector<uint32_t>& order) {
+  std::vector<T> out(order.size());
+  for (size_t k = 0; k < order.size(); ++k) out[k] = v[order[k]];
   v.swap(out);
 }
 }  // namespace
 
+void Clumps::Select(const std::vector<uint32_t>& order) {
+  std::vector<uint32_t> start{0}, slots;
+  std::vector<Vec3> offsets;
+  slots.reserve(member_slot.size()), offsets.reserve(member_slot.size());
+  for (uint32_t c : order) {
+    for (uint32_t k = member_start[c]; k < member_start[c + 1]; ++k) {
+      slots.push_back(member_slot[k]);
+      offsets.push_back(member_offset_m[k]);
+    }
+    start.push_back(static_cast<uint32_t>(slots.size()));
+  }
+  ApplyClumpOrder(position_m, order), ApplyClumpOrder(velocity_m_s, order);
+  ApplyClumpOrder(rotation, order), ApplyClumpOrder(principal_inertia_kg_m2, order);
+  ApplyClumpOrder(mass_kg, order), ApplyClumpOrder(force_N, order);
+  ApplyClumpOrder(torque_N_m, order), ApplyClumpOrder(species, order);
+  ApplyClumpOrder(id, order);
+  member_start.swap(start), member_slot.swap(slots), member_offset_m.swap(offsets);
+}
+
 std::vector<int> Clumps::Keep(const std::vector<uint8_t>& gone, const std::vector<uint32_t>& order) {
   std::vector<int> new_index(Size(), -1);
-  int kept = 0;
+  std::vector<uint32_t> kept;
   for (size_t c = 0; c < Size(); ++c)
-    if (!gone[c]) new_index[c] = kept++;
+    if (!gone[c]) new_index[c] = static_cast<int>(kept.size()), kept.push_back(c);
+  Select(kept);
   uint32_t old_slots = 0;
   for (uint32_t s : member_slot) old_slots = std::max(old_slots, s + 1);
   for (uint32_t s : order) old_slots = std::max(old_slots, s + 1);
   std::vector<uint32_t> new_slot_of_old(old_slots, 0);
   for (uint32_t k = 0; k < order.size(); ++k) new_slot_of_old[order[k]] = k;
-  std::vector<uint32_t> start{0}, slots;
-  std::vector<Vec3> offsets;
-  for (size_t c = 0; c < Size(); ++c) {
-    if (gone[c]) continue;
-    for (uint32_t k = member_start[c]; k < member_start[c + 1]; ++k) {
-      slots.push_back(new_slot_of_old[member_slot[k]]);
-      offsets.push_back(member_offset_m[k]);
-    }
-    start.push_back(static_cast<uint32_t>(slots.size()));
-  }
-  KeepMarked(position_m, new_index, kept), KeepMarked(velocity_m_s, new_index, kept);
-  KeepMarked(rotation, new_index, kept), KeepMarked(principal_inertia_kg_m2, new_index, kept);
-  KeepMarked(mass_kg, new_index, kept), KeepMarked(force_N, new_index, kept);
-  KeepMarked(torque_N_m, new_index, kept), KeepMarked(species, new_index, kept);
-  KeepMarked(id, new_index, kept);
-  member_start.swap(start), member_slot.swap(slots), member_offset_m.swap(offsets);
+  for (uint32_t& s : member_slot) s = new_slot_of_old[s];
   return new_index;
 }
 

@@ -61,6 +61,9 @@ struct Clumps {
   // Permute(order) (order[new] = old, shorter than before); returns each old clump's new index
   // (−1 if dropped).
   std::vector<int> Keep(const std::vector<uint8_t>& gone, const std::vector<uint32_t>& order);
+  // Keeps the clumps order[0], order[1], ... in that order (order[new] = old; may be shorter).
+  // Member slots are unchanged: Particles::body must be renumbered by the caller.
+  void Select(const std::vector<uint32_t>& order);
 
   Vec3 AngularVelocity(size_t c) const {
     return demcal::core::AngularVelocity(rotation[c], principal_inertia_kg_m2[c]);

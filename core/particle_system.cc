@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <numeric>
 
 namespace demcal::core {
 
@@ -96,8 +97,10 @@ void ParticleSystem::KickDrift(double dt, size_t moving_spheres) {
       HalfKick(c.rotation[k], c.torque_N_m[k], dt);
       c.position_m[k] += c.velocity_m_s[k] * dt;
       Drift(c.rotation[k], c.principal_inertia_kg_m2[k], dt);
-      c.UpdateMembers(k, p);
     }
+    // A second pass: short loop bodies let the processor overlap successive clumps' long
+    // dependency chains (the drift's rotations), which one long body would serialise.
+    for (size_t k = range.begin(); k != range.end(); ++k) c.UpdateMembers(k, p);
   });
 }
 
@@ -145,10 +148,40 @@ void ParticleSystem::ReduceClumpForces(const Vec3& gravity) {
   });
 }
 
+std::vector<uint32_t> ParticleSystem::GroupClumpMembers(const std::vector<uint32_t>& order) const {
+  if (clumps.Size() == 0) return order;
+  std::vector<uint8_t> placed(clumps.Size(), 0);
+  std::vector<uint32_t> grouped;
+  grouped.reserve(order.size());
+  for (uint32_t s : order) {
+    const int c = spheres.body[s];
+    if (c < 0) {
+      grouped.push_back(s);
+    } else if (!placed[c]) {
+      placed[c] = 1;
+      for (uint32_t k = clumps.member_start[c]; k < clumps.member_start[c + 1]; ++k)
+        grouped.push_back(clumps.member_slot[k]);
+    }
+  }
+  return grouped;
+}
+
 void ParticleSystem::Permute(const std::vector<uint32_t>& order) {
   if (order.empty()) return;
   spheres.Permute(order);
   clumps.RemapSlots(order);
+  // Clumps in the order of their first member's slot, so the clump loops walk the sphere
+  // arrays forwards (with GroupClumpMembers: contiguously).
+  std::vector<uint32_t> by_slot(clumps.Size());
+  std::iota(by_slot.begin(), by_slot.end(), 0u);
+  auto first_slot = [&](uint32_t c) { return clumps.member_slot[clumps.member_start[c]]; };
+  auto earlier = [&](uint32_t a, uint32_t b) { return first_slot(a) < first_slot(b); };
+  if (std::is_sorted(by_slot.begin(), by_slot.end(), earlier)) return;
+  std::sort(by_slot.begin(), by_slot.end(), earlier);
+  clumps.Select(by_slot);
+  for (size_t c = 0; c < clumps.Size(); ++c)
+    for (uint32_t k = clumps.member_start[c]; k < clumps.member_start[c + 1]; ++k)
+      spheres.body[clumps.member_slot[k]] = static_cast<int>(c);
 }
 
 std::vector<uint32_t> ParticleSystem::Remove(const std::vector<uint8_t>& sphere_gone,

@@ -62,7 +62,11 @@ struct ParticleSystem {
   void ReduceClumpForces(const Vec3& gravity);
   // Wraps free spheres and clump centres back into the periodic box (members follow).
   void WrapPeriodic(const PeriodicBox& box);
-  // Reorders sphere slots (Particles::Permute) and keeps clump member slots consistent.
+  // `order` (order[new] = old slot, all slots) with each clump's members moved, in member
+  // order, to where its first member appears: members become contiguous slots.
+  std::vector<uint32_t> GroupClumpMembers(const std::vector<uint32_t>& order) const;
+  // Reorders sphere slots (Particles::Permute) and keeps clump member slots consistent; clumps
+  // are renumbered in the order of their first member's slot (the clump loops then stream).
   void Permute(const std::vector<uint32_t>& order);
   // Removes free spheres with sphere_gone[slot] and clumps with clump_gone[c] (with all their
   // members; their members' sphere_gone entries are ignored). The remaining slots keep their

@@ -39,7 +39,11 @@ namespace rigid_detail {
 // Defined here (not in rigid_body.cc) because they run once or more per clump per step and
 // must inline into the integration loops.
 inline Vec3 Scale(const Vec3& v, const Vec3& by) { return {v.x * by.x, v.y * by.y, v.z * by.z}; }
-inline Vec3 Reciprocal(const Vec3& v) { return {1 / v.x, 1 / v.y, 1 / v.z}; }
+// One division instead of three (a division's latency dominates this short computation).
+inline Vec3 Reciprocal(const Vec3& v) {
+  const double r = 1 / (v.x * v.y * v.z);
+  return {v.y * v.z * r, v.x * v.z * r, v.x * v.y * r};
+}
 
 // ω = A I⁻¹ Aᵀ L with the reciprocal moments precomputed.
 inline Vec3 Omega(const Quaternion& q, const Vec3& l, const Vec3& inverse_inertia) {

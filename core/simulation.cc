@@ -205,6 +205,7 @@ void Simulation::RebuildNeighbours(bool allow_reorder, const std::vector<uint32_
     // stream over moving particles only; newcomers from factories join the moving part.
     if (options_.exclude_fixed_pairs)
       std::stable_partition(order.begin(), order.end(), [&](uint32_t s) { return !p.IsFixed(s); });
+    order = system_.GroupClumpMembers(order);
     system_.Permute(order);
   }
   ++rebuilds_since_reorder_;

@@ -88,4 +88,20 @@ TEST_CASE("three-sphere clumps pour into a box and settle without members intera
   const double mass = sim.system().clumps.mass_kg[0] * 200;
   CHECK(sim.KineticEnergy() < 1e-3 * mass * 9.81 * 0.05);
   for (const Vec3& x : sim.particles().position_m) CHECK(x.z > 0);
+  // The spatial re-sorts kept each clump's members in consecutive slots (member order) and
+  // numbered the clumps by slot (ParticleSystem::GroupClumpMembers, Permute), with every member
+  // still where its clump puts it.
+  REQUIRE(r.neighbour_rebuilds > 20);  // at least one re-sort (every 20 rebuilds)
+  const Clumps& c = sim.system().clumps;
+  for (size_t k = 0; k < c.Size(); ++k) {
+    const uint32_t first = c.member_slot[c.member_start[k]];
+    CHECK(first == 3 * k);
+    for (uint32_t m = c.member_start[k]; m < c.member_start[k + 1]; ++m) {
+      const uint32_t slot = c.member_slot[m];
+      CHECK(slot == first + (m - c.member_start[k]));
+      CHECK(sim.particles().body[slot] == static_cast<int>(k));
+      const Vec3 expected = c.position_m[k] + Rotate(c.rotation[k].orientation, c.member_offset_m[m]);
+      CHECK(Norm(sim.particles().position_m[slot] - expected) < 1e-12);
+    }
+  }
 }
