@@ -31,24 +31,49 @@ TrialResult Standardise(const CandidateResult& c, const std::vector<Target>& tar
   return t;
 }
 
+// The replicates a candidate came with (before Sharpen or Deepen added any).
+int BaseReplicates(const Candidate& c) {
+  int most = 0;
+  for (const TargetValue& v : c.result.targets) most = std::max(most, v.replicates);
+  return most - c.replicates_added;
+}
+
+// Re-runs candidate c with n replicates per group (those already run are reused); false if the
+// evaluator cannot.
+bool Rerun(CandidateEvaluator& evaluator, const std::vector<Target>& targets, int n, Candidate* c,
+           CalibrationSummary* s) {
+  const int base = BaseReplicates(*c);
+  std::optional<CandidateResult> more = evaluator.AddReplicates(c->parameters, n);
+  if (!more) return false;
+  c->result = std::move(*more);
+  c->trial = Standardise(c->result, targets);
+  c->replicates_added = n - base;
+  s->replicates_run += c->result.replicates_run;
+  return true;
+}
+
 // Re-runs an inconclusive candidate with more replicates until it is conclusive or has
 // `factor` times the replicates it came with (CalibrationOptions::max_replicate_factor).
 void Sharpen(CandidateEvaluator& evaluator, const std::vector<Target>& targets, int factor,
              Candidate* c, CalibrationSummary* s) {
-  int base = 0;
-  for (const TargetValue& v : c->result.targets) base = std::max(base, v.replicates);
-  const int cap = factor * base;
-  for (int n = base; c->trial.Inconclusive() && n < cap;) {
+  const int cap = factor * BaseReplicates(*c);
+  for (int n = BaseReplicates(*c); c->trial.Inconclusive() && n < cap;) {
     double worst = 0;
     for (double noise : c->trial.noise) worst = std::max(worst, noise / kMatchNoise);
     n = std::min(cap, std::max(n + 1, static_cast<int>(std::ceil(n * worst * worst))));
-    std::optional<CandidateResult> more = evaluator.AddReplicates(c->parameters, n);
-    if (!more) return;
-    c->result = std::move(*more);
-    c->trial = Standardise(c->result, targets);
-    c->replicates_added = n - base;
-    s->replicates_run += c->result.replicates_run;
+    if (!Rerun(evaluator, targets, n, c, s)) return;
   }
+}
+
+// Brings a candidate to `factor` times the replicates it came with (sensitivity refinement:
+// the noise of the estimated sensitivities falls as 1/√n).
+void Deepen(CandidateEvaluator& evaluator, const std::vector<Target>& targets, int factor,
+            Candidate* c, CalibrationSummary* s) {
+  if (!c->trial.ok) return;
+  const int cap = factor * BaseReplicates(*c);
+  int most = 0;
+  for (const TargetValue& v : c->result.targets) most = std::max(most, v.replicates);
+  if (most < cap) Rerun(evaluator, targets, cap, c, s);
 }
 
 std::string Validate(const ParameterSpace& space, const std::vector<Target>& targets,
@@ -143,7 +168,7 @@ void Analyse(const ParameterSpace& space, const std::vector<Target>& targets,
 // the best, each analysed again, while some σ is +∞, the targets are at least as many as the
 // parameters and the budget allows.
 template <class Batch>
-void RefineSensitivities(Batch& batch, const ParameterSpace& space,
+void RefineSensitivities(Batch& batch, CandidateEvaluator& evaluator, const ParameterSpace& space,
                          const std::vector<Target>& targets, const CalibrationOptions& options,
                          const OptimiserResult& r, CalibrationSummary* s) {
   if (targets.size() < space.Size()) return;  // a valley no stencil can lift
@@ -159,8 +184,14 @@ void RefineSensitivities(Batch& batch, const ParameterSpace& space,
     if (units.empty() || s->candidates.size() + units.size() >
                              static_cast<size_t>(options.optimiser_options.max_evaluations))
       return;
+    const size_t first_new = s->candidates.size();
     batch(units);  // appends to s->candidates: `best` is not used after this
     s->refinement_points += static_cast<int>(units.size());
+    // The stencil at the most replicates allowed: a sensitivity is a difference of noisy means,
+    // and it was their noise that left σ at +∞. (The best keeps its replicates: its match, and
+    // so the termination, stay as the optimiser found them.)
+    for (size_t k = first_new; k < s->candidates.size(); ++k)
+      Deepen(evaluator, targets, options.max_replicate_factor, &s->candidates[k], s);
     Analyse(space, targets, options, r, s);
   }
 }
@@ -220,7 +251,7 @@ CalibrationSummary Calibrate(CandidateEvaluator& evaluator, const ParameterSpace
       s.best = c.index;
   if (s.best >= 0) {
     Analyse(space, targets, options, r, &s);
-    RefineSensitivities(batch, space, targets, options, r, &s);
+    RefineSensitivities(batch, evaluator, space, targets, options, r, &s);
   }
   return s;
 }

@@ -9,8 +9,10 @@
 // h0 = clamp(4·noise_max/√12, 0.01, 0.25): the optimisers' own finite-difference step
 // (optimiser_ceres.cc) doubled per round, so no point repeats one already run (a repeat would be
 // read back from the journal with the same answer) and the signal over the step grows while the
-// noise per point stays. A side beyond the bounds is dropped. Rounds stop when every σ is finite,
-// at CalibrationOptions::sensitivity_rounds, or when a round would exceed max_evaluations.
+// noise per point stays. A side beyond the bounds is dropped. The stencil points are then re-run
+// at CalibrationOptions::max_replicate_factor times their replicates (where the evaluator can add
+// replicates): the noise of a sensitivity falls as 1/√n. Rounds stop when every σ is finite, at
+// CalibrationOptions::sensitivity_rounds, or when a round would exceed max_evaluations.
 //
 // Thread-safety: a pure function.
 #include <vector>

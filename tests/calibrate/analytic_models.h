@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "calibrate/candidate_evaluator.h"
@@ -50,7 +51,11 @@ class LinearTargets final : public CandidateEvaluator {
   // true: each candidate draws its own noise (independent runs, as without common random
   // numbers), so finite differences of the means are noisy too.
   bool independent_noise = false;
+  // true: AddReplicates answers, as n runs would: sem·sqrt(3/n) (3 replicates per evaluation)
+  // with a fresh draw per n.
+  bool replicable = false;
   std::vector<size_t> batch_sizes;
+  int replicate_calls = 0;
 
   double Exact(size_t k, const std::vector<double>& theta) const {
     double y = offset[k];
@@ -60,19 +65,32 @@ class LinearTargets final : public CandidateEvaluator {
   std::vector<CandidateResult> EvaluateBatch(const std::vector<std::vector<double>>& p) override {
     batch_sizes.push_back(p.size());
     std::vector<CandidateResult> out;
-    for (const auto& theta : p) {
-      CandidateResult c;
-      uint64_t stream = seed;
-      if (independent_noise)
-        for (double t : theta) stream = stream * 1099511628211ull + static_cast<uint64_t>(std::llround(t * 1e9));
-      for (size_t k = 0; k < offset.size(); ++k)
-        c.targets.push_back(
-            {Exact(k, theta) + sem[k] * Normal(stream, static_cast<int>(k)), sem[k], 3});
-      if (theta[0] > nan_above) c.targets[0].mean = std::nan("");
-      c.replicates_run = 3;
-      out.push_back(c);
-    }
+    for (const auto& theta : p) out.push_back(Result(theta, 3));
     return out;
+  }
+  std::optional<CandidateResult> AddReplicates(const std::vector<double>& theta,
+                                               int replicates) override {
+    if (!replicable) return std::nullopt;
+    ++replicate_calls;
+    CandidateResult c = Result(theta, replicates);
+    c.replicates_run = replicates - 3;  // the first 3 are reused
+    return c;
+  }
+
+ private:
+  CandidateResult Result(const std::vector<double>& theta, int replicates) const {
+    CandidateResult c;
+    uint64_t stream = seed;
+    if (independent_noise)
+      for (double t : theta) stream = stream * 1099511628211ull + static_cast<uint64_t>(std::llround(t * 1e9));
+    if (replicates != 3) stream = stream * 31 + static_cast<uint64_t>(replicates);
+    for (size_t k = 0; k < offset.size(); ++k) {
+      const double s = sem[k] * std::sqrt(3.0 / replicates);
+      c.targets.push_back({Exact(k, theta) + s * Normal(stream, static_cast<int>(k)), s, replicates});
+    }
+    if (theta[0] > nan_above) c.targets[0].mean = std::nan("");
+    c.replicates_run = replicates;
+    return c;
   }
 };
 

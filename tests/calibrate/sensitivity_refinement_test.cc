@@ -91,3 +91,51 @@ TEST_CASE("a match at the start with noisy sensitivities is refined to a finite 
   }
   CHECK(infinite_without >= 2);  // the scenario needs the refinement in most draws
 }
+
+TEST_CASE("refinement re-runs its stencil at the most replicates, lowering the sensitivities' noise",
+          "[unit][calibrate]") {
+  // Noisier runs (sem 0.9 u) and sensitivities half those of the case above: stencil points at
+  // three replicates leave the sensitivities' noise floor above J's second singular value in
+  // most draws; the same points at 4 × 3 replicates (max_replicate_factor) resolve it. (Noise
+  // stays below kMatchNoise, so no candidate is sharpened: the replicates added are the
+  // refinement's alone.)
+  constexpr double kSlopeScale = 0.5;
+  auto run = [](uint64_t seed, bool replicable) {
+    LinearTargets m = Model();
+    m.sem = {0.9, 0.0108};
+    for (auto& row : m.slope)
+      for (double& s : row) s *= kSlopeScale;
+    m.seed = seed;
+    m.replicable = replicable;
+    CalibrationOptions o;
+    o.optimiser = "ceres";
+    o.optimiser_options.max_evaluations = 30;
+    return Calibrate(m, Space(), AtStart(m), o);
+  };
+  const double w = kSlopeScale / std::sqrt(1 + 0.81);
+  Eigen::Matrix2d j;
+  j << 10 * 0.5 * w, 60 * 0.28 * w, 0.5 * 0.5 / 0.012 * w, 0.3 * 0.28 / 0.012 * w;
+  const Eigen::Matrix2d cov = (j.transpose() * j).inverse();
+  const double sigma_true[2] = {std::sqrt(cov(0, 0)) * 0.5, std::sqrt(cov(1, 1)) * 0.28};
+  int infinite_plain = 0, infinite_deep = 0;
+  for (uint64_t seed = 1; seed <= 5; ++seed) {
+    INFO("seed " << seed);
+    const CalibrationSummary plain = run(seed, false), deep = run(seed, true);
+    REQUIRE(deep.termination == "within_noise");
+    CHECK(deep.candidates[deep.best].parameters == plain.candidates[plain.best].parameters);
+    infinite_plain += !std::isfinite(plain.estimates[0].sigma) || !std::isfinite(plain.estimates[1].sigma);
+    infinite_deep += !std::isfinite(deep.estimates[0].sigma) || !std::isfinite(deep.estimates[1].sigma);
+    REQUIRE(deep.refinement_points > 0);
+    const size_t first_refined = deep.candidates.size() - static_cast<size_t>(deep.refinement_points);
+    for (size_t k = 0; k < deep.candidates.size(); ++k)  // 4 × 3 replicates: stencil points only
+      CHECK(deep.candidates[k].replicates_added == (k >= first_refined ? 9 : 0));
+    for (int k = 0; k < 2; ++k) {
+      if (!std::isfinite(deep.estimates[k].sigma)) continue;
+      INFO("parameter " << k << " sigma " << deep.estimates[k].sigma << " analytic " << sigma_true[k]);
+      CHECK(deep.estimates[k].sigma > sigma_true[k] / 2);
+      CHECK(deep.estimates[k].sigma < sigma_true[k] * 2);
+    }
+  }
+  CHECK(infinite_plain >= 3);
+  CHECK(infinite_deep == 0);
+}

@@ -88,8 +88,9 @@ double SampleSd(const std::vector<double>& x) {
 }  // namespace
 
 // Twin (a), σ against the spread: the small-rig study (angle + discharge time, truth μs 0.25,
-// μr 0.10) on five noise draws, each with its own seed. Every draw must report a finite σ and
-// recover the truth within 2σ, and the root-mean-square σ must lie within a factor 3 of the
+// μr 0.10) on five noise draws, each with its own seed. Every draw must report a finite σ, at
+// most one of the five may miss the truth by more than 2σ (below), and the root-mean-square σ
+// must lie within a factor 3 of the
 // sample spread of the five recoveries (issue "Calibration II": "neither 3× too small nor 3×
 // too large"; five draws estimate a spread to about ±35 %, hence the wide factor).
 TEST_CASE("rig twin: sigma agrees with the spread of recoveries over five noise draws", "[.][long][calibrate]") {
@@ -112,15 +113,22 @@ TEST_CASE("rig twin: sigma agrees with the spread of recoveries over five noise 
     const std::vector<double>& v = values[name];
     const std::vector<double>& s = sigmas[name];
     REQUIRE(v.size() == 5);
+    // Each recovery against the truth in units of its own σ. With an honest σ a draw falls
+    // outside 2σ with probability ≈ 5 %: requiring all five inside would fail a correct σ in
+    // 23 % of runs (1 − 0.95⁵); at most one of five outside fails it in 2.3 %.
     double ms = 0;
+    int outside = 0;
     for (size_t k = 0; k < v.size(); ++k) {
-      INFO(name << " draw " << k + 1 << ": " << v[k] << " +- " << s[k] << ", truth " << truth[key]);
+      const double z = (v[k] - truth[key].get<double>()) / s[k];
+      WARN(name << " draw " << k + 1 << ": " << v[k] << " +- " << s[k] << " (z = " << z
+                << "), truth " << truth[key]);
       CHECK(std::isfinite(s[k]));
-      CHECK(std::abs(v[k] - truth[key].get<double>()) <= 2.0 * s[k]);
+      outside += !(std::abs(z) <= 2.0);
       ms += s[k] * s[k] / v.size();
     }
+    CHECK(outside <= 1);
     const double spread = SampleSd(v), rms_sigma = std::sqrt(ms);
-    INFO(name << ": spread of recoveries " << spread << ", rms sigma " << rms_sigma);
+    WARN(name << ": spread of recoveries " << spread << ", rms sigma " << rms_sigma);
     CHECK(rms_sigma <= 3 * spread);
     CHECK(rms_sigma >= spread / 3);
   }
