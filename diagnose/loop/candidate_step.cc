@@ -115,18 +115,23 @@ void Record(const Frame& f, const Work& w, const std::vector<CandidateEffect>& c
   step->refit_residuals[i].assign(r.data(), r.data() + r.size());
 }
 
-// The winner's recalibration: further secant-corrected Gauss–Newton points of base + effect,
-// while each lowers the best χ² by at least 1 (a change of χ² below 1 is within one standard
-// deviation of a fitted parameter, the profile-likelihood unit, so it is noise) and at most
-// `iterations` more points. A strongly nonlinear signature (a flow rate against the size
-// spread) needs more than the two points of the ranking to reach its minimum.
-void Recalibrate(ForwardModel& model, const Frame& f, const FitState& fit,
-                 const std::vector<CandidateEffect>& candidates, int iterations, Work* w) {
-  std::vector<Work*> one{w};
-  for (int k = 0; k < iterations; ++k) {
-    const double best = w->best_chi2;
-    SimulateRefits(model, f, fit, candidates, one);
-    if (!(w->best_chi2 < best - 1)) break;
+// Further secant-corrected Gauss–Newton points for each candidate, while each lowers its best χ²
+// by at least 1 (a change of χ² below 1 is within one standard deviation of a fitted parameter,
+// the profile-likelihood unit, so it is noise), at most `iterations` more points each. ΔBIC and
+// the likelihood ratio compare maximised likelihoods: a candidate still far from its minimum
+// after two points (a strongly nonlinear signature, a refit that trades along a valley) would
+// lose to one that happened to converge faster.
+void RefineRefits(ForwardModel& model, const Frame& f, const FitState& fit,
+                  const std::vector<CandidateEffect>& candidates, int iterations,
+                  std::vector<Work*> active) {
+  for (int k = 0; k < iterations && !active.empty(); ++k) {
+    std::vector<double> before;
+    for (const Work* w : active) before.push_back(w->best_chi2);
+    SimulateRefits(model, f, fit, candidates, active);
+    std::vector<Work*> improving;
+    for (size_t i = 0; i < active.size(); ++i)
+      if (active[i]->best_chi2 < before[i] - 1) improving.push_back(active[i]);
+    active.swap(improving);
   }
 }
 
@@ -189,6 +194,7 @@ StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>
     if (progress) progress("refitting " + std::to_string(shortlist.size()) + " candidates by simulation");
     SimulateRefits(model, f, fit, candidates, shortlist);  // the Gauss–Newton point
     SimulateRefits(model, f, fit, candidates, shortlist);  // after the secant correction
+    RefineRefits(model, f, fit, candidates, options.extra_refits, shortlist);
   }
   out.phases.push_back({"refits", model.SimulationsRun() - sims1, Since(start)});
   out.step.entries.resize(work.size());
@@ -199,15 +205,6 @@ StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>
     for (size_t k = 0; k < probed[i].mean.size(); ++k) out.step.signatures[i][k] = probed[i].mean[k] - fit.prediction.mean[k];
   }
   out.step.ranking = RankCandidates(out.step.entries);
-  if (const int top = out.step.ranking.winner; top >= 0 && work[top].simulated) {
-    start = Clock::now();
-    const int sims2 = model.SimulationsRun();
-    if (progress) progress("recalibrating the model with " + candidates[work[top].candidate].key);
-    Recalibrate(model, f, fit, candidates, options.winner_refits, &work[top]);
-    Record(f, work[top], candidates, top, &out.step);
-    out.step.ranking = RankCandidates(out.step.entries);
-    out.phases.push_back({"recalibration", model.SimulationsRun() - sims2, Since(start)});
-  }
   out.step.simulations = model.SimulationsRun() - sims0;
   if (out.step.ranking.winner < 0) return out;
   const int win = out.step.ranking.winner;

@@ -16,7 +16,7 @@ bool DiagnoseOptions::IsValid(std::string* error) const {
                     std::to_string(discrepancy_floor), false;
   if (dem_refits < 1 || dem_refits > 10) return *error = "refits must be in [1, 10]", false;
   if (max_effects < 1 || max_effects > 6) return *error = "max effects must be in [1, 6]", false;
-  if (winner_refits < 0 || winner_refits > 20) return *error = "winner refits must be in [0, 20]", false;
+  if (extra_refits < 0 || extra_refits > 20) return *error = "extra refits must be in [0, 20]", false;
   return true;
 }
 

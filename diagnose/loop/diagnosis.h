@@ -8,16 +8,15 @@
 //     (Gauss–Newton) refit of base + effect from the sensitivities alone (linear_refit.h).
 //  4. The `dem_refits` best linearised candidates whose linear evidence is significant are
 //     refitted for real: the Gauss–Newton point is simulated, the signature corrected by the
-//     secant through it, and a second Gauss–Newton point simulated; the better of the two is the
-//     candidate's refit. Ranking by evidence (ranking.h): ΔBIC and likelihood ratio of the
-//     simulated refits, with the signature match beside them.
-//  5. A winner is recalibrated: more secant-corrected Gauss–Newton points of base + effect while
-//     each lowers χ² by at least 1 (at most winner_refits). It is then added (its refitted point
-//     becomes the current fit, its signature a fitted direction), the gap tested again, and 3-5
-//     repeated while a significant gap remains (at most max_effects). No winner: "gap remains,
-//     not explained by the library".
+//     secant through it, and further secant-corrected Gauss–Newton points simulated while each
+//     lowers that candidate's best χ² by at least 1 (at most extra_refits beyond the first two):
+//     candidates are compared at their converged refits. Ranking by evidence (ranking.h): ΔBIC
+//     and likelihood ratio of the simulated refits, with the signature match beside them.
+//  5. The winner is added (its refitted point becomes the current fit, its signature a fitted
+//     direction), the gap tested again, and 3-5 repeated while a significant gap remains (at
+//     most max_effects). No winner: "gap remains, not explained by the library".
 // Frugal by construction: one base calibration, one simulated point per candidate and
-// iteration, two per refitted candidate, and at most winner_refits for the winner.
+// iteration, two to 2 + extra_refits per refitted candidate.
 //
 //   Diagnosis d = Diagnose(model, observations, candidates, options);
 //   d.termination;  // "no_missing_effect", "effect_found", "gap_remains", "gap_unexplained"
@@ -38,7 +37,7 @@ struct DiagnoseOptions {
   double discrepancy_floor = 1;  // model-discrepancy floor, in single-run scatters, >= 0
   int dem_refits = 2;            // candidates refitted by simulation per iteration, >= 1
   int max_effects = 2;           // effects added at most, >= 1
-  int winner_refits = 4;         // further simulated refits of a winner (recalibration), [0, 20]
+  int extra_refits = 4;          // refit points per refitted candidate beyond two, [0, 20]
   bool IsValid(std::string* error) const;
 };
 
@@ -61,7 +60,7 @@ struct DiagnosisStep {
 };
 
 struct PhaseTime {
-  std::string phase;  // "base calibration", "signatures", "refits", "recalibration"
+  std::string phase;  // "base calibration", "signatures", "refits"
   int simulations = 0;
   double wall_time_s = 0;
 };

@@ -110,7 +110,7 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
                      {"significance", info.options.significance},
                      {"discrepancy_floor_single_run_scatters", info.options.discrepancy_floor},
                      {"refits_per_step", info.options.dem_refits}, {"max_effects", info.options.max_effects},
-                     {"winner_refits", info.options.winner_refits},
+                     {"extra_refits", info.options.extra_refits},
                      {"subject_species", info.context.species}, {"subject_material", info.context.material},
                      {"wall_materials", info.context.wall_materials},
                      {"coating_column", info.context.coating_column}};
