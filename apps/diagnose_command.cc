@@ -27,7 +27,7 @@ Command AddDiagnoseCommand(CLI::App& parent) {
       ->check(CLI::Range(1, 10));
   app->add_option("--max-effects", o->diagnose.max_effects, "effects added at most (default 2)")->check(CLI::Range(1, 6));
   app->add_option("--extra-refits", o->diagnose.extra_refits,
-                  "refit points per refitted candidate beyond two, while each lowers its chi2 by >= 1 (default 4)")
+                  "re-centred refit points per refitted candidate beyond two, while each lowers its chi2 by >= 1 (default 4)")
       ->check(CLI::Range(0, 20));
   app->add_option("--max-evaluations", o->max_evaluations, "base calibration budget (default: the study's)")
       ->check(CLI::Range(1, 100000));

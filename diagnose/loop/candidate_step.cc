@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
+#include <numeric>
 #include <sstream>
 
+#include "calibrate/sensitivity_refinement.h"
 #include "diagnose/ranking/linear_refit.h"
 
 namespace demcal::diagnose {
@@ -49,6 +52,7 @@ Frame MakeFrame(const std::vector<Observation>& observations, const FitState& fi
 struct Work {
   int candidate = 0;
   Eigen::VectorXd signature;  // raw units per unit of the parameter
+  Eigen::MatrixXd jacobian;   // the base sensitivities re-estimated near its refit (empty: the fit's)
   LinearRefitResult refit;
   ModelPoint best_point;
   Prediction best_prediction;
@@ -115,19 +119,98 @@ void Record(const Frame& f, const Work& w, const std::vector<CandidateEffect>& c
   step->refit_residuals[i].assign(r.data(), r.data() + r.size());
 }
 
-// Further secant-corrected Gauss–Newton points for each candidate, while each lowers its best χ²
-// by at least 1 (a change of χ² below 1 is within one standard deviation of a fitted parameter,
-// the profile-likelihood unit, so it is noise), at most `iterations` more points each. ΔBIC and
-// the likelihood ratio compare maximised likelihoods: a candidate still far from its minimum
-// after two points (a strongly nonlinear signature, a refit that trades along a valley) would
-// lose to one that happened to converge faster.
+// A refit point of each candidate from its own best point rather than from the base fit: the
+// sensitivities to the base parameters and to the effect are re-estimated there by finite
+// differences (one run each, in the unit cube the step of the calibration layer's rule for this
+// simulation noise, inward at a bound), then one Gauss–Newton step of base + effect is
+// simulated. The base fit's sensitivities can be wrong far from it (a friction whose heap angle
+// saturates at the refit point but not at the base would keep pulling the refit the wrong
+// way), and a secant signature inherits their error.
+void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
+                     const std::vector<CandidateEffect>& candidates, const std::vector<Work*>& work) {
+  const size_t p = fit.point.base_unit.size();
+  std::vector<ModelPoint> probes;
+  std::vector<std::vector<double>> steps(work.size(), std::vector<double>(p + 1));
+  for (size_t i = 0; i < work.size(); ++i) {
+    double noise_max = 0;
+    for (int k = 0; k < f.n(); ++k) noise_max = std::max(noise_max, work[i]->best_prediction.sem[k] / f.sigma(k));
+    const double h = calibrate::FiniteDifferenceStep(noise_max);
+    for (size_t j = 0; j < p; ++j) {
+      ModelPoint q = work[i]->best_point;
+      steps[i][j] = q.base_unit[j] + h > fit.upper[j] ? -h : h;
+      q.base_unit[j] += steps[i][j];
+      probes.push_back(q);
+    }
+    const EffectParameter& e = candidates[work[i]->candidate].parameters[0];
+    ModelPoint q = work[i]->best_point;
+    double& t = q.effects.back().values[0];
+    steps[i][p] = t + h * (e.upper - e.lower) > e.upper ? -h * (e.upper - e.lower) : h * (e.upper - e.lower);
+    t += steps[i][p];
+    probes.push_back(q);
+  }
+  const std::vector<Prediction> probed = model.Evaluate(probes);
+  std::vector<std::vector<ModelPoint>> tries(work.size());
+  for (size_t i = 0; i < work.size(); ++i) {
+    Work& w = *work[i];
+    Eigen::MatrixXd J = fit.jacobian;  // the added effects' columns are kept
+    auto slope = [&](size_t j) {
+      return Eigen::VectorXd((ToVector(probed[i * (p + 1) + j].mean) - ToVector(w.best_prediction.mean)) / steps[i][j]);
+    };
+    for (size_t j = 0; j < p; ++j)
+      if (probed[i * (p + 1) + j].ok) J.col(j) = slope(j);
+    if (probed[i * (p + 1) + p].ok) w.signature = slope(p);
+    w.jacobian = J;
+    const EffectParameter& e = candidates[w.candidate].parameters[0];
+    const double t_now = w.best_point.effects.back().values[0];
+    FitState here = fit;
+    here.point = w.best_point;
+    here.point.effects.pop_back();
+    const std::vector<double> c = here.Coordinates();
+    std::vector<double> lo, hi;
+    for (size_t j = 0; j < c.size(); ++j) lo.push_back(fit.lower[j] - c[j]), hi.push_back(fit.upper[j] - c[j]);
+    const Eigen::VectorXd r = StandardisedResiduals(*f.observations, w.best_prediction.mean, f.sigma);
+    const Eigen::MatrixXd Js = f.sigma.cwiseInverse().asDiagonal() * J;
+    const Eigen::MatrixXd S = f.sigma.cwiseInverse().cwiseProduct(w.signature);
+    const LinearRefitResult step = LinearRefit(r, Js, S, {e.lower - t_now}, {e.upper - t_now}, lo, hi);
+    for (double scale : {1.0, 0.5}) {  // the Gauss–Newton step, then half of it (below)
+      const ActiveEffect added{w.candidate, {t_now + scale * step.t(0)}};
+      tries[i].push_back(here.Step(scale * step.delta, &added));
+    }
+  }
+  // Damped Gauss–Newton: where the full step does not lower χ² (noisy or curved sensitivities
+  // overshoot), half of it is simulated too.
+  std::vector<size_t> pending(work.size());
+  std::iota(pending.begin(), pending.end(), 0);
+  for (int attempt = 0; attempt < 2 && !pending.empty(); ++attempt) {
+    std::vector<ModelPoint> points;
+    for (size_t i : pending) points.push_back(tries[i][attempt]);
+    const std::vector<Prediction> got = model.Evaluate(points);
+    std::vector<size_t> failed;
+    for (size_t k = 0; k < pending.size(); ++k) {
+      Work& w = *work[pending[k]];
+      const double chi2 = got[k].ok ? StandardisedResiduals(*f.observations, got[k].mean, f.sigma).squaredNorm()
+                                    : INFINITY;
+      if (chi2 < w.best_chi2) w.best_chi2 = chi2, w.best_point = points[k], w.best_prediction = got[k];
+      else failed.push_back(pending[k]);
+    }
+    pending.swap(failed);
+  }
+}
+
+// Further re-centred refit points for each candidate, while each lowers its best χ² by at least
+// 1 (a change of χ² below 1 is within one standard deviation of a fitted parameter, the
+// profile-likelihood unit, so it is noise), at most `iterations` more each. ΔBIC and the
+// likelihood ratio compare maximised likelihoods: a candidate still far from its minimum after
+// two points (a strongly nonlinear signature, a refit along a valley) would lose to one that
+// happened to converge faster.
 void RefineRefits(ForwardModel& model, const Frame& f, const FitState& fit,
                   const std::vector<CandidateEffect>& candidates, int iterations,
                   std::vector<Work*> active) {
+  std::erase_if(active, [](const Work* w) { return !w->simulated; });  // no refit point to start from
   for (int k = 0; k < iterations && !active.empty(); ++k) {
     std::vector<double> before;
     for (const Work* w : active) before.push_back(w->best_chi2);
-    SimulateRefits(model, f, fit, candidates, active);
+    RecentredRefits(model, f, fit, candidates, active);
     std::vector<Work*> improving;
     for (size_t i = 0; i < active.size(); ++i)
       if (active[i]->best_chi2 < before[i] - 1) improving.push_back(active[i]);
@@ -219,7 +302,7 @@ StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>
   out.next.point = w.best_point;
   out.next.prediction = w.best_prediction;
   out.next.jacobian.resize(f.n(), f.fitted + 1);
-  out.next.jacobian << fit.jacobian, w.signature;
+  out.next.jacobian << (w.jacobian.size() ? w.jacobian : fit.jacobian), w.signature;
   out.next.lower = fit.lower;
   out.next.upper = fit.upper;
   out.next.lower.push_back(candidates[w.candidate].parameters[0].lower);

@@ -8,15 +8,16 @@
 //     (Gauss–Newton) refit of base + effect from the sensitivities alone (linear_refit.h).
 //  4. The `dem_refits` best linearised candidates whose linear evidence is significant are
 //     refitted for real: the Gauss–Newton point is simulated, the signature corrected by the
-//     secant through it, and further secant-corrected Gauss–Newton points simulated while each
-//     lowers that candidate's best χ² by at least 1 (at most extra_refits beyond the first two):
+//     secant through it, a second Gauss–Newton point simulated, then re-centred points (the
+//     sensitivities re-estimated at the candidate's best point, one damped Gauss–Newton step
+//     from there) while each lowers that candidate's best χ² by at least 1 (at most extra_refits):
 //     candidates are compared at their converged refits. Ranking by evidence (ranking.h): ΔBIC
 //     and likelihood ratio of the simulated refits, with the signature match beside them.
 //  5. The winner is added (its refitted point becomes the current fit, its signature a fitted
 //     direction), the gap tested again, and 3-5 repeated while a significant gap remains (at
 //     most max_effects). No winner: "gap remains, not explained by the library".
 // Frugal by construction: one base calibration, one simulated point per candidate and
-// iteration, two to 2 + extra_refits per refitted candidate.
+// iteration, two plus at most extra_refits × (base parameters + 3) per refitted candidate.
 //
 //   Diagnosis d = Diagnose(model, observations, candidates, options);
 //   d.termination;  // "no_missing_effect", "effect_found", "gap_remains", "gap_unexplained"
@@ -37,7 +38,7 @@ struct DiagnoseOptions {
   double discrepancy_floor = 1;  // model-discrepancy floor, in single-run scatters, >= 0
   int dem_refits = 2;            // candidates refitted by simulation per iteration, >= 1
   int max_effects = 2;           // effects added at most, >= 1
-  int extra_refits = 4;          // refit points per refitted candidate beyond two, [0, 20]
+  int extra_refits = 4;          // re-centred refit points per refitted candidate beyond two, [0, 20]
   bool IsValid(std::string* error) const;
 };
 

@@ -6,6 +6,7 @@
 // condition, and the control moves exactly like the fitted parameter. Simulation noise is a
 // fixed offset per observation (common random numbers: the same for every point), measurement
 // noise a seeded Gaussian draw. Used by the loop, ranking and gap tests.
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -53,13 +54,18 @@ class AnalyticForwardModel final : public ForwardModel {
 
   // Noise-free value with mu and the effects (candidate index -> value). `curvature` c makes
   // every effect nonlinear, acting as v + c·v² (0: linear).
-  static double Exact(int i, double mu, const std::vector<std::pair<int, double>>& effects, double curvature = 0) {
+  // `angle_saturation` s > 0: the angle stops rising with mu above s (a heap whose grains roll
+  // rather than slide), the other observables still respond.
+  static double Exact(int i, double mu, const std::vector<std::pair<int, double>>& effects, double curvature = 0,
+                      double angle_saturation = 0) {
     const int k = Kind(i);
-    double y = std::vector<double>{20, 0.012, 4e-3}[k] + mu * std::vector<double>{50, 5e-3, -5e-3}[k];
+    const double mu_k = k == 0 && angle_saturation > 0 ? std::min(mu, angle_saturation) : mu;
+    double y = std::vector<double>{20, 0.012, 4e-3}[k] + mu_k * std::vector<double>{50, 5e-3, -5e-3}[k];
     for (const auto& [e, v] : effects) y += EffectChange(e, k, Coating(i), v + curvature * v * v);
     return y;
   }
   double curvature = 0;
+  double angle_saturation = 0;
   // An effect no candidate has: grows with the square of the coating, only in the flow.
   static double Foreign(int i, double v) { return Kind(i) == 2 ? v * Coating(i) * Coating(i) * 1e-4 : 0; }
 
@@ -74,7 +80,7 @@ class AnalyticForwardModel final : public ForwardModel {
       Prediction pr{true, "ok"};
       for (int i = 0; i < Count(); ++i) {
         const double s = kScatter[Kind(i)];
-        pr.mean.push_back(Exact(i, 0.2 + 0.8 * p.base_unit[0], effects, curvature) +
+        pr.mean.push_back(Exact(i, 0.2 + 0.8 * p.base_unit[0], effects, curvature, angle_saturation) +
                           s / std::sqrt(replicates) * calibrate::testing::Normal(seed, i));
         pr.sem.push_back(s / std::sqrt(replicates));
         pr.spread.push_back(s);
@@ -87,9 +93,12 @@ class AnalyticForwardModel final : public ForwardModel {
 
   // Least squares over u on a fine grid (the model is linear: exact enough), J by central
   // difference.
+  // base_stop_unit >= 0: the base calibration ends there instead (a calibration stopped on its
+  // budget), its J a difference over base_step (negative: backwards), as a coarse optimiser's.
+  double base_stop_unit = -1, base_step = 0.01;
   BaseCalibration CalibrateBase() override {
-    double best_u = 0, best = INFINITY;
-    for (int g = 0; g <= 1000; ++g) {
+    double best_u = base_stop_unit, best = INFINITY;
+    for (int g = 0; base_stop_unit < 0 && g <= 1000; ++g) {
       const double u = g / 1000.0;
       const Prediction p = Evaluate({{{u}, {}}})[0];
       double chi2 = 0;
@@ -98,8 +107,8 @@ class AnalyticForwardModel final : public ForwardModel {
     }
     BaseCalibration b{true, "grid", {best_u}};
     b.prediction = Evaluate({{{best_u}, {}}})[0];
-    const Prediction up = Evaluate({{{best_u + 0.01}, {}}})[0];
-    for (int i = 0; i < Count(); ++i) b.jacobian.push_back({(up.mean[i] - b.prediction.mean[i]) / 0.01});
+    const Prediction up = Evaluate({{{best_u + base_step}, {}}})[0];
+    for (int i = 0; i < Count(); ++i) b.jacobian.push_back({(up.mean[i] - b.prediction.mean[i]) / base_step});
     b.termination = "grid";
     return b;
   }
@@ -117,7 +126,8 @@ inline std::vector<Observation> MakeObservations(AnalyticForwardModel* model, do
   model->measured.clear();
   for (int i = 0; i < AnalyticForwardModel::Count(); ++i) {
     const int k = AnalyticForwardModel::Kind(i);
-    const double y = AnalyticForwardModel::Exact(i, mu, hidden, model->curvature) + AnalyticForwardModel::Foreign(i, foreign) +
+    const double y = AnalyticForwardModel::Exact(i, mu, hidden, model->curvature, model->angle_saturation) +
+                     AnalyticForwardModel::Foreign(i, foreign) +
                      kUncertainty[k] * calibrate::testing::Normal(noise_seed, i);
     model->measured.push_back(y);
     Observation o{kKinds[k] + " w=" + std::to_string(AnalyticForwardModel::Coating(i)), kKinds[k],

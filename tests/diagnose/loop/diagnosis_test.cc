@@ -71,9 +71,9 @@ TEST_CASE("diagnosis repeats while a gap remains, up to max_effects", "[unit]") 
   const Diagnosis one = Run(two, 2, 0, 1);
   CHECK(one.named.size() == 1);
   CHECK(one.termination == "gap_remains");
-  // Frugality: per step one signature run per candidate and two to 2 + extra_refits (4) refit
-  // runs per shortlisted one (dem_refits 2).
-  CHECK(d.steps[0].simulations <= (5 + 2 * (2 + 4)) * 3);
+  // Frugality: per step one signature run per candidate and, per shortlisted one (dem_refits 2),
+  // two refit points plus at most extra_refits (4) re-centred ones of p + 3 = 4 points each.
+  CHECK(d.steps[0].simulations <= (5 + 2 * (2 + 4 * 4)) * 3);
 }
 
 TEST_CASE("a candidate with a nonlinear signature is refitted on towards the truth", "[unit]") {
@@ -103,6 +103,36 @@ TEST_CASE("a candidate with a nonlinear signature is refitted on towards the tru
     return n;
   };
   CHECK(refit_runs(more) > refit_runs(two));
+}
+
+TEST_CASE("refits re-estimate the sensitivities where they are, past a base fit stopped at a bound",
+          "[unit]") {
+  // The DEM case this stands in for (docs/diagnose.md, rolling_strong): a base calibration that
+  // stopped on its budget near the top of the friction range, where the heap angle has stopped
+  // rising with mu (angle_saturation 0.7), its sensitivities a backward difference over a coarse
+  // step that still sees the angle rise. Hidden: rolling resistance 0.4 at mu 0.5. The two
+  // Gauss–Newton points from the base fit's sensitivities stall (v ≈ 0.12, χ² ≈ 81 on 9
+  // points); re-centred refits (sensitivities re-estimated at each refit point) reach the truth.
+  auto run = [](int extra_refits) {
+    AnalyticForwardModel model;
+    model.angle_saturation = 0.7;
+    model.base_stop_unit = 1.0;
+    model.base_step = -0.25;
+    const std::vector<Observation> obs = testing::MakeObservations(&model, 0.5, {{1, 0.4}}, 1);
+    DiagnoseOptions o;
+    o.extra_refits = extra_refits;
+    o.max_effects = 1;
+    return Diagnose(model, obs, testing::Candidates(), o);
+  };
+  const Diagnosis two = run(0), more = run(4);
+  REQUIRE(Named(more) == "rolling");
+  const double v0 = two.final_point.effects.at(0).values[0], v4 = more.final_point.effects.at(0).values[0];
+  INFO("rolling value: two base-J points " << v0 << ", re-centred refits " << v4 << ", truth 0.4");
+  CHECK(std::abs(v0 - 0.4) > 0.1);  // the scenario stalls without re-centring
+  CHECK(std::abs(v4 - 0.4) < 0.02);
+  CHECK(std::abs(0.2 + 0.8 * more.final_point.base_unit[0] - 0.5) < 0.02);  // mu back down to 0.5
+  CHECK(more.gap_after.chi2 <= two.gap_after.chi2 - 10);
+  CHECK(more.gap_after.chi2_per_dof <= 1.5);
 }
 
 }  // namespace demcal::diagnose
