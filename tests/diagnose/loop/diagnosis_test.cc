@@ -76,20 +76,22 @@ TEST_CASE("diagnosis repeats while a gap remains, up to max_effects", "[unit]") 
   CHECK(d.steps[0].simulations <= (5 + 2 * (2 + 4 * 4)) * 3);
 }
 
+// One effect hidden at mu = 0.5 (noise seed 1), diagnosed with at most one effect added.
+Diagnosis OneEffect(AnalyticForwardModel model, std::pair<int, double> hidden, int extra_refits) {
+  const std::vector<Observation> obs = testing::MakeObservations(&model, 0.5, {hidden}, 1);
+  DiagnoseOptions o;
+  o.extra_refits = extra_refits;
+  o.max_effects = 1;
+  return Diagnose(model, obs, testing::Candidates(), o);
+}
+
 TEST_CASE("a candidate with a nonlinear signature is refitted on towards the truth", "[unit]") {
   // Effects act as v + v²: the secant through the probe (v = 0.5) and the first refit understate
   // the slope near the truth, so two Gauss–Newton points stop short (0.74, χ² ≈ 35 on 9 points);
   // the extra refit points go on to the truth (0.81, χ² ≈ 7.6).
-  auto run = [](int extra_refits) {
-    AnalyticForwardModel model;
-    model.curvature = 1;
-    const std::vector<Observation> obs = testing::MakeObservations(&model, 0.5, {{2, 0.8}}, 1);
-    DiagnoseOptions o;
-    o.extra_refits = extra_refits;
-    o.max_effects = 1;
-    return Diagnose(model, obs, testing::Candidates(), o);
-  };
-  const Diagnosis two = run(0), more = run(4);
+  AnalyticForwardModel model;
+  model.curvature = 1;
+  const Diagnosis two = OneEffect(model, {2, 0.8}, 0), more = OneEffect(model, {2, 0.8}, 4);
   REQUIRE(Named(two) == "shape");
   REQUIRE(Named(more) == "shape");
   const double v0 = two.final_point.effects.at(0).values[0], v4 = more.final_point.effects.at(0).values[0];
@@ -113,18 +115,11 @@ TEST_CASE("refits re-estimate the sensitivities where they are, past a base fit 
   // step that still sees the angle rise. Hidden: rolling resistance 0.4 at mu 0.5. The two
   // Gauss–Newton points from the base fit's sensitivities stall (v ≈ 0.12, χ² ≈ 81 on 9
   // points); re-centred refits (sensitivities re-estimated at each refit point) reach the truth.
-  auto run = [](int extra_refits) {
-    AnalyticForwardModel model;
-    model.angle_saturation = 0.7;
-    model.base_stop_unit = 1.0;
-    model.base_step = -0.25;
-    const std::vector<Observation> obs = testing::MakeObservations(&model, 0.5, {{1, 0.4}}, 1);
-    DiagnoseOptions o;
-    o.extra_refits = extra_refits;
-    o.max_effects = 1;
-    return Diagnose(model, obs, testing::Candidates(), o);
-  };
-  const Diagnosis two = run(0), more = run(4);
+  AnalyticForwardModel model;
+  model.angle_saturation = 0.7;
+  model.base_stop_unit = 1.0;
+  model.base_step = -0.25;
+  const Diagnosis two = OneEffect(model, {1, 0.4}, 0), more = OneEffect(model, {1, 0.4}, 4);
   REQUIRE(Named(more) == "rolling");
   const double v0 = two.final_point.effects.at(0).values[0], v4 = more.final_point.effects.at(0).values[0];
   INFO("rolling value: two base-J points " << v0 << ", re-centred refits " << v4 << ", truth 0.4");
