@@ -41,24 +41,36 @@ double ParameterValue(const nlohmann::json& result, const std::string& name, con
   return NAN;
 }
 
+// σ of a parameter; +inf when result.json gives none (null: not determined by the targets).
+double ParameterSigma(const nlohmann::json& result, const std::string& name) {
+  for (const auto& p : result["parameters"])
+    if (p["name"] == name) return p["sigma"].is_number() ? p["sigma"].get<double>() : INFINITY;
+  FAIL("result.json has no parameter " << name);
+  return NAN;
+}
+
 }  // namespace
 
-// Twin (a), one noise draw: the two-target example recovers the sliding and rolling friction
-// the data were made with (truth.json: 0.5, 0.2) within 2 sigma of its own reported sigma.
-TEST_CASE("two-target twin recovers both frictions within 2 sigma", "[.][long][calibrate]") {
+// The two-target example at truth mu_s 0.5, mu_r 0.2 (truth.json): above mu_s ≈ 0.4 the repose
+// angle of these spheres no longer responds to mu_s and the funnel target is too noisy to pin it
+// (docs/calibration.md, "Which targets separate mu_s and mu_r"), so a finite, correct sigma
+// cannot be asked of this twin (the rig twin below is the identifiable one). What is asked: no
+// confident wrong answer — each parameter either reports sigma = +inf (undetermined) or lies
+// within 2 sigma of the truth. (The 2026-12-02 run that ended at mu_s = 1.00 +- 0.03 would fail.)
+TEST_CASE("two-target twin at mu_s 0.5 gives no confident wrong answer", "[.][long][calibrate]") {
   ScratchDir dir("twin_two_targets");
   const std::string study = (RepoRoot() / "examples/calibrate_bp_two_targets.json").string();
-  REQUIRE(CalibrateQuick(study, dir.str("out")) == kExitOk);
+  const int code = CalibrateQuick(study, dir.str("out"));
+  REQUIRE((code == kExitOk || code == kExitRunFailed));  // 3: not matched within noise
   const nlohmann::json result = ReadJson(dir.str("out/result.json"));
   const nlohmann::json truth =
       ReadJson((RepoRoot() / "datasets/synthetic/bp_friction_twin/truth.json").string())["truth"];
   for (const auto& [name, key] : {std::pair{"mu_s_BP_BP", "sliding_friction"},
                                   std::pair{"mu_r_BP_BP", "rolling_friction"}}) {
     const double value = ParameterValue(result, name, "value");
-    const double sigma = ParameterValue(result, name, "sigma");
-    INFO(name << " = " << value << " +- " << sigma << ", truth " << truth[key]);
-    REQUIRE(std::isfinite(sigma));
-    CHECK(std::abs(value - truth[key].get<double>()) <= 2.0 * sigma);
+    const double sigma = ParameterSigma(result, name);
+    WARN(name << " = " << value << " +- " << sigma << ", truth " << truth[key]);
+    if (std::isfinite(sigma)) CHECK(std::abs(value - truth[key].get<double>()) <= 2.0 * sigma);
   }
 }
 
@@ -105,7 +117,7 @@ TEST_CASE("rig twin: sigma agrees with the spread of recoveries over five noise 
     const nlohmann::json result = ReadJson(out + "/result.json");
     for (const auto& p : result["parameters"]) {
       values[p["name"]].push_back(p["value"].get<double>());
-      sigmas[p["name"]].push_back(p["sigma"].is_number() ? p["sigma"].get<double>() : INFINITY);
+      sigmas[p["name"]].push_back(ParameterSigma(result, p["name"]));
     }
   }
   for (const auto& [name, key] : {std::pair{"mu_s_BP_BP", "sliding_friction"},
