@@ -49,6 +49,12 @@ struct TrialResult {
   // it keeps the same confidence (asking each of m targets to lie within its own 1σ would
   // reject the true parameters with probability 1 − 0.68^m: 90 % for six targets).
   bool WithinNoise() const;
+  // Where a search for n parameters may stop: the same sum no larger than the χ²_min(m, n)
+  // quantile at 68.27 % (and every noise ≤ kMatchNoise). The parameters' joint 1σ region is
+  // χ²(θ) − χ²_min ≤ that quantile and χ²_min ≥ 0, so a settled candidate lies inside it. With
+  // more targets than parameters a mere match (χ²_m) can lie 2–3σ from the least-squares
+  // estimate (seen on the Γ-per-coating twin: 6 targets, 3 parameters); for m ≤ n the two agree.
+  bool Settled(size_t parameters) const;
   // Within noise jointly, but some noise > kMatchNoise: more replicates would tell whether this
   // is a match.
   bool Inconclusive() const;

@@ -20,9 +20,10 @@
 // value, one-sided from the centre at a bound or next to a failed sample. The centre and all
 // 2n (or n) offsets are requested as one batch.
 //
-// Stops: at the first candidate within noise (TrialResult::WithinNoise: no refining beyond noise),
-// at Ceres' own tolerances (converged), or when the next batch would exceed max_evaluations
-// (budget). A failed sample (ok = false) makes CostFunction::Evaluate return false: Ceres treats
+// Stops: at the first candidate that has settled within noise (TrialResult::Settled: inside the
+// parameters' 1σ region, no refining beyond noise), at Ceres' own tolerances (converged), or when
+// the next batch would exceed max_evaluations (budget). The termination is within_noise whenever
+// some candidate matched (TrialResult::WithinNoise), settled or not. A failed sample (ok = false) makes CostFunction::Evaluate return false: Ceres treats
 // it as infeasible and shrinks its step. Candidates already evaluated are not asked again.
 //
 // Candidate lattice. Every point Ceres asks for is rounded to the lattice of spacing
@@ -51,8 +52,8 @@ namespace {
 // callback of one run.
 class Trials {
  public:
-  Trials(const BatchTrialFunction& f, const OptimiserOptions& o, OptimiserResult* r)
-      : f_(f), options_(o), result_(r) {}
+  Trials(const BatchTrialFunction& f, const OptimiserOptions& o, OptimiserResult* r, size_t parameters)
+      : f_(f), options_(o), result_(r), parameters_(parameters) {}
 
   // Evaluates the points not yet known (one batch); false (and stop()) if that would exceed the
   // budget.
@@ -76,7 +77,8 @@ class Trials {
       ++result_->evaluations;
       if (t.ok && (result_->best_unit.empty() || t.Cost() < result_->best_cost))
         result_->best_unit = todo[i], result_->best_cost = t.Cost();
-      if (t.WithinNoise()) matched_ = halt_ = true;
+      matched_ = matched_ || t.WithinNoise();
+      if (t.Settled(parameters_)) settled_ = halt_ = true;
       known_[todo[i]] = std::move(t);
     }
     return true;
@@ -86,6 +88,7 @@ class Trials {
   bool stop() const { return halt_; }
   void Release() { halt_ = false; }
   bool matched() const { return matched_; }
+  bool settled() const { return settled_; }
   bool budget_hit() const { return budget_hit_; }
 
  private:
@@ -93,8 +96,9 @@ class Trials {
   const OptimiserOptions& options_;
   OptimiserResult* result_;
   std::map<std::vector<double>, TrialResult> known_;
+  size_t parameters_;
   size_t residuals_ = 0;
-  bool matched_ = false, budget_hit_ = false, halt_ = false;
+  bool matched_ = false, settled_ = false, budget_hit_ = false, halt_ = false;
 };
 
 // x rounded to the lattice of spacing `tolerance` in [0, 1] (see above).
@@ -226,14 +230,14 @@ OptimiserResult CeresOptimise(const BatchTrialFunction& trial,
   const int n = static_cast<int>(start_unit.size());
   if (n < 1) return result.message = "no parameters", result;
   std::vector<double> x = Snap(start_unit, options.unit_tolerance);
-  Trials trials(trial, options, &result);
+  Trials trials(trial, options, &result, start_unit.size());
   trials.Ensure({x});
   const TrialResult start = trials.At(x);
   if (!start.ok || start.residuals.empty()) {
     result.message = "the start candidate gave no value";
     return result;
   }
-  if (start.WithinNoise()) {
+  if (start.Settled(start_unit.size())) {
     result.termination = "within_noise";
     result.message = "the start candidate matches within noise";
     return result;
@@ -270,9 +274,13 @@ OptimiserResult CeresOptimise(const BatchTrialFunction& trial,
   std::ostringstream m;
   m << "finite-difference step " << step << " (unit cube), " << summary.iterations.size()
     << " Ceres iterations";
-  if (trials.matched()) {
+  if (trials.settled()) {
     result.termination = "within_noise";
-    result.message = "matched within noise; " + m.str();
+    result.message = "matched and settled within noise; " + m.str();
+  } else if (trials.matched()) {
+    result.termination = "within_noise";
+    result.message = "matched within noise, then searched on to Ceres' " +
+                     std::string(trials.budget_hit() ? "budget" : "tolerance") + "; " + m.str();
   } else if (trials.budget_hit()) {
     result.termination = "budget";
     result.message = "budget used up before a match within noise; " + m.str();

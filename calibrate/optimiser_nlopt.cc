@@ -35,10 +35,8 @@ OptimiserResult Run(nlopt::algorithm algorithm, const BatchTrialFunction& trial,
       result.best_unit = u;
       result.best_cost = cost;
     }
-    if (t.WithinNoise()) {
-      matched = true;
-      throw nlopt::forced_stop();
-    }
+    matched = matched || t.WithinNoise();
+    if (t.Settled(n)) throw nlopt::forced_stop();  // inside the parameters' 1σ region
     return cost;
   };
   using Objective = decltype(objective);
@@ -52,9 +50,12 @@ OptimiserResult Run(nlopt::algorithm algorithm, const BatchTrialFunction& trial,
   double cost = 0;
   try {
     const nlopt::result r = opt.optimize(x, cost);
-    result.termination = r == nlopt::MAXEVAL_REACHED ? "budget" : "converged";
-    result.message = r == nlopt::MAXEVAL_REACHED ? "budget used up before a match within noise"
-                                                 : "step below unit_tolerance without a match within noise";
+    const bool budget = r == nlopt::MAXEVAL_REACHED;
+    result.termination = matched ? "within_noise" : budget ? "budget" : "converged";
+    result.message = matched  ? std::string("matched within noise, then searched on to the ") +
+                                    (budget ? "budget" : "unit tolerance")
+                     : budget ? "budget used up before a match within noise"
+                              : "step below unit_tolerance without a match within noise";
   } catch (const nlopt::forced_stop&) {
     result.termination = matched ? "within_noise" : "failed";
     result.message = matched ? "matched within noise" : "NLopt stopped";

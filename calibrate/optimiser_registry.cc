@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -21,9 +22,10 @@ constexpr Entry kOptimisers[] = {
     {"differential_evolution", DifferentialEvolution},
 };
 
-// Σ residual² / (1 + noise²) within the χ²_m quantile at kWithinNoiseProbability (for m = 1:
-// |residual| ≤ sqrt(1 + noise²)); `precise`: every noise ≤ kMatchNoise.
-bool ResidualsWithinNoise(const TrialResult& t, bool* precise) {
+// Σ residual² / (1 + noise²) within the χ²_dof quantile at kWithinNoiseProbability (for dof = 1:
+// ≤ 1, the 1σ rule exactly: the quantile's bisection would blur the boundary); `precise`: every
+// noise ≤ kMatchNoise.
+bool ResidualsWithinNoise(const TrialResult& t, size_t dof, bool* precise) {
   *precise = true;
   if (!t.ok) return false;
   double chi2 = 0;
@@ -32,10 +34,8 @@ bool ResidualsWithinNoise(const TrialResult& t, bool* precise) {
     chi2 += t.residuals[k] * t.residuals[k] / (1 + n * n);
     *precise = *precise && n <= kMatchNoise;
   }
-  const size_t m = t.residuals.size();
-  if (m == 0) return true;
-  // One target: the 1σ rule exactly (the quantile's bisection would blur the boundary).
-  const double limit = m == 1 ? 1.0 : ChiSquareQuantile(kWithinNoiseProbability, static_cast<double>(m));
+  if (t.residuals.empty()) return true;
+  const double limit = dof <= 1 ? 1.0 : ChiSquareQuantile(kWithinNoiseProbability, static_cast<double>(dof));
   return chi2 <= limit;
 }
 
@@ -43,12 +43,17 @@ bool ResidualsWithinNoise(const TrialResult& t, bool* precise) {
 
 bool TrialResult::WithinNoise() const {
   bool precise = false;
-  return ResidualsWithinNoise(*this, &precise) && precise;
+  return ResidualsWithinNoise(*this, residuals.size(), &precise) && precise;
+}
+
+bool TrialResult::Settled(size_t parameters) const {
+  bool precise = false;
+  return ResidualsWithinNoise(*this, std::min(parameters, residuals.size()), &precise) && precise;
 }
 
 bool TrialResult::Inconclusive() const {
   bool precise = true;
-  return ResidualsWithinNoise(*this, &precise) && !precise;
+  return ResidualsWithinNoise(*this, residuals.size(), &precise) && !precise;
 }
 
 double TrialResult::Cost() const {

@@ -45,6 +45,27 @@ TEST_CASE("ceres matches a linear two-target model within noise, asking for diff
   CHECK(largest >= 3);  // centre and the offsets of both parameters as one batch
 }
 
+TEST_CASE("ceres with more targets than parameters searches on past a match until it settles",
+          "[unit][calibrate]") {
+  // One parameter, six noise-free targets r_k = 4 (u − 0.5) + b_k with offsets b_k whose mean is
+  // 0 (so the least-squares u is 0.5, χ²_min = Σ b² = 1.5). Every u with χ² ≤ χ²_6(68 %) = 7.04 is
+  // a match: |u − 0.5| ≤ 0.29, i.e. up to 2.4 σ (σ_u = 1 / sqrt(6 · 16) = 0.10) from the estimate.
+  // Settled (χ² ≤ 1 for one parameter) cannot be reached, so the search runs to Ceres'
+  // tolerance and must end at the estimate, still reported as within_noise.
+  const std::vector<double> b = {0.5, -0.5, 0.5, -0.5, 0.5, -0.5};
+  auto model = [&](const std::vector<double>& u) {
+    TrialResult t{true, {}, std::vector<double>(6, 0.0)};
+    for (double bk : b) t.residuals.push_back(4 * (u[0] - 0.5) + bk);
+    return t;
+  };
+  const OptimiserResult r = CeresOptimise(Recorder{model}.Function(), {0.3}, {.max_evaluations = 40});
+  INFO(r.message);
+  CHECK(model({0.3}).WithinNoise());  // the start (2 σ off) already matches: 6 · 0.64 + 1.5 = 5.34 ≤ 7.04
+  CHECK(r.termination == "within_noise");
+  REQUIRE(r.best_unit.size() == 1);
+  CHECK(r.best_unit[0] == Approx(0.5).margin(0.01));  // 0.1 σ
+}
+
 TEST_CASE("ceres finite-difference step exceeds the noise", "[unit][calibrate]") {
   // Noise 0.5: the step is clamp(4·0.5/sqrt(12), 0.01, 0.25) = 0.25 of the range.
   Recorder rec{[](const std::vector<double>& u) {

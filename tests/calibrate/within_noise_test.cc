@@ -48,4 +48,17 @@ TEST_CASE("within noise: several targets are judged jointly at the same confiden
   }
 }
 
+TEST_CASE("settled: a search for n parameters stops inside their joint 1 sigma region", "[unit]") {
+  // Six residuals of 1.0: Σ = 6 ≤ χ²_6(68 %) = 7.04, a match; but for one parameter the 1σ
+  // region is χ² − χ²_min ≤ 1, and with χ²_min ≥ 0 only Σ ≤ 1 proves a point lies inside it.
+  const TrialResult six = Trial({1, 1, 1, 1, 1, 1});
+  CHECK(six.WithinNoise());
+  CHECK_FALSE(six.Settled(1));
+  CHECK_FALSE(six.Settled(3));  // χ²_3(68 %) = 3.53
+  CHECK(six.Settled(6));        // as many parameters as targets: the match itself
+  CHECK(six.Settled(9));
+  CHECK(Trial({0.9, 0.3, 0.2}).Settled(1));     // 0.94 ≤ 1
+  CHECK_FALSE(Trial({2, 0, 0}, {2, 0, 0}).Settled(3));  // too noisy to settle anything
+}
+
 }  // namespace demcal::calibrate
