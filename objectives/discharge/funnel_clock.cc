@@ -1,6 +1,14 @@
 #include "objectives/discharge/funnel_clock.h"
 
+#include <cmath>
+
 namespace demcal::objectives {
+
+bool FeedLimited(double discharge_time_s, double feed_duration_s, double funnel_height_m,
+                 double gravity_m_s2) {
+  if (!(discharge_time_s > 0) || !(gravity_m_s2 > 0)) return false;
+  return discharge_time_s - feed_duration_s < std::sqrt(2 * funnel_height_m / gravity_m_s2);
+}
 
 void FunnelClock::Observe(const core::Simulation& sim) {
   const core::Particles& p = sim.particles();

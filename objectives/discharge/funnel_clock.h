@@ -14,6 +14,14 @@
 
 namespace demcal::objectives {
 
+// True when a funnel that emptied did so within one free fall through its own height
+// (sqrt(2 h / g)) of the feed's own length: it passed the feed as it came and never held grains
+// back, so its discharge time measures the feed rate, not the powder's flow through the orifice.
+// The free-fall time is the time scale of a grain's passage through the funnel; a funnel that
+// holds a charge adds the time to drain it, which a flowability change lengthens.
+bool FeedLimited(double discharge_time_s, double feed_duration_s, double funnel_height_m,
+                 double gravity_m_s2);
+
 class FunnelClock {
  public:
   FunnelClock(double orifice_z_m, double feed_end_s)

@@ -258,6 +258,10 @@ SegregationRun RunSegregation(const core::Scene& model, const SegregationSetting
   out.first_out_s = clock.first_out_s();
   out.empty_s = clock.empty_s();
   out.discharge_time_s = clock.DischargeTimeS();
+  out.feed_duration_s = settings.feed.DurationS();
+  out.funnel_feed_limited = settings.funnel.enabled && clock.emptied() &&
+                            FeedLimited(out.discharge_time_s, out.feed_duration_s,
+                                        settings.funnel.height_m, Norm(model.gravity_m_s2));
   out.spheres_left_above = clock.spheres_above();
   if (settings.funnel.enabled && clock.started()) AnalyseOutflow(outflow, clock.first_out_s(), &out);
   out.heap = Crop(Select(TakeSnapshot(sim), [&](const Grain& g) { return g.id >= fixed; }),

@@ -96,6 +96,8 @@ struct SegregationRun {
   bool funnel_emptied = false;
   double discharge_time_s = 0;  // see the file comment; 0 when the funnel did not empty
   double first_out_s = 0, empty_s = 0;
+  double feed_duration_s = 0;        // the pour's length (feed mass / rate)
+  bool funnel_feed_limited = false;  // FeedLimited (funnel_clock.h): the time measures the feed
   int64_t spheres_left_above = 0;  // at or above the orifice at the end
   // What left the funnel (grains first seen below the orifice plane), in time bins from the
   // first grain out to the discharge end: the paper's Fig. 16 (pre-segregation in the funnel

@@ -172,6 +172,8 @@ ordered_json RunJson(int replicate, const SegregationRun& run) {
   j["funnel_first_out_s"] = run.first_out_s;
   j["funnel_empty_s"] = run.funnel_emptied ? ordered_json(run.empty_s) : nullptr;
   j["discharge_time_s"] = run.funnel_emptied ? ordered_json(run.discharge_time_s) : nullptr;
+  j["feed_duration_s"] = run.feed_duration_s;
+  j["funnel_feed_limited"] = run.funnel_feed_limited;
   j["outflow_mass_fraction"] = run.outflow_mass_fraction;
   j["settle_time_s"] = run.settle.settle_time_s;
   j["settled_by"] = run.settle.settled_by.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(run.settle.settled_by);

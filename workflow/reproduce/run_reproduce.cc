@@ -35,6 +35,7 @@ DemcalValues CollectValues(const nlohmann::json& results) {
       if (v["sem"].is_number()) d.sem = v["sem"].get<double>();
       d.note = v.value("note", "");
       d.synthetic = v.value("synthetic", false);
+      d.comparable = v.value("comparable", true);
       values[key] = d;
     }
   }

@@ -26,6 +26,21 @@ std::pair<double, double> Get(const nlohmann::json& scenario, const std::string&
           m["sem"].is_number() ? m["sem"].get<double>() : NAN};
 }
 
+// A discharge time from a funnel that passed its feed as it came (objectives::FeedLimited) measures
+// the assumed feed rate, not the mixture's flow: the row says so and is not compared.
+void MarkFeedLimited(const nlohmann::json& scenario, nlohmann::json* value) {
+  const auto [fraction, unused] = Get(scenario, "funnel_feed_limited");
+  if (!(fraction > 0)) return;
+  char text[320];
+  std::snprintf(text, sizeof(text),
+                "feed-limited funnel in %.0f %% of the runs: it emptied within one free fall through "
+                "its height of the feed's own %.3g s, so this time measures the assumed feed rate, "
+                "not the mixture's flow (a narrower orifice or a faster feed would let it hold a charge)",
+                100 * fraction, Get(scenario, "feed_duration_s").first);
+  (*value)["note"] = text;
+  (*value)["comparable"] = false;
+}
+
 }  // namespace
 
 nlohmann::json ExtractSegregationMetrics(const nlohmann::json& r) {
@@ -46,6 +61,10 @@ nlohmann::json ExtractSegregationMetrics(const nlohmann::json& r) {
       }
   m["mixture_angle_deg"] = r.contains("mixture_angle_deg") ? MeanOf(r["mixture_angle_deg"]) : nlohmann::json();
   m["discharge_time_s"] = r.contains("discharge_time_s") ? MeanOf(r["discharge_time_s"]) : nlohmann::json();
+  if (run.is_object() && run.contains("funnel_feed_limited")) {  // 1/0: its mean is the fraction
+    m["funnel_feed_limited"] = run["funnel_feed_limited"].get<bool>() ? 1 : 0;
+    m["feed_duration_s"] = run["feed_duration_s"];
+  }
   std::vector<double> peaks;
   if (run.is_object() && run.contains("tracked_granules"))
     for (const nlohmann::json& g : run["tracked_granules"])
@@ -110,6 +129,7 @@ nlohmann::json SegregationSummaryValues(const nlohmann::json& scenarios, const s
     put("discharge_time" + suffix + "_s", s, "discharge_time_s",
         "the funnel above the heap; its orifice is assumed (the paper gives no dimensions)");
   }
+  for (const char* s : {"uncoated", "coated"}) MarkFeedLimited(scenario(s), &v["discharge_time_" + std::string(s) + "_s"]);
   put("s_n_EP_3d_excessive", "excessive", ep + ".s_n_3d");
   put("cov_EP_3d_excessive", "excessive", ep + ".cov_3d");
   put("cov_r_EP_3d", "uncoated", ep + ".cov_r_3d", "random-mixture CoV: grows with coarse-graining (issue 15)");

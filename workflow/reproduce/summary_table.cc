@@ -44,6 +44,7 @@ const std::vector<std::string>& ReferenceKeys() {
 std::string Verdict(const ReferenceValue& reference, const DemcalValue& value) {
   if (!std::isfinite(value.mean))
     return "not run: " + (value.note.empty() ? std::string("no value at this fidelity") : value.note);
+  if (!value.comparable) return "not comparable: " + value.note;
   if (!std::isfinite(reference.value)) return "demcal only (the paper gives a figure, no number)";
   const double sem = std::isfinite(value.sem) ? value.sem : 0;
   if (reference.comparison == "at_least" || reference.comparison == "at_most") {

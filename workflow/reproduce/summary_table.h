@@ -28,6 +28,7 @@ struct DemcalValue {
   double sem = std::numeric_limits<double>::quiet_NaN();  // NaN: no spread (deterministic)
   std::string note;        // the likely cause of a difference, or why it was not run
   bool synthetic = false;  // computed from synthetic data
+  bool comparable = true;  // false: the number does not measure the paper's quantity (note says why)
 };
 using DemcalValues = std::map<std::string, DemcalValue>;
 

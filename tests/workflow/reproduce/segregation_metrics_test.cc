@@ -38,3 +38,22 @@ TEST_CASE("segregation rows carry the replicates' mean and sem and the noise flo
   CHECK(values["s_n_EP_3d_coated"]["mean"].is_null());
   CHECK(values["s_n_EP_3d_coated"]["note"].get<std::string>().find("no value") != std::string::npos);
 }
+
+TEST_CASE("a discharge time from a feed-limited funnel is reported but not compared", "[unit]") {
+  auto run = [](double discharge_s, bool feed_limited) {
+    json r = Run(1.0, 1.5);
+    r["runs"][0]["funnel_feed_limited"] = feed_limited;
+    r["runs"][0]["feed_duration_s"] = 1.54;
+    r["discharge_time_s"] = {{"mean", discharge_s}};
+    return ExtractSegregationMetrics(r);
+  };
+  const json limited = SummariseSegregationRuns({run(1.60, true), run(1.58, true)});
+  const json holding = SummariseSegregationRuns({run(2.30, false), run(2.20, false)});
+  const json values = SegregationSummaryValues({{"uncoated", limited}, {"coated", holding}}, "EP");
+  const json& u = values["discharge_time_uncoated_s"];
+  CHECK(u["mean"].get<double>() == Approx(1.59));
+  CHECK(u["comparable"] == false);
+  CHECK(u["note"].get<std::string>().find("feed-limited funnel in 100 % of the runs") == 0);
+  CHECK(u["note"].get<std::string>().find("1.54 s") != std::string::npos);
+  CHECK_FALSE(values["discharge_time_coated_s"].contains("comparable"));
+}

@@ -66,3 +66,12 @@ TEST_CASE("summary.json has one row per reference with nulls for missing numbers
     for (const char* key : {"quantity", "paper_value", "demcal_mean", "demcal_sem", "verdict", "source"})
       CHECK(row.contains(key));
 }
+
+TEST_CASE("summary rows: a number that does not measure the paper's quantity is not compared", "[unit]") {
+  DemcalValues v;
+  v["discharge_time_uncoated_s"] = {.mean = 1.6, .note = "feed-limited funnel", .comparable = false};
+  const std::vector<SummaryRow> rows = BuildSummaryRows({Ref("discharge_time_uncoated_s", 2.22)}, v);
+  REQUIRE(rows.size() == 1);
+  CHECK(rows[0].verdict == "not comparable: feed-limited funnel");
+  CHECK(rows[0].demcal_mean == Approx(1.6));  // the number is still shown
+}
