@@ -23,8 +23,8 @@
 // Stops: at the first candidate that has settled within noise (TrialResult::Settled: inside the
 // parameters' 1σ region, no refining beyond noise), at Ceres' own tolerances (converged), or when
 // the next batch would exceed max_evaluations (budget). The termination is within_noise whenever
-// some candidate matched (TrialResult::WithinNoise), settled or not. A failed sample (ok = false) makes CostFunction::Evaluate return false: Ceres treats
-// it as infeasible and shrinks its step. Candidates already evaluated are not asked again.
+// some candidate matched (TrialResult::WithinNoise), settled or not. A failed sample (ok = false)
+// makes CostFunction::Evaluate return false: Ceres treats it as infeasible and shrinks its step. Candidates already evaluated are not asked again.
 //
 // Candidate lattice. Every point Ceres asks for is rounded to the lattice of spacing
 // unit_tolerance in the unit cube, so points closer than the tolerance are one candidate (run
@@ -230,14 +230,14 @@ OptimiserResult CeresOptimise(const BatchTrialFunction& trial,
   const int n = static_cast<int>(start_unit.size());
   if (n < 1) return result.message = "no parameters", result;
   std::vector<double> x = Snap(start_unit, options.unit_tolerance);
-  Trials trials(trial, options, &result, start_unit.size());
+  Trials trials(trial, options, &result, static_cast<size_t>(n));
   trials.Ensure({x});
   const TrialResult start = trials.At(x);
   if (!start.ok || start.residuals.empty()) {
     result.message = "the start candidate gave no value";
     return result;
   }
-  if (start.Settled(start_unit.size())) {
+  if (start.Settled(static_cast<size_t>(n))) {
     result.termination = "within_noise";
     result.message = "the start candidate matches within noise";
     return result;
