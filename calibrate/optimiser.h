@@ -61,6 +61,29 @@ struct TrialResult {
   double Cost() const;  // Σ residual²
 };
 
+// The stop rule every optimiser follows, kept in one place so that none stops at a mere first
+// match: a search for n parameters notes each candidate's answer and may stop at the first one
+// that settled (TrialResult::Settled); its termination is "within_noise" if any candidate
+// matched (TrialResult::WithinNoise), settled or not.
+class MatchRecord {
+ public:
+  explicit MatchRecord(size_t parameters) : parameters_(parameters) {}
+  // True when the search may stop at this candidate.
+  bool Note(const TrialResult& t) {
+    matched_ = matched_ || t.WithinNoise();
+    const bool settled = t.Settled(parameters_);
+    settled_ = settled_ || settled;
+    return settled;
+  }
+  bool matched() const { return matched_; }
+  bool settled() const { return settled_; }
+
+ private:
+  size_t parameters_;
+  bool matched_ = false;
+  bool settled_ = false;
+};
+
 // Unit-cube points in, one TrialResult per point out (same order). A NaN residual must be
 // reported as ok = false by the caller; optimisers also treat a non-finite residual so.
 using BatchTrialFunction =

@@ -22,6 +22,7 @@ constexpr int kRetreats = 3;
 struct Point {
   double u = 0;
   TrialResult trial;
+  bool settled = false;  // the search may stop here (MatchRecord; one target: within noise)
   double r() const { return trial.residuals[0]; }
 };
 
@@ -37,6 +38,7 @@ class Search {
     ++result_.batches;
     ++result_.evaluations;
     if (!p->trial.ok || p->trial.residuals.size() != 1) return false;
+    p->settled = record_.Note(p->trial);
     if (result_.best_unit.empty() || p->trial.Cost() < result_.best_cost) {
       result_.best_unit = {u};
       result_.best_cost = p->trial.Cost();
@@ -63,6 +65,7 @@ class Search {
     return false;
   }
   bool retreated_ = false;
+  MatchRecord record_{1};
   OptimiserResult Refine(Point a, Point b);
   const BatchTrialFunction& f_;
   const OptimiserOptions& options_;
@@ -72,7 +75,7 @@ class Search {
 OptimiserResult Search::Run(double start) {
   Point s, lo, hi;
   if (!Eval(start, &s)) return Finish("failed", "the start candidate gave no value");
-  if (s.trial.WithinNoise()) return Finish("within_noise", "the start candidate matches within noise");
+  if (s.settled) return Finish("within_noise", "the start candidate matches within noise");
   if (Budget()) return Finish("budget", "budget used up at the start candidate");
   // Probe the bound on the side the residual says the root lies (assuming an increasing
   // observable); the other bound only if that shows no sign change.
@@ -81,12 +84,12 @@ OptimiserResult Search::Run(double start) {
   Point& second = up_first ? lo : hi;
   if (!Probe(start, up_first ? 1.0 : 0.0, &first))
     return Finish("failed", "a bound and the points towards the start gave no value");
-  if (first.trial.WithinNoise()) return Finish("within_noise", "a bound matches within noise");
+  if (first.settled) return Finish("within_noise", "a bound matches within noise");
   if (first.r() * s.r() < 0) return up_first ? Refine(s, first) : Refine(first, s);
   if (Budget()) return Finish("budget", "budget used up probing the bounds");
   if (!Probe(start, up_first ? 0.0 : 1.0, &second))
     return Finish("failed", "a bound and the points towards the start gave no value");
-  if (second.trial.WithinNoise()) return Finish("within_noise", "a bound matches within noise");
+  if (second.settled) return Finish("within_noise", "a bound matches within noise");
   if (second.r() * s.r() < 0) return up_first ? Refine(second, s) : Refine(s, second);
   std::ostringstream m;
   if (retreated_) m << "(a bound gave no value; the nearest point that did is used) ";
@@ -105,7 +108,7 @@ OptimiserResult Search::Refine(Point a, Point b) {
                                 b.u - 0.01 * (b.u - a.u));
     Point p;
     if (!Eval(u, &p)) return Finish("failed", "a candidate inside the bracket gave no value");
-    if (p.trial.WithinNoise()) return Finish("within_noise", "matched within noise");
+    if (p.settled) return Finish("within_noise", "matched within noise");
     if (p.r() * fa < 0) {  // the crossing is in [a, p]
       b = p, fb = p.r();
       if (kept == 1) fa *= 0.5;

@@ -53,7 +53,7 @@ namespace {
 class Trials {
  public:
   Trials(const BatchTrialFunction& f, const OptimiserOptions& o, OptimiserResult* r, size_t parameters)
-      : f_(f), options_(o), result_(r), parameters_(parameters) {}
+      : f_(f), options_(o), result_(r), record_(parameters) {}
 
   // Evaluates the points not yet known (one batch); false (and stop()) if that would exceed the
   // budget.
@@ -77,8 +77,7 @@ class Trials {
       ++result_->evaluations;
       if (t.ok && (result_->best_unit.empty() || t.Cost() < result_->best_cost))
         result_->best_unit = todo[i], result_->best_cost = t.Cost();
-      matched_ = matched_ || t.WithinNoise();
-      if (t.Settled(parameters_)) settled_ = halt_ = true;
+      if (record_.Note(t)) halt_ = true;
       known_[todo[i]] = std::move(t);
     }
     return true;
@@ -87,8 +86,8 @@ class Trials {
   void SetResidualCount(size_t m) { residuals_ = m; }
   bool stop() const { return halt_; }
   void Release() { halt_ = false; }
-  bool matched() const { return matched_; }
-  bool settled() const { return settled_; }
+  bool matched() const { return record_.matched(); }
+  bool settled() const { return record_.settled(); }
   bool budget_hit() const { return budget_hit_; }
 
  private:
@@ -96,9 +95,9 @@ class Trials {
   const OptimiserOptions& options_;
   OptimiserResult* result_;
   std::map<std::vector<double>, TrialResult> known_;
-  size_t parameters_;
+  MatchRecord record_;
   size_t residuals_ = 0;
-  bool matched_ = false, settled_ = false, budget_hit_ = false, halt_ = false;
+  bool budget_hit_ = false, halt_ = false;
 };
 
 // x rounded to the lattice of spacing `tolerance` in [0, 1] (see above).

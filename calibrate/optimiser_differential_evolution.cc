@@ -10,9 +10,11 @@
 // x_i if its cost is not larger. A failed sample costs +∞ (never kept). All draws come from one
 // core::Rng seeded once, in a fixed order, so the same answers give the same batches (resume).
 //
-// Stops at the first candidate within noise, when the population's extent is below
-// unit_tolerance in every coordinate (converged), or at the budget (the last generation is cut
-// to what the budget allows).
+// Stops after the generation in which a candidate settled within noise (MatchRecord: with more
+// targets than parameters a first match may lie 2–3σ from the estimate, so it searches on),
+// when the population's extent is below unit_tolerance in every coordinate (converged), or at
+// the budget (the last generation is cut to what the budget allows). The termination is
+// within_noise whenever some candidate matched.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -36,8 +38,8 @@ struct Member {
 
 class Evolution {
  public:
-  Evolution(const BatchTrialFunction& f, const OptimiserOptions& o)
-      : f_(f), options_(o), rng_(o.seed) {}
+  Evolution(const BatchTrialFunction& f, const OptimiserOptions& o, size_t parameters)
+      : f_(f), options_(o), rng_(o.seed), record_(parameters) {}
 
   // Evaluates the points (cut to the budget); costs of failed samples are +∞. False if the
   // budget cut the batch.
@@ -59,7 +61,7 @@ class Evolution {
       (*members)[i].cost = t.Cost();
       if (result_.best_unit.empty() || t.Cost() < result_.best_cost)
         result_.best_unit = (*members)[i].u, result_.best_cost = t.Cost();
-      matched_ = matched_ || t.WithinNoise();
+      record_.Note(t);
     }
     return !cut;
   }
@@ -73,7 +75,14 @@ class Evolution {
       if (std::find(not_these.begin(), not_these.end(), r) == not_these.end()) return r;
     }
   }
-  OptimiserResult Finish(const std::string& termination, const std::string& message) {
+  // `cause`: what stopped the search. One that matched ends within_noise whatever stopped it.
+  OptimiserResult Finish(std::string termination, const std::string& cause) {
+    std::string message = cause + " without a match within noise";
+    if (record_.settled()) {
+      termination = "within_noise", message = "matched and settled within noise";
+    } else if (record_.matched()) {
+      termination = "within_noise", message = "matched within noise, then searched on: " + cause;
+    }
     result_.termination = result_.best_unit.empty() ? "failed" : termination;
     std::ostringstream m;
     m << message << " (" << generations_ << " generations of " << size_ << ")";
@@ -85,7 +94,7 @@ class Evolution {
   const OptimiserOptions& options_;
   core::Rng rng_;
   OptimiserResult result_;
-  bool matched_ = false;
+  MatchRecord record_;
   int generations_ = 0, size_ = 0;
 };
 
@@ -103,7 +112,7 @@ OptimiserResult Evolution::Run(const std::vector<double>& start) {
   population[0].u = start;
   for (double& v : population[0].u) v = std::clamp(v, 0.0, 1.0);
   const bool whole = Evaluate(&population);
-  if (matched_) return Finish("within_noise", "matched within noise");
+  if (record_.settled()) return Finish("within_noise", "settled");
   if (!whole) return Finish("budget", "budget used up in the first generation");
   for (;;) {
     double extent = 0;
@@ -114,9 +123,9 @@ OptimiserResult Evolution::Run(const std::vector<double>& start) {
     }
     if (extent < options_.unit_tolerance)
       return Finish("converged",
-                    "population narrower than unit_tolerance without a match within noise");
+                    "population narrower than unit_tolerance");
     if (result_.evaluations >= options_.max_evaluations)
-      return Finish("budget", "budget used up before a match within noise");
+      return Finish("budget", "budget used up");
     std::vector<Member> trials(size_, Member{std::vector<double>(n)});
     for (int i = 0; i < size_; ++i) {
       const int r1 = Pick(size_, {i}), r2 = Pick(size_, {i, r1}), r3 = Pick(size_, {i, r1, r2});
@@ -133,8 +142,8 @@ OptimiserResult Evolution::Run(const std::vector<double>& start) {
     ++generations_;
     for (size_t i = 0; i < trials.size(); ++i)
       if (trials[i].cost <= population[i].cost) population[i] = trials[i];
-    if (matched_) return Finish("within_noise", "matched within noise");
-    if (!complete) return Finish("budget", "budget used up before a match within noise");
+    if (record_.settled()) return Finish("within_noise", "settled");
+    if (!complete) return Finish("budget", "budget used up");
   }
 }
 
@@ -143,7 +152,7 @@ OptimiserResult Evolution::Run(const std::vector<double>& start) {
 OptimiserResult DifferentialEvolution(const BatchTrialFunction& trial,
                                       const std::vector<double>& start_unit,
                                       const OptimiserOptions& options) {
-  Evolution evolution(trial, options);
+  Evolution evolution(trial, options, start_unit.size());
   if (start_unit.empty()) {
     OptimiserResult r;
     r.message = "no parameters";

@@ -1,8 +1,8 @@
 // NLopt's derivative-free local optimisers on the unit cube, minimising Σ residual² (the
 // chi-square against the measurement uncertainties). A failed sample costs kFailedCost, so the
 // optimiser steps away from it instead of stopping. The search stops at the first candidate
-// within noise (nlopt::forced_stop thrown from the objective is NLopt's way to end early),
-// at the tolerance on the step, or at the budget.
+// that settled within noise (MatchRecord; nlopt::forced_stop thrown from the objective is
+// NLopt's way to end early), at the tolerance on the step, or at the budget.
 #include <nlopt.hpp>
 
 #include <algorithm>
@@ -18,8 +18,8 @@ constexpr double kFailedCost = 1e6;
 OptimiserResult Run(nlopt::algorithm algorithm, const BatchTrialFunction& trial,
                     const std::vector<double>& start_unit, const OptimiserOptions& options) {
   OptimiserResult result;
-  bool matched = false;
   const unsigned n = static_cast<unsigned>(start_unit.size());
+  MatchRecord record(n);
   nlopt::opt opt(algorithm, n);
   opt.set_lower_bounds(std::vector<double>(n, 0.0));
   opt.set_upper_bounds(std::vector<double>(n, 1.0));
@@ -35,8 +35,7 @@ OptimiserResult Run(nlopt::algorithm algorithm, const BatchTrialFunction& trial,
       result.best_unit = u;
       result.best_cost = cost;
     }
-    matched = matched || t.WithinNoise();
-    if (t.Settled(n)) throw nlopt::forced_stop();  // inside the parameters' 1σ region
+    if (record.Note(t)) throw nlopt::forced_stop();  // inside the parameters' 1σ region
     return cost;
   };
   using Objective = decltype(objective);
@@ -51,14 +50,15 @@ OptimiserResult Run(nlopt::algorithm algorithm, const BatchTrialFunction& trial,
   try {
     const nlopt::result r = opt.optimize(x, cost);
     const bool budget = r == nlopt::MAXEVAL_REACHED;
+    const bool matched = record.matched();
     result.termination = matched ? "within_noise" : budget ? "budget" : "converged";
     result.message = matched  ? std::string("matched within noise, then searched on to the ") +
                                     (budget ? "budget" : "unit tolerance")
                      : budget ? "budget used up before a match within noise"
                               : "step below unit_tolerance without a match within noise";
   } catch (const nlopt::forced_stop&) {
-    result.termination = matched ? "within_noise" : "failed";
-    result.message = matched ? "matched within noise" : "NLopt stopped";
+    result.termination = record.matched() ? "within_noise" : "failed";
+    result.message = record.matched() ? "matched and settled within noise" : "NLopt stopped";
   } catch (const std::exception& e) {
     result.termination = "failed";
     result.message = std::string("NLopt: ") + e.what();

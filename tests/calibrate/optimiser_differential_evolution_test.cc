@@ -77,3 +77,43 @@ TEST_CASE("differential_evolution keeps to the budget and steps over failed samp
   CHECK(cut.batches.back().size() == 3);
   CHECK(b.termination == "budget");
 }
+
+TEST_CASE("differential_evolution with more targets than parameters searches on past a match",
+          "[unit][calibrate]") {
+  // As the ceres test of the same name: one parameter, six noise-free targets
+  // r_k = 4 (u − 0.5) + b_k with mean-zero offsets (least-squares u = 0.5, χ²_min = 1.5,
+  // σ_u = 0.10). The start u = 0.3 (2σ off) already matches jointly (χ² 5.34 ≤ χ²_6(68 %) = 7.04);
+  // a first-match stop would end there. Settled (χ² ≤ 1) is out of reach, so the population
+  // must close in on the estimate and the termination still says within_noise.
+  const std::vector<double> b = {0.5, -0.5, 0.5, -0.5, 0.5, -0.5};
+  auto model = [&](const std::vector<double>& u) {
+    TrialResult t{true, {}, std::vector<double>(6, 0.0)};
+    for (double bk : b) t.residuals.push_back(4 * (u[0] - 0.5) + bk);
+    return t;
+  };
+  REQUIRE(model({0.3}).WithinNoise());
+  REQUIRE_FALSE(model({0.5}).Settled(1));
+  const OptimiserResult r = DifferentialEvolution(Recorder{model}.Function(), {0.3},
+                                                  {.max_evaluations = 300, .batch_size = 6, .seed = 5});
+  INFO(r.message);
+  CHECK(r.termination == "within_noise");
+  REQUIRE(r.best_unit.size() == 1);
+  CHECK(r.best_unit[0] == Approx(0.5).margin(0.01));  // 0.1 σ
+  CHECK(r.evaluations > 6);                            // not stopped in the first generation
+
+  // With smaller offsets the estimate settles (χ²_min = 0.24 ≤ 1): the search stops there,
+  // inside the 1σ region (σ_u = 0.10), before its budget.
+  const std::vector<double> small = {0.2, -0.2, 0.2, -0.2, 0.2, -0.2};
+  auto settling = [&](const std::vector<double>& u) {
+    TrialResult t{true, {}, std::vector<double>(6, 0.0)};
+    for (double bk : small) t.residuals.push_back(4 * (u[0] - 0.5) + bk);
+    return t;
+  };
+  const OptimiserResult s = DifferentialEvolution(Recorder{settling}.Function(), {0.3},
+                                                  {.max_evaluations = 300, .batch_size = 6, .seed = 5});
+  INFO(s.message);
+  CHECK(s.termination == "within_noise");
+  CHECK(settling(s.best_unit).Settled(1));
+  CHECK(std::fabs(s.best_unit[0] - 0.5) <= 0.1);
+  CHECK(s.evaluations < 300);
+}
