@@ -41,6 +41,15 @@ struct Recorder {
   }
 };
 
+// One parameter against several noise-free targets r_k = 4 (u − 0.5) + b_k. With offsets b of
+// mean 0 the least-squares u is 0.5, χ²_min = Σ b², σ_u = 1 / sqrt(16 m): a model where a first
+// joint match can lie far from the estimate (TrialResult::Settled).
+inline TrialResult OffsetTargets(const std::vector<double>& b, const std::vector<double>& u) {
+  TrialResult t{true, {}, std::vector<double>(b.size(), 0.0)};
+  for (double bk : b) t.residuals.push_back(4 * (u[0] - 0.5) + bk);
+  return t;
+}
+
 class LinearTargets final : public CandidateEvaluator {
  public:
   std::vector<double> offset;              // per target

@@ -9,6 +9,7 @@
 
 using namespace demcal::calibrate;
 using demcal::calibrate::testing::Normal;
+using demcal::calibrate::testing::OffsetTargets;
 using demcal::calibrate::testing::Recorder;
 
 namespace {
@@ -53,11 +54,7 @@ TEST_CASE("ceres with more targets than parameters searches on past a match unti
   // Settled (χ² ≤ 1 for one parameter) cannot be reached, so the search runs to Ceres'
   // tolerance and must end at the estimate, still reported as within_noise.
   const std::vector<double> b = {0.5, -0.5, 0.5, -0.5, 0.5, -0.5};
-  auto model = [&](const std::vector<double>& u) {
-    TrialResult t{true, {}, std::vector<double>(6, 0.0)};
-    for (double bk : b) t.residuals.push_back(4 * (u[0] - 0.5) + bk);
-    return t;
-  };
+  auto model = [&](const std::vector<double>& u) { return OffsetTargets(b, u); };
   const OptimiserResult r = CeresOptimise(Recorder{model}.Function(), {0.3}, {.max_evaluations = 40});
   INFO(r.message);
   CHECK(model({0.3}).WithinNoise());  // the start (2 σ off) already matches: 6 · 0.64 + 1.5 = 5.34 ≤ 7.04

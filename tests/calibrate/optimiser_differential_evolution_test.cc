@@ -8,6 +8,7 @@
 #include "calibrate/optimiser.h"
 
 using namespace demcal::calibrate;
+using demcal::calibrate::testing::OffsetTargets;
 using demcal::calibrate::testing::Recorder;
 
 namespace {
@@ -86,11 +87,7 @@ TEST_CASE("differential_evolution with more targets than parameters searches on 
   // a first-match stop would end there. Settled (χ² ≤ 1) is out of reach, so the population
   // must close in on the estimate and the termination still says within_noise.
   const std::vector<double> b = {0.5, -0.5, 0.5, -0.5, 0.5, -0.5};
-  auto model = [&](const std::vector<double>& u) {
-    TrialResult t{true, {}, std::vector<double>(6, 0.0)};
-    for (double bk : b) t.residuals.push_back(4 * (u[0] - 0.5) + bk);
-    return t;
-  };
+  auto model = [&](const std::vector<double>& u) { return OffsetTargets(b, u); };
   REQUIRE(model({0.3}).WithinNoise());
   REQUIRE_FALSE(model({0.5}).Settled(1));
   const OptimiserResult r = DifferentialEvolution(Recorder{model}.Function(), {0.3},
@@ -104,11 +101,7 @@ TEST_CASE("differential_evolution with more targets than parameters searches on 
   // With smaller offsets the estimate settles (χ²_min = 0.24 ≤ 1): the search stops there,
   // inside the 1σ region (σ_u = 0.10), before its budget.
   const std::vector<double> small = {0.2, -0.2, 0.2, -0.2, 0.2, -0.2};
-  auto settling = [&](const std::vector<double>& u) {
-    TrialResult t{true, {}, std::vector<double>(6, 0.0)};
-    for (double bk : small) t.residuals.push_back(4 * (u[0] - 0.5) + bk);
-    return t;
-  };
+  auto settling = [&](const std::vector<double>& u) { return OffsetTargets(small, u); };
   const OptimiserResult s = DifferentialEvolution(Recorder{settling}.Function(), {0.3},
                                                   {.max_evaluations = 300, .batch_size = 6, .seed = 5});
   INFO(s.message);
