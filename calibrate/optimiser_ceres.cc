@@ -24,7 +24,8 @@
 // parameters' 1σ region, no refining beyond noise), at Ceres' own tolerances (converged), or when
 // the next batch would exceed max_evaluations (budget). The termination is within_noise whenever
 // some candidate matched (TrialResult::WithinNoise), settled or not. A failed sample (ok = false)
-// makes CostFunction::Evaluate return false: Ceres treats it as infeasible and shrinks its step. Candidates already evaluated are not asked again.
+// makes CostFunction::Evaluate return false: Ceres treats it as infeasible and shrinks its step.
+// Candidates already evaluated are not asked again.
 //
 // Candidate lattice. Every point Ceres asks for is rounded to the lattice of spacing
 // unit_tolerance in the unit cube, so points closer than the tolerance are one candidate (run
@@ -236,7 +237,7 @@ OptimiserResult CeresOptimise(const BatchTrialFunction& trial,
     result.message = "the start candidate gave no value";
     return result;
   }
-  if (start.Settled(static_cast<size_t>(n))) {
+  if (trials.settled()) {  // the start went through the shared stop rule
     result.termination = "within_noise";
     result.message = "the start candidate matches within noise";
     return result;
