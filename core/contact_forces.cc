@@ -19,6 +19,8 @@ constexpr int kRebalancePasses = 100;
 constexpr double kRebalanceTolerance = 0.03;
 }  // namespace
 
+DEMCAL_HOT_INLINE void StoreVec3(Vec3& to, const Vec3& v) { to.x = v.x, to.y = v.y, to.z = v.z; }
+
 // Geometry of the contact between listed partners i < j, or false if they are not in contact.
 template <class Model>
 DEMCAL_HOT_INLINE bool PairGeometry(const Particles& p, size_t i, uint32_t j, bool was_in_contact,
@@ -33,16 +35,23 @@ DEMCAL_HOT_INLINE bool PairGeometry(const Particles& p, size_t i, uint32_t j, bo
   g.overlap_m = rsum - dist;
   g.effective_radius_m = ri * rj / rsum;
   if (!Model::InContact(g.overlap_m, was_in_contact, g.effective_radius_m, pair)) return false;
-  g.normal = d * (1.0 / dist);
+  // Computed in locals and stored component by component: GCC otherwise copies a Vec3 through
+  // a stack temporary whose 16-byte reload straddles two 8-byte stores, and the failed store
+  // forwarding stalled this loop by ~10 % (perf annotate). It also cannot prove that g does not
+  // alias p, so it would reload g's fields.
+  const Vec3 normal = d * (1.0 / dist);
+  const double mi = p.mass_kg[i], mj = p.mass_kg[j];
+  const Vec3 wi = p.angular_velocity_rad_s[i], wj = p.angular_velocity_rad_s[j];
+  const Vec3 v = p.velocity_m_s[i] - p.velocity_m_s[j] - Cross(ri * wi + rj * wj, normal);
+  StoreVec3(g.normal, normal);
   g.radius_i_m = ri;
   g.radius_j_m = rj;
-  g.mass_i_kg = p.mass_kg[i];
-  g.mass_j_kg = p.mass_kg[j];
-  g.effective_mass_kg = g.mass_i_kg * g.mass_j_kg / (g.mass_i_kg + g.mass_j_kg);
-  g.omega_i = p.angular_velocity_rad_s[i];
-  g.omega_j = p.angular_velocity_rad_s[j];
-  g.relative_velocity_m_s =
-      p.velocity_m_s[i] - p.velocity_m_s[j] - Cross(ri * g.omega_i + rj * g.omega_j, g.normal);
+  g.mass_i_kg = mi;
+  g.mass_j_kg = mj;
+  g.effective_mass_kg = mi * mj / (mi + mj);
+  StoreVec3(g.omega_i, wi);
+  StoreVec3(g.omega_j, wj);
+  StoreVec3(g.relative_velocity_m_s, v);
   return true;
 }
 
@@ -53,7 +62,7 @@ DEMCAL_HOT_INLINE bool ContactForces::EvaluatePair(const Particles& p, const Int
   ContactGeometry g;
   const ResolvedPair& pair = table.Get(p.material[i], p.material[j]);
   if (!PairGeometry<Model>(p, i, j, pair_active_[k], pair, periodic_.Any() ? &periodic_ : nullptr, g)) {
-    if (pair_active_[k]) pair_history_[k] = ContactHistory{}, pair_active_[k] = 0;
+    EndContact(k);
     return false;
   }
   out = model.Evaluate(g, pair, dt, pair_history_[k]);
@@ -90,7 +99,10 @@ void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
     p.torque_N_m[i] = t;
   }
   size_t ready = c;  // chunks up to `ready` have their incoming cross pairs evaluated
-  uint32_t* const touching = touching_scratch_[c].data();
+  RowScratch& scratch = row_scratch_[c];
+  uint32_t* const touching = scratch.touching.data();
+  ContactGeometry* const geometry = scratch.geometry.data();
+  uint8_t* const in_contact = scratch.in_contact.data();
   const PeriodicBox* box = periodic_.Any() ? &periodic_ : nullptr;
   for (uint32_t i = begin; i < end; ++i) {
     Vec3& fi = p.force_N[i];
@@ -113,7 +125,17 @@ void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
       const double rsum = ri + p.radius_m[j];
       n += static_cast<uint32_t>(Norm2(d) < rsum * rsum) | pair_active_[k];
     }
-    // Pass 2: the contributions in entry order (the serial sweep's summation order).
+    // Pass 2: the geometry of every own pair of the row. Pairs are independent here, so the
+    // square roots and divisions of several pairs overlap in the pipeline; evaluated one after
+    // another with their forces, each pair's chain of them set the pace.
+    for (uint32_t m = 0; m < n; ++m) {
+      const uint32_t k = touching[m];
+      const uint32_t j = list.Partner(k);
+      if (j >= end && j < moving) continue;
+      const ResolvedPair& pair = table.Get(p.material[i], p.material[j]);
+      in_contact[m] = PairGeometry<Model>(p, i, j, pair_active_[k], pair, box, geometry[m]);
+    }
+    // Pass 3: the contributions in entry order (the serial sweep's summation order).
     for (uint32_t m = 0; m < n; ++m) {
       const uint32_t k = touching[m];
       const uint32_t j = list.Partner(k);
@@ -122,8 +144,13 @@ void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
         ti += pair_result_[k].torque_i;
         continue;
       }
-      ContactResult r;
-      if (!EvaluatePair(p, table, model, dt, i, k, j, r)) continue;
+      if (!in_contact[m]) {
+        EndContact(k);
+        continue;
+      }
+      const ResolvedPair& pair = table.Get(p.material[i], p.material[j]);
+      const ContactResult r = model.Evaluate(geometry[m], pair, dt, pair_history_[k]);
+      pair_active_[k] = 1;
       fi += r.force_i;
       ti += r.torque_i;
       if (j >= moving) continue;  // a fixed sphere needs no force (and other chunks touch it)
@@ -147,8 +174,12 @@ void ContactForces::PlanChunks(const NeighbourList& list) {
   uint32_t longest_row = 0;
   for (size_t i = 0; i < list.FirstFixed(); ++i)
     longest_row = std::max(longest_row, list.RowEnd(i) - list.RowBegin(i));
-  touching_scratch_.resize(chunks);
-  for (std::vector<uint32_t>& s : touching_scratch_) s.resize(longest_row + 1);
+  row_scratch_.resize(chunks);
+  for (RowScratch& s : row_scratch_) {
+    s.touching.resize(longest_row + 1);
+    s.geometry.resize(longest_row + 1);
+    s.in_contact.resize(longest_row + 1);
+  }
   plan_stale_ = false;
   planned_list_ = &list;
 }

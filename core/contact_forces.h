@@ -78,6 +78,10 @@ class ContactForces {
   template <class Model>
   bool EvaluatePair(const Particles& p, const InteractionTable& table, const Model& model,
                     double dt, size_t i, uint32_t k, uint32_t j, ContactResult& out);
+  // A listed pair out of contact: its history is cleared (a new contact starts from zero).
+  void EndContact(uint32_t k) {
+    if (pair_active_[k]) pair_history_[k] = ContactHistory{}, pair_active_[k] = 0;
+  }
   template <class Model>
   void SumChunk(Particles& p, const NeighbourList& list, const std::vector<Wall>& walls,
                 const InteractionTable& table, const Model& model, const Vec3& gravity,
@@ -96,7 +100,12 @@ class ContactForces {
   const NeighbourList* planned_list_ = nullptr;
   WallContacts walls_;
   std::vector<std::vector<MeshContact>> mesh_scratch_;  // one per chunk, reused
-  std::vector<std::vector<uint32_t>> touching_scratch_;  // per chunk: a row's contributing entries
+  struct RowScratch {  // per chunk, reused row after row
+    std::vector<uint32_t> touching;        // the row's entries that may contribute
+    std::vector<ContactGeometry> geometry; // their geometry (own pairs)
+    std::vector<uint8_t> in_contact;       // whether each is in contact
+  };
+  std::vector<RowScratch> row_scratch_;
 };
 
 }  // namespace demcal::core
