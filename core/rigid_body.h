@@ -53,6 +53,20 @@ inline Vec3 Omega(const Quaternion& q, const Vec3& l, const Vec3& inverse_inerti
 inline Quaternion Turn(const Vec3& omega, double dt, const Quaternion& q) {
   return Quaternion::FromRotationVector(omega * dt) * q;
 }
+
+// The midpoint drift in its two halves, for loops over many bodies that run all first halves,
+// then all second halves (ParticleSystem::KickDrift): each half is a long chain of dependent
+// operations, and shorter loop bodies let the processor overlap several bodies' chains.
+//   the orientation half a step on at the start ω;
+inline Quaternion MidpointHalfTurn(const RigidState& s, const Vec3& inverse_inertia, double dt) {
+  const Quaternion& q = s.orientation;
+  return Turn(Omega(q, s.angular_momentum_kg_m2_s, inverse_inertia), 0.5 * dt, q);
+}
+//   the start orientation turned a full step at the ω of the half-turned one, renormalised.
+inline Quaternion MidpointFullTurn(const RigidState& s, const Quaternion& half,
+                                   const Vec3& inverse_inertia, double dt) {
+  return Normalized(Turn(Omega(half, s.angular_momentum_kg_m2_s, inverse_inertia), dt, s.orientation));
+}
 }  // namespace rigid_detail
 
 // ω in the space frame: A I⁻¹ Aᵀ L.
@@ -80,24 +94,22 @@ inline void Drift(RigidState& state, const Vec3& principal_inertia_kg_m2, double
   const Quaternion q = state.orientation;
   const Vec3& l = state.angular_momentum_kg_m2_s;
   const Vec3 inverse_inertia = rigid_detail::Reciprocal(principal_inertia_kg_m2);
-  const Vec3 w0 = Omega(q, l, inverse_inertia);
-  Quaternion next;
-  switch (scheme) {
-    case DriftScheme::kFrozen:
-      next = Turn(w0, dt_s, q);
-      break;
-    case DriftScheme::kMidpoint:
-      next = Turn(Omega(Turn(w0, 0.5 * dt_s, q), l, inverse_inertia), dt_s, q);
-      break;
-    case DriftScheme::kRichardson: {
-      const Quaternion full = Turn(w0, dt_s, q);
-      const Quaternion half = Turn(w0, 0.5 * dt_s, q);
-      const Quaternion two_halves = Turn(Omega(half, l, inverse_inertia), 0.5 * dt_s, half);
-      next = {2 * two_halves.w - full.w, 2 * two_halves.x - full.x, 2 * two_halves.y - full.y,
-              2 * two_halves.z - full.z};
-      break;
-    }
+  if (scheme == DriftScheme::kMidpoint) {
+    const Quaternion half = rigid_detail::MidpointHalfTurn(state, inverse_inertia, dt_s);
+    state.orientation = rigid_detail::MidpointFullTurn(state, half, inverse_inertia, dt_s);
+    return;
   }
+  const Vec3 w0 = Omega(q, l, inverse_inertia);
+  if (scheme == DriftScheme::kFrozen) {
+    state.orientation = Normalized(Turn(w0, dt_s, q));
+    return;
+  }
+  // kRichardson
+  const Quaternion full = Turn(w0, dt_s, q);
+  const Quaternion half = Turn(w0, 0.5 * dt_s, q);
+  const Quaternion two_halves = Turn(Omega(half, l, inverse_inertia), 0.5 * dt_s, half);
+  const Quaternion next{2 * two_halves.w - full.w, 2 * two_halves.x - full.x,
+                        2 * two_halves.y - full.y, 2 * two_halves.z - full.z};
   state.orientation = Normalized(next);
 }
 
