@@ -231,14 +231,20 @@ void ContactForces::RemapPairs(const NeighbourList& old_list, const NeighbourLis
                                const std::vector<uint32_t>& order) {
   const size_t n = new_list.RowsCount();
   auto old_slot = [&](uint32_t s) { return order.empty() ? s : order[s]; };
-  std::vector<ContactHistory> history(new_list.PairCount());
-  std::vector<uint8_t> active(new_list.PairCount(), 0);
+  std::vector<ContactHistory>& history = spare_history_;
+  std::vector<uint8_t>& active = spare_active_;
+  history.resize(new_list.PairCount());  // every entry is written below
+  active.resize(new_list.PairCount());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& range) {
     for (size_t i = range.begin(); i != range.end(); ++i) {
       for (uint32_t k = new_list.RowBegin(i); k < new_list.RowEnd(i); ++k) {
         const uint32_t a = old_slot(i), b = old_slot(new_list.Partner(k));
         const int64_t e = old_list.Find(std::min(a, b), std::max(a, b));
-        if (e < 0 || !pair_active_[e]) continue;
+        if (e < 0 || !pair_active_[e]) {
+          history[k] = ContactHistory{};
+          active[k] = 0;
+          continue;
+        }
         history[k] = pair_history_[e];
         active[k] = 1;
         if (a > b) {  // i and j swapped roles: the relative displacement changes sign

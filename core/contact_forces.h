@@ -94,6 +94,10 @@ class ContactForces {
   std::vector<ContactHistory> pair_history_;  // aligned with NeighbourList entries
   std::vector<ContactResult> pair_result_;    // cross pairs only, aligned with entries
   std::vector<uint8_t> pair_active_;
+  // The previous list's arrays, kept as RemapPairs' destination: a pour rebuilds every ~12 steps,
+  // and fresh pair-sized arrays each time cost an allocation and a clearing pass.
+  std::vector<ContactHistory> spare_history_;
+  std::vector<uint8_t> spare_active_;
   PeriodicBox periodic_;
   SweepChunks chunks_;
   bool plan_stale_ = true;                    // chunks_ predates the list or the thread count

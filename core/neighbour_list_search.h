@@ -55,7 +55,11 @@ void NeighbourList::ForEachCandidate(const Grid& grid, size_t i, const std::vect
       const int row = (cells[2][cz] * grid.ny + cells[1][cy]) * grid.nx;
       for (int cx = 0; cx < count[0]; ++cx) {
         const int cell = row + cells[0][cx];
-        for (uint32_t s = cell_start_[cell]; s < cell_start_[cell + 1]; ++s) {
+        const uint32_t first = cell_start_[cell], last = cell_start_[cell + 1];
+        // A cell lists its particles in ascending slot order, and slots are kept in cell order
+        // (Simulation's periodic re-sort): about half the cells hold only j < i, skipped whole.
+        if (kUpperOnly && (first == last || cell_particles_[last - 1] <= i)) continue;
+        for (uint32_t s = first; s < last; ++s) {
           const uint32_t j = cell_particles_[s];
           if ((kUpperOnly ? j <= i : j == i) || (own_body >= 0 && (*body)[j] == own_body)) continue;
           const double reach = r[i] + r[j] + skin;

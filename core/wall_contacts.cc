@@ -12,8 +12,11 @@ bool WithinSkin(const Wall& wall, const Vec3& x, double radius, double skin_m,
                 double adhesive_gap_m, std::vector<int32_t>& triangles) {
   if (const auto* plane = std::get_if<PlaneSurface>(&wall.shape))
     return Dot(x - plane->point_m, plane->normal) - radius <= skin_m;
-  if (const auto* cylinder = std::get_if<CylinderSurface>(&wall.shape))
+  if (const auto* cylinder = std::get_if<CylinderSurface>(&wall.shape)) {
+    double gap;
+    if (CylinderSideDistance(*cylinder, wall.shell, x, gap)) return gap - radius <= skin_m;
     return ShellSide(wall, ClosestOnCylinder(*cylinder, x)).distance_m - radius <= skin_m;
+  }
   if (const auto* cone = std::get_if<ConeFrustumSurface>(&wall.shape))
     return ShellSide(wall, ClosestOnConeFrustum(*cone, x)).distance_m - radius <= skin_m;
   const MeshRef& mesh = std::get<MeshRef>(wall.shape);

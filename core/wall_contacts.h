@@ -219,6 +219,10 @@ DEMCAL_HOT_INLINE void WallContacts::Sum(const Particles& p, uint32_t i, const s
       const double overlap = p.radius_m[i] - Dot(p.position_m[i] - plane->point_m, plane->normal);
       SumOne(p, i, e, velocity_[w], plane->normal, overlap, pair, model, dt, fi, ti);
     } else if (const auto* cylinder = std::get_if<CylinderSurface>(&wall.shape)) {
+      double gap;
+      if (!active_[e] && CylinderSideDistance(*cylinder, wall.shell, p.position_m[i], gap) &&
+          !(p.radius_m[i] - gap > 0))
+        continue;  // not touching: what SumOne would conclude, at a fraction of the cost
       const WallProximity near = ShellSide(wall, ClosestOnCylinder(*cylinder, p.position_m[i]));
       SumOne(p, i, e, velocity_[w], near.normal, p.radius_m[i] - near.distance_m, pair, model, dt,
              fi, ti);

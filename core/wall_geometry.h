@@ -20,6 +20,7 @@
 //                             .height1_m = 0.1, .radius1_m = 0.05};   // top
 //   const WallProximity w = ClosestOnConeFrustum(funnel, centre);
 //   if (radius - w.distance_m > 0) { /* contact along w.normal */ }
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -71,6 +72,20 @@ struct ConeFrustumSurface {
 
 WallProximity ClosestOnPlane(const PlaneSurface& plane, const Vec3& centre_m);
 WallProximity ClosestOnCylinder(const CylinderSurface& cylinder, const Vec3& centre_m);
+// ClosestOnCylinder's distance_m (made unsigned for a shell, as ShellSide does) when the centre
+// lies within the axial range; false beyond it, where the nearest point is on a rim. The same
+// arithmetic without the normal's division: the contact sweep and the wall rebuild ask it first,
+// since most of a silo's grains near the wall are not touching it.
+inline bool CylinderSideDistance(const CylinderSurface& cyl, bool shell, const Vec3& centre_m,
+                                 double& distance_m) {
+  const Vec3 d = centre_m - cyl.axis_point_m;
+  const double h = Dot(d, cyl.axis);
+  if (!(h >= cyl.axial_min_m && h <= cyl.axial_max_m)) return false;
+  const double side = cyl.inside ? -1.0 : 1.0;
+  const double distance = side * (Norm(d - h * cyl.axis) - cyl.radius_m);
+  distance_m = shell ? std::abs(distance) : distance;
+  return true;
+}
 WallProximity ClosestOnConeFrustum(const ConeFrustumSurface& cone, const Vec3& centre_m);
 
 // Which feature of triangle (v0, v1, v2) holds the closest point. Edge k joins v_k and v_{k+1}

@@ -177,6 +177,36 @@ TEST_CASE("cylinder rim: beyond a finite end the nearest point is on the rim cir
   CHECK(ClosestOnCylinder(cyl, {0.9, 0, 1}).normal.x == Approx(-1));
 }
 
+TEST_CASE("cylinder side distance is exactly ClosestOnCylinder's on the open surface",
+          "[unit][geometry]") {
+  // The contact sweep and the wall rebuild decide "not touching" from CylinderSideDistance and
+  // only then ask ClosestOnCylinder: the two must agree to the last bit, or results would depend
+  // on which path a candidate took.
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int level = 0, beyond = 0;
+  for (const bool inside : {true, false}) {
+    for (const bool shell : {true, false}) {
+      CylinderSurface cyl{.axis_point_m = {0.1, -0.2, 0.3}, .axis = Unit(Vec3{0.2, 0.3, 1}),
+                          .radius_m = 0.5, .axial_min_m = -0.4, .axial_max_m = 0.6,
+                          .inside = inside};
+      for (int trial = 0; trial < 200; ++trial) {
+        const Vec3 p = cyl.axis_point_m + Vec3{1.2 * u(rng), 1.2 * u(rng), 1.2 * u(rng)};
+        WallProximity w = ClosestOnCylinder(cyl, p);
+        if (shell && w.distance_m < 0) w.distance_m = -w.distance_m;  // ShellSide
+        double d = -1;
+        const bool level_with_side = CylinderSideDistance(cyl, shell, p, d);
+        INFO("inside " << inside << " shell " << shell << " trial " << trial);
+        CHECK(level_with_side == !w.on_edge);
+        if (level_with_side) CHECK(d == w.distance_m);  // bit for bit, not approximately
+        level += level_with_side, beyond += !level_with_side;
+      }
+    }
+  }
+  CHECK(level > 100);
+  CHECK(beyond > 100);
+}
+
 TEST_CASE("cone frustum closest point matches dense sampling", "[unit][geometry]") {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(-1, 1);
