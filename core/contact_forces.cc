@@ -61,7 +61,17 @@ DEMCAL_HOT_INLINE bool ContactForces::EvaluatePair(const Particles& p, const Int
                                  ContactResult& out) {
   ContactGeometry g;
   const ResolvedPair& pair = table.Get(p.material[i], p.material[j]);
-  if (!PairGeometry<Model>(p, i, j, pair_active_[k], pair, periodic_.Any() ? &periodic_ : nullptr, g)) {
+  const bool touching =
+      PairGeometry<Model>(p, i, j, pair_active_[k], pair, periodic_.Any() ? &periodic_ : nullptr, g);
+  return ResolveContact(k, touching, g, pair, model, dt, out);
+}
+
+template <class Model>
+DEMCAL_HOT_INLINE bool ContactForces::ResolveContact(uint32_t k, bool in_contact,
+                                                     const ContactGeometry& g,
+                                                     const ResolvedPair& pair, const Model& model,
+                                                     double dt, ContactResult& out) {
+  if (!in_contact) {
     EndContact(k);
     return false;
   }
@@ -144,13 +154,9 @@ void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
         ti += pair_result_[k].torque_i;
         continue;
       }
-      if (!in_contact[m]) {
-        EndContact(k);
-        continue;
-      }
+      ContactResult r;
       const ResolvedPair& pair = table.Get(p.material[i], p.material[j]);
-      const ContactResult r = model.Evaluate(geometry[m], pair, dt, pair_history_[k]);
-      pair_active_[k] = 1;
+      if (!ResolveContact(k, in_contact[m], geometry[m], pair, model, dt, r)) continue;
       fi += r.force_i;
       ti += r.torque_i;
       if (j >= moving) continue;  // a fixed sphere needs no force (and other chunks touch it)

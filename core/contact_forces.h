@@ -82,6 +82,10 @@ class ContactForces {
   void EndContact(uint32_t k) {
     if (pair_active_[k]) pair_history_[k] = ContactHistory{}, pair_active_[k] = 0;
   }
+  // Ends contact k when out of contact, else evaluates it into `out` and marks it active.
+  template <class Model>
+  bool ResolveContact(uint32_t k, bool in_contact, const ContactGeometry& g,
+                      const ResolvedPair& pair, const Model& model, double dt, ContactResult& out);
   template <class Model>
   void SumChunk(Particles& p, const NeighbourList& list, const std::vector<Wall>& walls,
                 const InteractionTable& table, const Model& model, const Vec3& gravity,
