@@ -23,12 +23,9 @@ struct AxialFrame {
 };
 
 AxialFrame ToAxial(const Vec3& axis_point, const Vec3& axis, const Vec3& p) {
-  const Vec3 d = p - axis_point;
-  const double h = Dot(d, axis);
-  const Vec3 radial = d - h * axis;
-  const double r = Norm(radial);
-  if (r > 0) return {h, r, radial / r};
-  return {h, 0.0, AnyPerpendicular(axis)};
+  const AxialOffset a = ToAxialOffset(axis_point, axis, p);
+  if (a.radius > 0) return {a.height, a.radius, a.radial / a.radius};
+  return {a.height, 0.0, AnyPerpendicular(axis)};
 }
 
 // Lifts a meridian-plane vector (radial, axial components) back to 3D.

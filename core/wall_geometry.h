@@ -72,17 +72,30 @@ struct ConeFrustumSurface {
 
 WallProximity ClosestOnPlane(const PlaneSurface& plane, const Vec3& centre_m);
 WallProximity ClosestOnCylinder(const CylinderSurface& cylinder, const Vec3& centre_m);
+// Height of p along `axis` from `axis_point`, and its offset from the axis (unnormalised): the
+// axial coordinates every surface of revolution starts from (wall_geometry.cc's ToAxial).
+struct AxialOffset {
+  double height;
+  double radius;
+  Vec3 radial;  // p's offset from the axis, of length `radius`
+};
+inline AxialOffset ToAxialOffset(const Vec3& axis_point, const Vec3& axis, const Vec3& p) {
+  const Vec3 d = p - axis_point;
+  const double h = Dot(d, axis);
+  const Vec3 radial = d - h * axis;
+  return {h, Norm(radial), radial};
+}
+
 // ClosestOnCylinder's distance_m (made unsigned for a shell, as ShellSide does) when the centre
 // lies within the axial range; false beyond it, where the nearest point is on a rim. The same
-// arithmetic without the normal's division: the contact sweep and the wall rebuild ask it first,
-// since most of a silo's grains near the wall are not touching it.
+// axial coordinates without the normal's division: the contact sweep and the wall rebuild ask it
+// first, since most of a silo's grains near the wall are not touching it.
 inline bool CylinderSideDistance(const CylinderSurface& cyl, bool shell, const Vec3& centre_m,
                                  double& distance_m) {
-  const Vec3 d = centre_m - cyl.axis_point_m;
-  const double h = Dot(d, cyl.axis);
-  if (!(h >= cyl.axial_min_m && h <= cyl.axial_max_m)) return false;
+  const AxialOffset a = ToAxialOffset(cyl.axis_point_m, cyl.axis, centre_m);
+  if (!(a.height >= cyl.axial_min_m && a.height <= cyl.axial_max_m)) return false;
   const double side = cyl.inside ? -1.0 : 1.0;
-  const double distance = side * (Norm(d - h * cyl.axis) - cyl.radius_m);
+  const double distance = side * (a.radius - cyl.radius_m);
   distance_m = shell ? std::abs(distance) : distance;
   return true;
 }
