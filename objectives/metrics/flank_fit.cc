@@ -16,6 +16,22 @@ double RelativeHeight(const SurfacePoint& p, const HeightWindow& w) {
   return (p.top_m - w.base_z_m) / w.heap_height_m;
 }
 
+// The outward profile with the floor where no grain is (HeightWindow::cell_m): a floor point one
+// cell past a point followed by a gap of two cells or more, and one past the outermost point.
+std::vector<SurfacePoint> WithFloor(const std::vector<SurfacePoint>& profile,
+                                    const HeightWindow& w) {
+  if (!(w.cell_m > 0) || profile.empty()) return profile;
+  std::vector<SurfacePoint> out;
+  out.reserve(profile.size() + 2);
+  for (size_t i = 0; i < profile.size(); ++i) {
+    out.push_back(profile[i]);
+    const bool last = i + 1 == profile.size();
+    if (last || profile[i + 1].s_m - profile[i].s_m >= 2 * w.cell_m)
+      out.push_back({profile[i].s_m + w.cell_m, w.base_z_m});
+  }
+  return out;
+}
+
 // s where the profile, walked outward, first drops to `level` (fraction of H), by linear
 // interpolation between the last point above and the first at or below. False when the first
 // point is already below (the crossing is not seen) or the profile never gets there.
@@ -39,8 +55,9 @@ bool OutwardCrossing(const std::vector<SurfacePoint>& profile, const HeightWindo
 void TwoPointAngle(const std::vector<SurfacePoint>& profile, const HeightWindow& w,
                    FlankFit* flank, double* s_high_m = nullptr, double* s_low_m = nullptr) {
   double s_high = 0, s_low = 0;
-  flank->two_point_ok = OutwardCrossing(profile, w, w.high, &s_high) &&
-                        OutwardCrossing(profile, w, w.low, &s_low) && s_low > s_high;
+  const std::vector<SurfacePoint> surface = WithFloor(profile, w);
+  flank->two_point_ok = OutwardCrossing(surface, w, w.high, &s_high) &&
+                        OutwardCrossing(surface, w, w.low, &s_low) && s_low > s_high;
   if (s_high_m) *s_high_m = s_high;
   if (s_low_m) *s_low_m = s_low;
   flank->two_point_angle_deg =

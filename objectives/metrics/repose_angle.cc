@@ -59,7 +59,8 @@ bool Prepare(const Snapshot& snapshot, const ReposeAngleOptions& options, Repose
 }
 
 HeightWindow WindowOf(const ReposeAngle& result, const ReposeAngleOptions& options) {
-  return {options.base_z_m, result.heap_height_m, options.window_low, options.window_high};
+  return {options.base_z_m, result.heap_height_m, options.window_low, options.window_high,
+          result.cell_m};
 }
 
 // Fits one flank and keeps it, or notes why it was left out.

@@ -9,7 +9,8 @@
 //     by least squares, top = intercept + slope·s (s = horizontal distance from the apex/axis);
 //  4. angle = atan(|slope|); the result is the mean over flanks, with their spread.
 // Each flank also carries the paper's own two-point value: the horizontal distance between the
-// surface points at 10% and 90% of the heap height (Fig. 5).
+// surface points at 10% and 90% of the heap height (Fig. 5); where no grain is, the surface is
+// the floor (base_z_m), so a cliff-edged flank on a glued base still falls through 10% of H.
 // A flank with too few points is left out (a heap poured against a wall has one flank); with no
 // usable flank the result has ok = false and a message, never NaN. Pure functions, thread-safe.
 //

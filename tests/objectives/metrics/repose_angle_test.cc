@@ -225,3 +225,47 @@ TEST_CASE("slot heap: a steep flank too short to fit is read by the paper's two 
     CHECK(f.intercept_m + f.slope * f.s_max_m == Approx(0.1 * a.heap_height_m).margin(1e-9));
   }
 }
+
+TEST_CASE("slot heap: a cliff-edged flank on a glued base falls to the floor past its last grain",
+          "[unit]") {
+  // A cohesive heap on a glued base (whose spheres are not in the heap snapshot) can end in a
+  // cliff: its outermost grains sit well above 10% of H and beyond them the profile has no
+  // points. The surface there is the floor, one cell past the outermost profile point, so the 10%
+  // crossing lies within a cell of that point; the point itself (the highest sphere of its cell,
+  // the innermost on a descending flank) lies within a cell inside the outermost grain. So the
+  // crossing is within a cell of the last grain either way, which bounds the two-point angle
+  // (geometry of Fig. 5).
+  SlotHeapShape cliff{.left_deg = 70, .right_deg = 70, .half_width_m = 0.010};
+  const Snapshot heap = SlotHeap(cliff, kDiameter, {});
+  ReposeAngleOptions options;
+  options.method = ReposeAngleOptions::Method::kTwoPoint;
+  const ReposeAngle a = MeasureSlotHeapAngle(heap, options);
+  INFO(a.message);
+  REQUIRE(a.ok);
+  REQUIRE(a.flanks.size() == 2);
+  const double t = 70 * std::numbers::pi / 180;
+  const double rise = 0.8 * a.heap_height_m;
+  const double s_high = 0.1 * a.heap_height_m / std::tan(t);  // the 90% crossing on the line
+  const double s_last = cliff.half_width_m;                   // the outermost grain
+  const double steepest = std::atan(rise / (s_last - a.cell_m - s_high)) * 180 / std::numbers::pi;
+  const double shallowest =
+      std::atan(rise / (s_last + a.cell_m - s_high)) * 180 / std::numbers::pi;
+  for (const FlankFit& f : a.flanks) {
+    CHECK(f.angle_deg <= steepest + 1e-9);
+    CHECK(f.angle_deg >= shallowest - 1e-9);
+  }
+
+  // A lone grain on the floor far out, past an empty stretch, is not part of the flank: the
+  // reading is the same with it (without the gap rule the 10% crossing would be interpolated
+  // out to it and the angle would drop by about 15 degrees).
+  Snapshot with_stray = heap;
+  const demcal::objectives::Vec3 far{0.035, 0, kDiameter / 2};
+  with_stray.spheres.push_back({far, kDiameter / 2, static_cast<int>(with_stray.grains.size())});
+  with_stray.grains.push_back({static_cast<int64_t>(with_stray.grains.size()), 0, far, {},
+                               kDiameter / 2, 1e-5});
+  const ReposeAngle b = MeasureSlotHeapAngle(with_stray, options);
+  REQUIRE(b.ok);
+  REQUIRE(b.flanks.size() == 2);
+  CHECK(b.flanks[1].angle_deg == Approx(a.flanks[1].angle_deg).epsilon(1e-12));
+  CHECK(b.flanks[0].angle_deg == Approx(a.flanks[0].angle_deg).epsilon(1e-12));
+}
