@@ -37,6 +37,17 @@ double TwoPointTolerance(double angle_deg, double delta_h_m, double sigma_m) {
   return 4 * se_rad * 180 / std::numbers::pi;
 }
 
+// Both flanks of a slot heap read by the paper's two points alone (Fig. 5).
+ReposeAngle TwoPointReading(const Snapshot& heap) {
+  ReposeAngleOptions options;
+  options.method = ReposeAngleOptions::Method::kTwoPoint;
+  const ReposeAngle a = MeasureSlotHeapAngle(heap, options);
+  INFO(a.message);
+  REQUIRE(a.ok);
+  REQUIRE(a.flanks.size() == 2);
+  return a;
+}
+
 }  // namespace
 
 TEST_CASE("slot heap: a 30 and a 40 degree triangle give their angle exactly", "[unit]") {
@@ -209,12 +220,7 @@ TEST_CASE("slot heap: a steep flank too short to fit is read by the paper's two 
   const Snapshot heap = SlotHeap({.left_deg = 70, .right_deg = 70}, kDiameter, {});
   const ReposeAngle fit = MeasureSlotHeapAngle(heap, {});
   CHECK_FALSE(fit.ok);
-  ReposeAngleOptions options;
-  options.method = ReposeAngleOptions::Method::kTwoPoint;
-  const ReposeAngle a = MeasureSlotHeapAngle(heap, options);
-  INFO(a.message);
-  REQUIRE(a.ok);
-  REQUIRE(a.flanks.size() == 2);
+  const ReposeAngle a = TwoPointReading(heap);
   const double t = 70 * std::numbers::pi / 180;
   const double bound_deg = std::sin(t) * std::cos(t) * a.cell_m /
                            (0.8 * a.heap_height_m / std::tan(t)) * 180 / std::numbers::pi;
@@ -237,12 +243,7 @@ TEST_CASE("slot heap: a cliff-edged flank on a glued base falls to the floor pas
   // (geometry of Fig. 5).
   SlotHeapShape cliff{.left_deg = 70, .right_deg = 70, .half_width_m = 0.010};
   const Snapshot heap = SlotHeap(cliff, kDiameter, {});
-  ReposeAngleOptions options;
-  options.method = ReposeAngleOptions::Method::kTwoPoint;
-  const ReposeAngle a = MeasureSlotHeapAngle(heap, options);
-  INFO(a.message);
-  REQUIRE(a.ok);
-  REQUIRE(a.flanks.size() == 2);
+  const ReposeAngle a = TwoPointReading(heap);
   const double t = 70 * std::numbers::pi / 180;
   const double rise = 0.8 * a.heap_height_m;
   const double s_high = 0.1 * a.heap_height_m / std::tan(t);  // the 90% crossing on the line
@@ -263,9 +264,7 @@ TEST_CASE("slot heap: a cliff-edged flank on a glued base falls to the floor pas
   with_stray.spheres.push_back({far, kDiameter / 2, static_cast<int>(with_stray.grains.size())});
   with_stray.grains.push_back({static_cast<int64_t>(with_stray.grains.size()), 0, far, {},
                                kDiameter / 2, 1e-5});
-  const ReposeAngle b = MeasureSlotHeapAngle(with_stray, options);
-  REQUIRE(b.ok);
-  REQUIRE(b.flanks.size() == 2);
+  const ReposeAngle b = TwoPointReading(with_stray);
   CHECK(b.flanks[1].angle_deg == Approx(a.flanks[1].angle_deg).epsilon(1e-12));
   CHECK(b.flanks[0].angle_deg == Approx(a.flanks[0].angle_deg).epsilon(1e-12));
 }
