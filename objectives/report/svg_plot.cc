@@ -10,7 +10,20 @@ namespace demcal::objectives {
 
 namespace {
 
-constexpr double kLeft = 80, kRight = 150, kTop = 40, kBottom = 60;  // margins, px
+constexpr double kLeft = 80, kTop = 40, kBottom = 60;  // margins, px
+
+// Right margin: room for the longest legend label, so a long one is not cut off at the edge.
+// 12 px sans-serif averages under 7 px per character (DejaVu Sans, Chromium's default); the
+// legend's line and gap take 45 px. At least 150 px; at most half the width, so a plot remains.
+double RightMargin(const SvgPlot& plot) {
+  size_t longest = 0;
+  for (const PlotSeries& s : plot.series) {
+    size_t characters = 0;  // UTF-8 code points: every byte but continuation bytes 10xxxxxx
+    for (unsigned char c : s.label) characters += (c & 0xC0) != 0x80;
+    longest = std::max(longest, characters);
+  }
+  return std::clamp(45 + 7.0 * static_cast<double>(longest), 150.0, 0.5 * plot.width_px);
+}
 
 struct Range {
   double lo = INFINITY, hi = -INFINITY;
@@ -67,7 +80,7 @@ class Chart {
       : plot_(plot),
         x_(x),
         y_(y),
-        w_(plot.width_px - kLeft - kRight),
+        w_(plot.width_px - kLeft - RightMargin(plot)),
         h_(plot.height_px - kTop - kBottom),
         px_{x.lo, x.hi, kLeft, kLeft + w_},
         py_{y.lo, y.hi, kTop + h_, kTop} {}
@@ -85,7 +98,8 @@ class Chart {
     }
     svg.Text(kLeft + w_ / 2, plot_.height_px - 15, plot_.x_label, 12, "middle");
     svg.Text(kLeft, kTop - 8, plot_.y_label, 12, "middle");
-    svg.Text(kLeft + w_ / 2, 18, plot_.title, 14, "middle");
+    // Centred on the image, not the frame: a wide legend margin would push a long title off.
+    svg.Text(plot_.width_px / 2.0, 18, plot_.title, 14, "middle");
   }
 
   void Series(SvgCanvas& svg, const PlotSeries& s) const {
@@ -134,7 +148,7 @@ namespace {
 SvgCanvas Draw(const SvgPlot& plot) {
   Range x, y;
   Bounds(plot, &x, &y);
-  const double w = plot.width_px - kLeft - kRight, h = plot.height_px - kTop - kBottom;
+  const double w = plot.width_px - kLeft - RightMargin(plot), h = plot.height_px - kTop - kBottom;
   if (plot.equal_aspect) EqualAspect(w, h, &x, &y);
   const Chart chart(plot, x, y);
   SvgCanvas svg(plot.width_px, plot.height_px);

@@ -111,3 +111,21 @@ TEST_CASE("discharge plots: mass with the fit, composition as steps", "[unit]") 
   CHECK(composition.series[1].y.size() == 2 * 4);
   for (double f : composition.series[1].y) CHECK(f == Approx(0.1));
 }
+
+TEST_CASE("svg plot: a long legend label gets the room it needs", "[unit]") {
+  // Reproduce's Fig. 7 style plot cut "demcal at calibrated Γ ± sem" at the image's right edge.
+  // The label must end inside the image at 7 px per character (12 px sans-serif averages less).
+  const std::string label = "demcal at calibrated Γ ± sem, a longer label";
+  SvgPlot plot{.title = "t", .x_label = "x", .y_label = "y"};
+  plot.series.push_back({.label = label, .x = {0, 1}, .y = {0, 1}});
+  const std::string svg = RenderSvg(plot);
+  std::smatch m;
+  REQUIRE(std::regex_search(svg, m, std::regex("<text x=\"([0-9.]+)\"[^>]*>demcal at")));
+  const double start_px = std::stod(m[1]);
+  const double characters = 44;  // the label's code points (Γ and ± are one each)
+  CHECK(start_px + 7 * characters <= plot.width_px);
+  // A short label keeps the usual plot area (frame 490 px wide in a 720 px image).
+  SvgPlot short_label = plot;
+  short_label.series[0].label = "data";
+  CHECK(RenderSvg(short_label).find("width=\"490.00\"") != std::string::npos);
+}
