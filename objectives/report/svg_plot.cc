@@ -25,6 +25,9 @@ double RightMargin(const SvgPlot& plot) {
   return std::clamp(45 + 7.0 * static_cast<double>(longest), 150.0, 0.5 * plot.width_px);
 }
 
+// Width of the plot frame: the image less the left and right margins.
+double FrameWidth(const SvgPlot& plot) { return plot.width_px - kLeft - RightMargin(plot); }
+
 struct Range {
   double lo = INFINITY, hi = -INFINITY;
   void Add(double v) {
@@ -80,7 +83,7 @@ class Chart {
       : plot_(plot),
         x_(x),
         y_(y),
-        w_(plot.width_px - kLeft - RightMargin(plot)),
+        w_(FrameWidth(plot)),
         h_(plot.height_px - kTop - kBottom),
         px_{x.lo, x.hi, kLeft, kLeft + w_},
         py_{y.lo, y.hi, kTop + h_, kTop} {}
@@ -148,7 +151,7 @@ namespace {
 SvgCanvas Draw(const SvgPlot& plot) {
   Range x, y;
   Bounds(plot, &x, &y);
-  const double w = plot.width_px - kLeft - RightMargin(plot), h = plot.height_px - kTop - kBottom;
+  const double w = FrameWidth(plot), h = plot.height_px - kTop - kBottom;
   if (plot.equal_aspect) EqualAspect(w, h, &x, &y);
   const Chart chart(plot, x, y);
   SvgCanvas svg(plot.width_px, plot.height_px);
