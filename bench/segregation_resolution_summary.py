@@ -8,7 +8,12 @@ Reads OUT/s<s>/<case>/r<r>/result.json (one replicate each) and writes
                                              standard error, z, and replicates needed for z >= 2
   OUT/segregation_resolution.svg             S_n of EP (3D, front, back) against s, both cases,
                                              mean +- std, with the random-mixture 95 % band
-Standard library only. Usage: bench/segregation_resolution_summary.py OUT_DIR
+With --with DIR (repeatable), the runs of earlier sweeps are added from DIR's
+segregation_resolution_runs.csv (e.g. the committed bench/results/segregation_resolution_s*/), so
+one table and one plot cover every fidelity measured; a run present in OUT_DIR (same s, case and
+replicate) takes precedence over a copy from DIR.
+Standard library only.
+Usage: bench/segregation_resolution_summary.py OUT_DIR [--with RESULTS_DIR ...]
 """
 import csv
 import glob
@@ -52,6 +57,36 @@ def load_runs(out):
                 row["s_n_%s_floor_%s" % (region, k)] = floor.get(k)
         rows.append(row)
     return rows
+
+
+def load_runs_csv(results_dir):
+    """Runs of an earlier sweep, as written to its segregation_resolution_runs.csv."""
+    text_keys = {"case", "status", "seed"}
+    rows = []
+    with open(os.path.join(results_dir, "segregation_resolution_runs.csv")) as f:
+        for raw in csv.DictReader(f):
+            row = {}
+            for k, v in raw.items():
+                if k in text_keys:
+                    row[k] = v
+                elif k == "replicate":
+                    row[k] = int(v)
+                else:
+                    row[k] = float(v) if v != "" else None
+            rows.append(row)
+    return rows
+
+
+def merge_runs(own, earlier):
+    """own first; an earlier run of the same (s, case, replicate) is dropped."""
+    key = lambda r: (r["size_scale"], r["case"], r["replicate"])
+    seen = {key(r) for r in own}
+    merged = list(own)
+    for r in earlier:
+        if key(r) not in seen:
+            seen.add(key(r))
+            merged.append(r)
+    return merged
 
 
 def stats(values):
@@ -205,11 +240,17 @@ def svg_plot(table, path):
 
 
 def main():
-    if len(sys.argv) != 2 or not os.path.isdir(sys.argv[1]):
-        sys.stderr.write("usage: segregation_resolution_summary.py OUT_DIR\n")
+    args = sys.argv[1:]
+    earlier_dirs = [args[i + 1] for i in range(len(args) - 1) if args[i] == "--with"]
+    positional = [a for i, a in enumerate(args) if a != "--with" and (i == 0 or args[i - 1] != "--with")]
+    if len(positional) != 1 or not os.path.isdir(positional[0]) or \
+            not all(os.path.isdir(d) for d in earlier_dirs):
+        sys.stderr.write("usage: segregation_resolution_summary.py OUT_DIR [--with RESULTS_DIR ...]\n")
         return 2
-    out = sys.argv[1]
+    out = positional[0]
     runs = load_runs(out)
+    for d in earlier_dirs:
+        runs = merge_runs(runs, load_runs_csv(d))
     if not runs:
         sys.stderr.write("no finished runs (s*/<case>/r*/result.json) in %s\n" % out)
         return 1
