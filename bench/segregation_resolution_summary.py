@@ -241,13 +241,13 @@ def svg_plot(table, path):
 
 def main():
     args = sys.argv[1:]
-    earlier_dirs = [args[i + 1] for i in range(len(args) - 1) if args[i] == "--with"]
-    positional = [a for i, a in enumerate(args) if a != "--with" and (i == 0 or args[i - 1] != "--with")]
-    if len(positional) != 1 or not os.path.isdir(positional[0]) or \
-            not all(os.path.isdir(d) for d in earlier_dirs):
-        sys.stderr.write("usage: segregation_resolution_summary.py OUT_DIR [--with RESULTS_DIR ...]\n")
+    earlier_dirs = args[2::2] if len(args) % 2 == 1 else []
+    if len(args) % 2 == 0 or any(a != "--with" for a in args[1::2]) or \
+            not all(os.path.isdir(d) for d in [args[0]] + earlier_dirs):
+        sys.stderr.write("usage: segregation_resolution_summary.py OUT_DIR "
+                         "[--with RESULTS_DIR ...]\n")
         return 2
-    out = positional[0]
+    out = args[0]
     runs = load_runs(out)
     for d in earlier_dirs:
         runs = merge_runs(runs, load_runs_csv(d))
