@@ -15,6 +15,7 @@ replicate) takes precedence over a copy from DIR.
 Standard library only.
 Usage: bench/segregation_resolution_summary.py OUT_DIR [--with RESULTS_DIR ...]
 """
+import argparse
 import csv
 import glob
 import json
@@ -240,16 +241,17 @@ def svg_plot(table, path):
 
 
 def main():
-    args = sys.argv[1:]
-    earlier_dirs = args[2::2] if len(args) % 2 == 1 else []
-    if len(args) % 2 == 0 or any(a != "--with" for a in args[1::2]) or \
-            not all(os.path.isdir(d) for d in [args[0]] + earlier_dirs):
-        sys.stderr.write("usage: segregation_resolution_summary.py OUT_DIR "
-                         "[--with RESULTS_DIR ...]\n")
-        return 2
-    out = args[0]
+    parser = argparse.ArgumentParser(description="Tables and plot of the fidelity sweep.")
+    parser.add_argument("out", metavar="OUT_DIR")
+    parser.add_argument("--with", dest="earlier", metavar="RESULTS_DIR", action="append",
+                        default=[], help="add the runs of an earlier sweep (repeatable)")
+    args = parser.parse_args()
+    bad = [d for d in [args.out] + args.earlier if not os.path.isdir(d)]
+    if bad:
+        parser.error("not a directory: %s" % ", ".join(bad))
+    out = args.out
     runs = load_runs(out)
-    for d in earlier_dirs:
+    for d in args.earlier:
         runs = merge_runs(runs, load_runs_csv(d))
     if not runs:
         sys.stderr.write("no finished runs (s*/<case>/r*/result.json) in %s\n" % out)
