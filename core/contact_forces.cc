@@ -230,38 +230,72 @@ void ContactForces::Rebuild(const Particles& p, const NeighbourList& old_list,
                             const std::vector<Wall>& walls, double skin_m, double adhesive_gap_m) {
   RemapPairs(old_list, new_list, order);
   plan_stale_ = true;
-  walls_.Rebuild(p, order, walls, skin_m, new_list.FirstFixed(), adhesive_gap_m);
+  walls_.Rebuild(p, old_list.ReferencePositions(), new_list.ReferencePositions(), order, walls,
+                 skin_m, new_list.FirstFixed(), adhesive_gap_m);
 }
 
 void ContactForces::RemapPairs(const NeighbourList& old_list, const NeighbourList& new_list,
                                const std::vector<uint32_t>& order) {
   const size_t n = new_list.RowsCount();
-  auto old_slot = [&](uint32_t s) { return order.empty() ? s : order[s]; };
   std::vector<ContactHistory>& history = spare_history_;
   std::vector<uint8_t>& active = spare_active_;
   history.resize(new_list.PairCount());  // every entry is written below
   active.resize(new_list.PairCount());
+  // Without a permutation, or with an order-keeping one (a sink's removal compacts the slots),
+  // old row order[i] holds i's old partners in the same ascending order as the new row: one
+  // merge pass per row instead of a binary search per entry.
+  const bool keeps_order = std::is_sorted(order.begin(), order.end());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& range) {
     for (size_t i = range.begin(); i != range.end(); ++i) {
-      for (uint32_t k = new_list.RowBegin(i); k < new_list.RowEnd(i); ++k) {
-        const uint32_t a = old_slot(i), b = old_slot(new_list.Partner(k));
-        const int64_t e = old_list.Find(std::min(a, b), std::max(a, b));
-        if (e < 0 || !pair_active_[e]) {
-          history[k] = ContactHistory{};
-          active[k] = 0;
-          continue;
-        }
-        history[k] = pair_history_[e];
-        active[k] = 1;
-        if (a > b) {  // i and j swapped roles: the relative displacement changes sign
-          history[k].shear_m = -history[k].shear_m;
-          history[k].rolling_torque_N_m = -history[k].rolling_torque_N_m;
-        }
-      }
+      if (keeps_order) MergeRow(old_list, new_list, order, i, history, active);
+      else SearchRow(old_list, new_list, order, i, history, active);
     }
   });
   pair_history_.swap(history);
   pair_active_.swap(active);
+}
+
+void ContactForces::CarryPair(int64_t e, bool swapped, uint32_t k,
+                              std::vector<ContactHistory>& history,
+                              std::vector<uint8_t>& active) const {
+  if (e < 0 || !pair_active_[e]) {
+    history[k] = ContactHistory{};
+    active[k] = 0;
+    return;
+  }
+  history[k] = pair_history_[e];
+  active[k] = 1;
+  if (swapped) {  // i and j swapped roles: the relative displacement changes sign
+    history[k].shear_m = -history[k].shear_m;
+    history[k].rolling_torque_N_m = -history[k].rolling_torque_N_m;
+  }
+}
+
+void ContactForces::SearchRow(const NeighbourList& old_list, const NeighbourList& new_list,
+                              const std::vector<uint32_t>& order, size_t i,
+                              std::vector<ContactHistory>& history,
+                              std::vector<uint8_t>& active) const {
+  auto old_slot = [&](uint32_t s) { return order.empty() ? s : order[s]; };
+  for (uint32_t k = new_list.RowBegin(i); k < new_list.RowEnd(i); ++k) {
+    const uint32_t a = old_slot(static_cast<uint32_t>(i)), b = old_slot(new_list.Partner(k));
+    CarryPair(old_list.Find(std::min(a, b), std::max(a, b)), a > b, k, history, active);
+  }
+}
+
+void ContactForces::MergeRow(const NeighbourList& old_list, const NeighbourList& new_list,
+                             const std::vector<uint32_t>& order, size_t i,
+                             std::vector<ContactHistory>& history,
+                             std::vector<uint8_t>& active) const {
+  auto old_slot = [&](uint32_t s) { return order.empty() ? s : order[s]; };
+  const uint32_t a = old_slot(static_cast<uint32_t>(i));
+  const bool old_row = a < old_list.RowsCount();  // newcomers had none
+  uint32_t e = old_row ? old_list.RowBegin(a) : 0;
+  const uint32_t e_end = old_row ? old_list.RowEnd(a) : 0;
+  for (uint32_t k = new_list.RowBegin(i); k < new_list.RowEnd(i); ++k) {
+    const uint32_t b = old_slot(new_list.Partner(k));
+    while (e < e_end && old_list.Partner(e) < b) ++e;
+    CarryPair(e < e_end && old_list.Partner(e) == b ? int64_t{e} : -1, false, k, history, active);
+  }
 }
 
 double ContactForces::PairElasticEnergy(const Particles& p, const NeighbourList& list,

@@ -94,6 +94,17 @@ class ContactForces {
 
   void RemapPairs(const NeighbourList& old_list, const NeighbourList& new_list,
                   const std::vector<uint32_t>& order);
+  // New row i's histories from the old list: by a binary search per entry (any permutation),
+  // or by one merge with old row order[i] (an order-keeping permutation).
+  void SearchRow(const NeighbourList& old_list, const NeighbourList& new_list,
+                 const std::vector<uint32_t>& order, size_t i,
+                 std::vector<ContactHistory>& history, std::vector<uint8_t>& active) const;
+  void MergeRow(const NeighbourList& old_list, const NeighbourList& new_list,
+                const std::vector<uint32_t>& order, size_t i,
+                std::vector<ContactHistory>& history, std::vector<uint8_t>& active) const;
+  // Entry k takes old entry e's history (none if e < 0 or inactive), mirrored if `swapped`.
+  void CarryPair(int64_t e, bool swapped, uint32_t k, std::vector<ContactHistory>& history,
+                 std::vector<uint8_t>& active) const;
 
   std::vector<ContactHistory> pair_history_;  // aligned with NeighbourList entries
   std::vector<ContactResult> pair_result_;    // cross pairs only, aligned with entries

@@ -52,10 +52,19 @@ class NeighbourList {
   void Update(const Settings& settings, const std::vector<Vec3>& positions,
               const std::vector<double>& radii, const std::vector<int>* body, size_t first_fixed,
               const NeighbourList& previous, double refresh_fraction);
+  // This list becomes `previous` with its slots compacted: new slot s is old slot order[s]
+  // (strictly ascending: a sink's removal), the removed slots' rows and entries dropped, the
+  // references kept; it is then Update()'s `previous` after a removal, so that a removal costs an
+  // incremental rebuild, not a full one. Rows only (no reverse index, build count unchanged).
+  // False (and nothing usable) if `order` is not such a compaction of `previous`, or if slots
+  // below `first_fixed` were not all moving ones and those above all fixed; then Build().
+  bool CompactFrom(const NeighbourList& previous, const std::vector<uint32_t>& order,
+                   size_t first_fixed);
   // Particles re-searched by the last build (all moving ones after Build()).
   size_t LastMovers() const { return last_movers_; }
   // Where particle i was when its neighbourhood was last searched.
   const Vec3& ReferencePosition(size_t i) const { return reference_position_[i]; }
+  const std::vector<Vec3>& ReferencePositions() const { return reference_position_; }
   bool NeedsRebuild(const std::vector<Vec3>& positions) const;
   // NeedsRebuild for periodic boxes: displacements by minimum image (a wrap is not a move).
   bool NeedsRebuild(const std::vector<Vec3>& positions, const PeriodicBox& box) const;
@@ -132,6 +141,7 @@ class NeighbourList {
   uint32_t row_capacity_ = 32;
   // Update() scratch: movers, their partners on both sides, partners gained by kept rows.
   std::vector<uint8_t> is_mover_;
+  std::vector<uint32_t> new_slot_;  // CompactFrom() scratch
   std::vector<uint32_t> movers_, found_, found_count_, incoming_start_, incoming_;
   uint32_t found_capacity_ = 64;
   size_t last_movers_ = 0;

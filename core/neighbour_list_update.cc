@@ -6,8 +6,9 @@
 // Validity: between rebuilds every particle stays within skin/2 of its reference (NeedsRebuild),
 // so an unlisted pair is at least R_i + R_j + skin − skin/2 − skin/2 apart: never in contact.
 // A kept particle is within refresh_fraction × skin ≤ skin/2 of its reference at the rebuild,
-// hence within skin of where it was at that rebuild until the next one (the wall candidates,
-// WallContacts, are searched from there with a margin of one skin).
+// hence within skin of where it was at that rebuild until the next one. The wall candidates
+// (WallContacts) are listed at the reference with a margin of one skin, and a kept particle's
+// row is kept with it.
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
@@ -156,6 +157,37 @@ void NeighbourList::Update(const Settings& s, const std::vector<Vec3>& x,
     }
   });
   Finish(s);
+}
+
+bool NeighbourList::CompactFrom(const NeighbourList& previous, const std::vector<uint32_t>& order,
+                                size_t first_fixed) {
+  const size_t old_n = previous.row_start_.size() - 1;
+  const size_t n = order.size();
+  if (previous.reference_position_.size() != old_n) return false;
+  for (size_t s = 0; s < n; ++s)  // strictly ascending old slots: a compaction, no newcomers
+    if (order[s] >= old_n || (s > 0 && order[s] <= order[s - 1])) return false;
+  constexpr uint32_t kGone = ~uint32_t{0};  // a removed slot
+  new_slot_.assign(old_n, kGone);
+  for (size_t s = 0; s < n; ++s) new_slot_[order[s]] = static_cast<uint32_t>(s);
+  // The moving part stays in front: new slots below first_fixed were moving, the rest fixed.
+  if (first_fixed > n || (first_fixed > 0 && order[first_fixed - 1] >= previous.first_fixed_) ||
+      (first_fixed < n && order[first_fixed] < previous.first_fixed_))
+    return false;
+  reference_position_.resize(n);
+  row_start_.assign(n + 1, 0);
+  partner_.clear();
+  for (size_t s = 0; s < n; ++s) {
+    const uint32_t o = order[s];
+    reference_position_[s] = previous.reference_position_[o];
+    for (uint32_t k = previous.row_start_[o]; k < previous.row_start_[o + 1]; ++k)
+      if (const uint32_t j = new_slot_[previous.partner_[k]]; j != kGone) partner_.push_back(j);
+    row_start_[s + 1] = static_cast<uint32_t>(partner_.size());
+  }
+  reverse_start_.clear(), reverse_entry_.clear();  // not needed by Update
+  first_fixed_ = static_cast<uint32_t>(first_fixed);
+  half_skin2_ = previous.half_skin2_;
+  periodic_ = previous.periodic_;
+  return true;
 }
 
 }  // namespace demcal::core

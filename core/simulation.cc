@@ -222,8 +222,14 @@ void Simulation::RebuildNeighbours(bool allow_reorder, const std::vector<uint32_
     slots_before_removal_ = 0;
   }
   const std::vector<int>* body = system_.clumps.Size() ? &p.body : nullptr;
-  if (order.empty() && options_.neighbour_refresh_fraction > 0)  // same slots: keep unmoved rows
-    list_.Update(list_settings_, p.position_m, p.radius_m, body, moving, spare_list_,
+  // Same slots, or the same less those a sink took: keep the unmoved particles' rows.
+  const NeighbourList* previous = nullptr;
+  if (options_.neighbour_refresh_fraction > 0) {
+    if (order.empty()) previous = &spare_list_;
+    else if (compacted_list_.CompactFrom(spare_list_, order, moving)) previous = &compacted_list_;
+  }
+  if (previous)
+    list_.Update(list_settings_, p.position_m, p.radius_m, body, moving, *previous,
                  options_.neighbour_refresh_fraction);
   else
     list_.Build(list_settings_, p.position_m, p.radius_m, body, moving);

@@ -149,6 +149,7 @@ class Simulation {
   ParticleSystem system_;
   NeighbourList list_;
   NeighbourList spare_list_;  // the previous list, kept for history transfer and its buffers
+  NeighbourList compacted_list_;  // spare_list_ less the slots a sink took (Update's input)
   NeighbourList::Settings list_settings_;
   ContactForces forces_;
   std::vector<Wall> walls_;  // current placement of scene_.walls

@@ -50,9 +50,15 @@ class WallContacts {
 
   // Lists per particle the walls within its radius + skin (moving walls always), keeping the
   // histories of candidates that persist. `order[new_slot] = old_slot` (identity if empty).
+  // `previous_reference` / `reference`: the neighbour list's reference positions before and after
+  // this rebuild (NeighbourList::ReferencePositions). A particle whose reference did not move was
+  // not re-searched, and its row (listed where it then was: at that reference) is kept as it is,
+  // so the cost follows what moved; the particle stays within skin/2 of its reference until the
+  // next rebuild, well inside the skin the row was listed with.
   // Slots from `first_fixed` on (fixed spheres) get no candidates: they are not swept.
   // adhesive_gap_m: how far beyond touching an adhesive contact lasts (mesh near triangles).
-  void Rebuild(const Particles& p, const std::vector<uint32_t>& order,
+  void Rebuild(const Particles& p, const std::vector<Vec3>& previous_reference,
+               const std::vector<Vec3>& reference, const std::vector<uint32_t>& order,
                const std::vector<Wall>& walls, double skin_m, size_t first_fixed = SIZE_MAX,
                double adhesive_gap_m = 0);
 
@@ -99,6 +105,25 @@ class WallContacts {
   void SumMesh(const Particles& p, uint32_t i, uint32_t e, const MeshRef& mesh, bool moving,
                const Vec3& wall_velocity, const ResolvedPair& pair, const Model& model, double dt,
                std::vector<MeshContact>& scratch, Vec3& fi, Vec3& ti);
+
+  // The candidate arrays below, as Rebuild fills them: the previous rebuild's arrays are kept
+  // as the next one's destination (a pour rebuilds every ~12 steps; no allocation each time).
+  struct Rows {
+    std::vector<uint32_t> start, index, mesh_slots, near_start;
+    std::vector<ContactHistory> history;
+    std::vector<uint8_t> active;
+    std::vector<MeshHistory> mesh_history;
+    std::vector<int32_t> near;
+    void Clear(size_t particles);
+  };
+  static constexpr size_t kNoOldSlot = SIZE_MAX;
+  // Old row o copied to `to` as it is (walls removed since dropped).
+  void KeepRow(size_t o, const std::vector<Wall>& walls, Rows& to) const;
+  // Particle i's walls listed anew at its position; histories from old slot o (or kNoOldSlot).
+  void ListRow(const Particles& p, size_t i, size_t o, const std::vector<Wall>& walls,
+               double skin_m, double adhesive_gap_m, Rows& to);
+  Rows spare_;
+  std::vector<int32_t> triangles_;  // ListRow's scratch
 
   // Candidates in compressed rows: particle i's are [start_[i], start_[i + 1]).
   std::vector<uint32_t> start_{0};

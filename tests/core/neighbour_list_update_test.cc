@@ -158,3 +158,43 @@ TEST_CASE("incremental rebuild falls back to a full build when the slots change"
   CHECK(b.LastMovers() == 400);  // every moving particle searched
   CHECK(Listed(b) == BruteForceOverReferences(b, c.r, settings.skin_m));
 }
+
+TEST_CASE("a removal compacts the previous list and the rebuild stays incremental", "[unit]") {
+  const double skin = 0.0008;
+  const NeighbourList::Settings settings{{0, 0, 0}, {0.04, 0.04, 0.04}, skin, 0.0015};
+  const size_t n = 1500, first_fixed = 1200;
+  Cloud c = MakeCloud(n, 17);
+  std::mt19937_64 rng(4);
+  NeighbourList a, compacted, b;
+  a.Build(settings, c.x, c.r, nullptr, first_fixed);
+  Jiggle(c, first_fixed, 0.1, 0.4 * skin, rng);
+  // A sink takes every 7th moving slot: the survivors keep their order (ParticleSystem::Remove).
+  std::vector<uint32_t> order;
+  Cloud kept;
+  for (uint32_t s = 0; s < n; ++s) {
+    if (s < first_fixed && s % 7 == 3) continue;
+    order.push_back(s);
+    kept.x.push_back(c.x[s]), kept.r.push_back(c.r[s]);
+  }
+  const size_t moving = first_fixed - (first_fixed + 3) / 7;
+  REQUIRE(compacted.CompactFrom(a, order, moving));
+  b.Update(settings, kept.x, kept.r, nullptr, moving, compacted, 0.25);
+  CHECK(b.LastMovers() < moving);  // incremental: not every moving particle searched
+  CHECK(Listed(b) == BruteForceOverReferences(b, kept.r, skin));
+  for (size_t s = 0; s < order.size(); ++s) {  // unmoved survivors keep their references
+    const Vec3& before = a.ReferencePosition(order[s]);
+    if (Norm2(kept.x[s] - before) <= 0.0625 * skin * skin)
+      CHECK(b.ReferencePosition(s) == before);
+  }
+  CHECK_FALSE(b.NeedsRebuild(kept.x));
+
+  // Not a compaction: a permutation, a newcomer, a fixed sphere counted as moving.
+  std::vector<uint32_t> swapped = order;
+  std::swap(swapped[0], swapped[1]);
+  CHECK_FALSE(compacted.CompactFrom(a, swapped, moving));
+  std::vector<uint32_t> with_newcomer = order;
+  with_newcomer.push_back(static_cast<uint32_t>(n));
+  CHECK_FALSE(compacted.CompactFrom(a, with_newcomer, moving));
+  CHECK_FALSE(compacted.CompactFrom(a, order, moving + 1));
+  CHECK_FALSE(compacted.CompactFrom(a, order, moving - 1));
+}
