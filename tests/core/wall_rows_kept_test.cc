@@ -66,6 +66,7 @@ bool Contains(const Row& outer, const Row& inner) {
 }
 
 // A plane floor, an inside cylinder, an open mesh box and a mesh plate, all static.
+constexpr uint32_t kFloor = 0, kBox = 2;  // indices in Walls()
 std::vector<Wall> Walls() {
   std::vector<Wall> walls;
   walls.push_back(Wall(PlaneWall{"floor", {0, 0, 0}, {0, 0, 1}, 0, {}}));
@@ -130,23 +131,24 @@ TEST_CASE("a kept wall row covers what its particle can reach; a moved one is re
       relisted_changed += rows[i] != old_rows[i];
     }
   }
-  CHECK(kept_rows > 100);         // the draw put kept particles near walls, meshes included
+  CHECK(kept_rows > 100);         // the draw put many kept particles near walls
   CHECK(relisted_changed > 100);  // and the jumps changed what re-listed particles see
 
   // A kept row loses a wall removed since; a displacement beyond skin/2 with the reference
   // unchanged (a periodic wrap, which the list's minimum-image test does not see) re-lists.
   std::vector<Wall> fewer = walls;
-  fewer[2].removed = true;
-  size_t wrapped = 0;
-  while (!rows[wrapped].count(0)) wrapped += 2;  // a kept particle near the floor
-  p.position_m[wrapped] = {0, 0, 0.03};        // clear of every wall
+  fewer[kBox].removed = true;
+  size_t wrapped = 0;  // a kept particle near the floor
+  while (wrapped < p.Size() && !rows[wrapped].count(kFloor)) wrapped += 2;
+  REQUIRE(wrapped < p.Size());
+  p.position_m[wrapped] = {0, 0, 0.03};  // clear of every wall
   contacts.Rebuild(p, reference, reference, {}, fewer, skin);
   const std::vector<Row> after_removal = Rows(contacts);
   CHECK(after_removal[wrapped].empty());
   for (size_t i = 0; i < p.Size(); ++i) {
     if (i == wrapped) continue;
     Row expected = rows[i];
-    expected.erase(2);
+    expected.erase(kBox);
     CHECK(after_removal[i] == expected);
   }
 }
