@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <iostream>
 
-#include "core/random.h"
-#include "core/simulation.h"
+#include "core/math/random.h"
+#include "core/simulation/simulation.h"
 
 namespace demcal::bench {
 namespace {

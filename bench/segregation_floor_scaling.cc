@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "core/random.h"
+#include "core/math/random.h"
 #include "objectives/metrics/heap_segregation.h"
 #include "objectives/metrics/segregation_floor.h"
 

@@ -20,8 +20,8 @@
 #include <vector>
 
 #include "bench/pour.h"
-#include "core/clump_template.h"
-#include "core/simulation.h"
+#include "core/bodies/clump_template.h"
+#include "core/simulation/simulation.h"
 
 using namespace demcal::core;
 

@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 
 namespace demcal::calibrate {
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 
 namespace demcal::calibrate {
 

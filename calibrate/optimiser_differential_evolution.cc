@@ -22,7 +22,7 @@
 #include <sstream>
 
 #include "calibrate/optimiser.h"
-#include "core/random.h"
+#include "core/math/random.h"
 
 namespace demcal::calibrate {
 namespace {

@@ -3,7 +3,7 @@
 // study files, units, physical upper limits, and the slot of the interaction table each one is.
 #include <string>
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 
 namespace demcal::calibrate {
 

@@ -17,7 +17,7 @@
 #include "calibrate/condition.h"
 #include "calibrate/pair_property.h"
 #include "calibrate/parameter_curve.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
 
 namespace demcal::calibrate {
 

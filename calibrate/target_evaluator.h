@@ -28,7 +28,7 @@
 #include "calibrate/evaluation_journal.h"
 #include "calibrate/experiment_probe.h"
 #include "calibrate/parameter_space.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
 
 namespace demcal::calibrate {
 

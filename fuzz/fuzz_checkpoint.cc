@@ -13,9 +13,9 @@
 #include <memory>
 #include <string>
 
-#include "core/checkpoint_file.h"
-#include "core/simulation.h"
-#include "core/triangle_mesh.h"
+#include "core/checkpoint/checkpoint_file.h"
+#include "core/simulation/simulation.h"
+#include "core/walls/triangle_mesh.h"
 
 using namespace demcal::core;
 

@@ -3,8 +3,8 @@
 // sphere j or a wall; the normal points from j (or the wall) to i. Models in the normal,
 // tangential and rolling slots are pure functions of these structs, so each is unit-testable
 // on its own and the force loop stays free of virtual calls and allocation.
-#include "core/interaction_table.h"
-#include "core/vec3.h"
+#include "core/materials/interaction_table.h"
+#include "core/math/vec3.h"
 
 // Contact-law functions run once per contact per step; they must be inlined into the force loop
 // (GCC's heuristics otherwise keep some as calls once the loop body grows).

@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "core/clumps.h"
-#include "core/particles.h"
+#include "core/bodies/clumps.h"
+#include "core/bodies/particles.h"
 
 namespace demcal::core::io {
 

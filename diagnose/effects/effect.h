@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "calibrate/condition.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
 
 namespace demcal::diagnose {
 

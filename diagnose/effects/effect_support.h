@@ -4,7 +4,7 @@
 #include <string>
 
 #include "calibrate/pair_property.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "diagnose/effects/effect.h"
 
 namespace demcal::diagnose {

@@ -1,10 +1,10 @@
 // Non-spherical shape: the subject species becomes elongated — the equal-volume 3-sphere chain
-// of a prolate spheroid with aspect ratio 1 + Δ (semi-axes [1 + Δ, 1, 1], core/clump_shapes.h;
+// of a prolate spheroid with aspect ratio 1 + Δ (semi-axes [1 + Δ, 1, 1], core/bodies/clump_shapes.h;
 // the species' diameter stays its equivalent-volume diameter). Elongated grains interlock:
 // steeper heaps, looser packing, slower flow. Continuous in Δ (the chain's spheres and spacing
 // follow the aspect ratio), so it can be refitted like any parameter. A species that is already
 // a clump is left to the study's clump-count loop (docs/calibration.md). Probe Δ = 0.8.
-#include "core/clump_shapes.h"
+#include "core/bodies/clump_shapes.h"
 #include "diagnose/effects/effect_registry.h"
 #include "diagnose/effects/effect_support.h"
 

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "core/random.h"
-#include "core/simulation.h"
+#include "core/math/random.h"
+#include "core/simulation/simulation.h"
 #include "objectives/common/experiment_scene.h"
 #include "objectives/common/glued_base.h"
 

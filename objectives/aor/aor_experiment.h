@@ -17,7 +17,7 @@
 #include <cstdint>
 #include <string>
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "objectives/common/feed.h"
 #include "objectives/metrics/repose_angle.h"
 #include "objectives/common/run_hooks.h"

@@ -4,7 +4,7 @@
 // particles, fills or factories yet.
 #include <cstdint>
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 
 namespace demcal::objectives {
 

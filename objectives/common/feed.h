@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "core/factory.h"
-#include "core/scene.h"
+#include "core/insertion/factory.h"
+#include "core/scene/scene.h"
 
 namespace demcal::objectives {
 

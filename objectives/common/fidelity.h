@@ -13,7 +13,7 @@
 //   ApplyFidelity(f, &scene);  // before geometry that depends on particle size is built
 #include <string>
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 
 namespace demcal::objectives {
 

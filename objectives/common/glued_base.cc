@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "core/random.h"
+#include "core/math/random.h"
 
 namespace demcal::objectives {
 

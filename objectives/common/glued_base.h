@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "objectives/common/feed.h"
 
 namespace demcal::objectives {

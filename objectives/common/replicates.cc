@@ -5,7 +5,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-#include "core/random.h"
+#include "core/math/random.h"
 
 namespace demcal::objectives {
 

@@ -9,7 +9,7 @@
 //   RunAor(model, settings, seed, hooks);
 #include <functional>
 
-#include "core/simulation.h"
+#include "core/simulation/simulation.h"
 #include "objectives/common/settled_run.h"
 
 namespace demcal::objectives {
@@ -18,7 +18,7 @@ struct RunHooks {
   ProgressCallback progress;                                // (simulated s, expected end s)
   std::function<void(const core::Simulation&)> on_check;   // every settle or sample check
   std::function<void(const core::Simulation&)> on_finish;  // once, at the end
-  // Threads of the simulation (>= 1). Results are bit-identical for any count (core/simulation.h),
+  // Threads of the simulation (>= 1). Results are bit-identical for any count (core/simulation/simulation.h),
   // so this is a scheduling choice: 1 when replicates fill the cores, more when they do not.
   int threads = 1;
 };

@@ -11,7 +11,7 @@
 #include <functional>
 #include <string>
 
-#include "core/simulation.h"
+#include "core/simulation/simulation.h"
 
 namespace demcal::objectives {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/simulation.h"
+#include "core/simulation/simulation.h"
 
 namespace demcal::objectives {
 

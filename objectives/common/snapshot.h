@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <vector>
-#include "core/vec3.h"
+#include "core/math/vec3.h"
 
 namespace demcal::core {
 class Simulation;

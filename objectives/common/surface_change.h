@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/simulation.h"
+#include "core/simulation/simulation.h"
 
 namespace demcal::objectives {
 

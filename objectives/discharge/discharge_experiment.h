@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "objectives/metrics/discharge_metrics.h"
 #include "objectives/common/feed.h"
 #include "objectives/common/run_hooks.h"

@@ -10,7 +10,7 @@
 //   if (clock.emptied()) use(clock.DischargeTimeS());
 #include <cstdint>
 
-#include "core/simulation.h"
+#include "core/simulation/simulation.h"
 
 namespace demcal::objectives {
 

@@ -5,7 +5,7 @@
 #include <numbers>
 #include <vector>
 
-#include "core/random.h"
+#include "core/math/random.h"
 #include "objectives/discharge/sphere_mass_share.h"
 
 namespace demcal::objectives {

@@ -8,9 +8,9 @@
 #include <ostream>
 #include <vector>
 
-#include "core/insertion_region.h"
-#include "core/particles.h"
-#include "core/scene.h"
+#include "core/insertion/insertion_region.h"
+#include "core/bodies/particles.h"
+#include "core/scene/scene.h"
 #include "objectives/discharge/discharge_experiment.h"
 
 namespace demcal::objectives {

@@ -13,7 +13,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/simulation.h"
+#include "core/simulation/simulation.h"
 #include "objectives/metrics/discharge_metrics.h"
 
 namespace demcal::objectives {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/random.h"
+#include "core/math/random.h"
 #include "objectives/metrics/coefficient_of_variation.h"
 
 namespace demcal::objectives {

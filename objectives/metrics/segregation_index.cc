@@ -2,7 +2,7 @@
 
 #include <numbers>
 
-#include "core/random.h"
+#include "core/math/random.h"
 #include "objectives/metrics/coefficient_of_variation.h"
 
 namespace demcal::objectives {

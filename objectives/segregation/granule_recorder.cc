@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/random.h"
+#include "core/math/random.h"
 
 namespace demcal::objectives {
 

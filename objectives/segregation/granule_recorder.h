@@ -14,7 +14,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/simulation.h"
+#include "core/simulation/simulation.h"
 #include "objectives/metrics/granule_tracking.h"
 
 namespace demcal::objectives {

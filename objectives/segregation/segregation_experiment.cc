@@ -4,8 +4,8 @@
 #include <chrono>
 #include <sstream>
 
-#include "core/random.h"
-#include "core/simulation.h"
+#include "core/math/random.h"
+#include "core/simulation/simulation.h"
 #include "objectives/common/experiment_scene.h"
 #include "objectives/discharge/funnel_clock.h"
 #include "objectives/discharge/outflow_recorder.h"

@@ -29,7 +29,7 @@
 #include <string>
 #include <vector>
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "objectives/aor/aor_experiment.h"
 #include "objectives/common/feed.h"
 #include "objectives/metrics/discharge_metrics.h"

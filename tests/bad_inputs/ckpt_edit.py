@@ -4,7 +4,7 @@
     ckpt_edit.py IN OUT steps VALUE [--reframe]    the step count (an int64)
     ckpt_edit.py IN OUT flip COUNT SEED [--reframe] COUNT random bytes XORed with 1..255
     ckpt_edit.py IN OUT old-format                 the start of a format-4 file
---reframe recomputes the payload length and FNV-1a checksum of the header (core/checkpoint_file.h),
+--reframe recomputes the payload length and FNV-1a checksum of the header (core/checkpoint/checkpoint_file.h),
 so the edit reaches the state checks behind the checksum."""
 import random, struct, sys
 

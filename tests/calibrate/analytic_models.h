@@ -11,7 +11,7 @@
 
 #include "calibrate/candidate_evaluator.h"
 #include "calibrate/optimiser.h"
-#include "core/random.h"
+#include "core/math/random.h"
 
 namespace demcal::calibrate::testing {
 

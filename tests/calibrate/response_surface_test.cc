@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "analytic_models.h"
-#include "core/random.h"
+#include "core/math/random.h"
 
 using namespace demcal::calibrate;
 using demcal::calibrate::testing::Normal;

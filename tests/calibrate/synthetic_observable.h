@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "calibrate/experiment_probe.h"
-#include "core/random.h"
+#include "core/math/random.h"
 
 namespace demcal::calibrate::testing {
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the cube STL fixtures used by tests/core/mesh_io_test.cc (independently of demcal's
+"""Writes the cube STL fixtures used by tests/core/walls/mesh_io_test.cc (independently of demcal's
 own writer, so the reader is not only tested against itself).
 
 cube_10mm_ascii.stl: ASCII STL of the cube [0, 10]^3 in millimetres (12 triangles, outward

@@ -4,7 +4,7 @@
 #include <iomanip>
 #include <sstream>
 
-#include "core/clump_shapes.h"
+#include "core/bodies/clump_shapes.h"
 #include "workflow/experiments/experiment_registry.h"
 #include "workflow/experiments/experiment_runner.h"
 #include "workflow/files/json_document.h"

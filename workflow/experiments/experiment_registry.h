@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "calibrate/experiment_probe.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "workflow/experiments/experiment_runner.h"
 #include "workflow/files/experiment_file.h"
 

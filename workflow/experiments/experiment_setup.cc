@@ -1,7 +1,7 @@
 #include "workflow/experiments/experiment_setup.h"
 
 #include "core/io/vtk_writer.h"
-#include "core/simulation.h"
+#include "core/simulation/simulation.h"
 
 namespace demcal::workflow {
 

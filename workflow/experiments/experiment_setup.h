@@ -18,7 +18,7 @@
 #include "workflow/files/experiment_file.h"
 #include "workflow/experiments/experiment_runner.h"
 #include "workflow/experiments/replicate_progress.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "objectives/common/fidelity.h"
 #include "objectives/common/replicates.h"
 #include "objectives/common/run_hooks.h"

@@ -3,7 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "objectives/aor/aor_experiment.h"
 
 namespace demcal::workflow {

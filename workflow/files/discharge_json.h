@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "objectives/discharge/discharge_experiment.h"
 
 namespace demcal::workflow {

@@ -12,7 +12,7 @@
 
 #include "workflow/files/json_fields.h"
 #include "workflow/files/scene_file.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "objectives/common/fidelity.h"
 
 namespace demcal::workflow {

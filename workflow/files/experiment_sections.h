@@ -5,7 +5,7 @@
 #include <string>
 
 #include "workflow/files/json_fields.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "objectives/common/feed.h"
 #include "objectives/common/settled_run.h"
 

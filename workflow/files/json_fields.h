@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "core/vec3.h"
+#include "core/math/vec3.h"
 
 namespace demcal::workflow {
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "core/io/vtk_writer.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
 
 namespace demcal::workflow {
 

@@ -5,7 +5,7 @@
 #include <map>
 
 #include "workflow/files/scene_json_sections.h"
-#include "core/walls.h"
+#include "core/walls/walls.h"
 
 namespace demcal::workflow::internal {
 namespace {

@@ -2,7 +2,7 @@
 #include <cmath>
 
 #include "workflow/files/scene_json_sections.h"
-#include "core/factory.h"
+#include "core/insertion/factory.h"
 
 namespace demcal::workflow::internal {
 

@@ -2,7 +2,7 @@
 #include <algorithm>
 
 #include "workflow/files/scene_json_sections.h"
-#include "core/clump_shapes.h"
+#include "core/bodies/clump_shapes.h"
 #include "core/contact/rolling_model.h"
 
 namespace demcal::workflow::internal {

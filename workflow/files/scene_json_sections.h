@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "workflow/files/json_fields.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
 
 namespace demcal::workflow::internal {
 

@@ -1,10 +1,10 @@
-// Scene JSON section: sinks (see scene_json.h and core/sink.h), where particles are removed and
+// Scene JSON section: sinks (see scene_json.h and core/insertion/sink.h), where particles are removed and
 // counted: {"name", "shape": "plane", "point_m", "normal"} (normal points where particles go
 // out) or {"name", "shape": "box", "min_m", "max_m"}.
 #include <cmath>
 
 #include "workflow/files/scene_json_sections.h"
-#include "core/sink.h"
+#include "core/insertion/sink.h"
 
 namespace demcal::workflow::internal {
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "core/factory.h"
+#include "core/insertion/factory.h"
 
 namespace demcal::workflow {
 namespace {

@@ -19,7 +19,7 @@
 #include "calibrate/condition.h"
 #include "calibrate/parameter_space.h"
 #include "calibrate/target.h"
-#include "core/vec3.h"
+#include "core/math/vec3.h"
 #include "workflow/files/experiment_file.h"
 
 namespace demcal::workflow {

@@ -3,7 +3,7 @@
 // output.mass_flow_interval_s of simulated time (and the initial and final states). Columns,
 // units in every name (species and sink names as in the scene):
 //   time_s
-//   sink.<sink>.<species>.removed_count      particles a sink removed so far (core/sink.h;
+//   sink.<sink>.<species>.removed_count      particles a sink removed so far (core/insertion/sink.h;
 //   sink.<sink>.<species>.removed_mass_kg    "domain" is the implicit domain sink)
 //   plane.<plane>.<species>.mass_beyond_kg   mass whose centre is beyond a counting plane now
 //                                            (output.mass_flow_planes; nothing is removed)
@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "core/simulation.h"
+#include "core/simulation/simulation.h"
 #include "workflow/files/scene_file.h"
 
 namespace demcal::workflow {

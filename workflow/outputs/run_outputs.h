@@ -25,7 +25,7 @@
 
 #include "workflow/files/scene_file.h"
 #include "core/io/vtk_writer.h"
-#include "core/simulation.h"
+#include "core/simulation/simulation.h"
 
 namespace demcal::workflow {
 

@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "core/factory.h"
-#include "core/run_summary.h"
-#include "core/sink.h"
-#include "core/walls.h"
+#include "core/insertion/factory.h"
+#include "core/simulation/run_summary.h"
+#include "core/insertion/sink.h"
+#include "core/walls/walls.h"
 
 namespace demcal::workflow {
 

@@ -16,7 +16,7 @@
 #include "workflow/outputs/run_outputs.h"
 #include "workflow/files/scene_json.h"
 #include "workflow/outputs/summary_json.h"
-#include "core/simulation.h"
+#include "core/simulation/simulation.h"
 
 namespace demcal::workflow {
 namespace {

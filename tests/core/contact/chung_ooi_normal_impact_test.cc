@@ -8,7 +8,7 @@
 #include <numbers>
 #include <string>
 
-#include "core/simulation.h"
+#include "core/simulation/simulation.h"
 
 using namespace demcal::core;
 

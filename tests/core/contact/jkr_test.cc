@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "core/contact/jkr.h"
-#include "core/simulation.h"
+#include "core/simulation/simulation.h"
 
 using namespace demcal::core;
 

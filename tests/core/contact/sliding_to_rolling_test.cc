@@ -7,7 +7,7 @@
 #include <numbers>
 #include <string>
 
-#include "core/simulation.h"
+#include "core/simulation/simulation.h"
 
 using namespace demcal::core;
 

@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "core/io/scratch_dir.h"
-#include "core/particle_system.h"
+#include "core/bodies/particle_system.h"
 
 using namespace demcal::core;
 using demcal::testing::ScratchDir;

@@ -6,7 +6,7 @@
 
 #include "core/io/legacy_vtk_reader.h"
 #include "core/io/scratch_dir.h"
-#include "core/particle_system.h"
+#include "core/bodies/particle_system.h"
 
 using namespace demcal::core;
 using namespace demcal::core::io;

@@ -144,7 +144,7 @@ TEST_CASE("replicates share idle cores as simulation threads, with the same heap
   CHECK(ThreadsPerReplicate(3, 8) == 2);
   CHECK(ThreadsPerReplicate(0, 4) == 4);
   CHECK(ThreadsPerReplicate(1, 0) >= 1);  // 0: all cores
-  // core/simulation.h: every particle sums its contacts in serial order, so the thread count
+  // core/simulation/simulation.h: every particle sums its contacts in serial order, so the thread count
   // changes nothing in the result.
   const core::Scene model = Model(0.5, 0.1, 0);
   RunHooks two;

@@ -5,7 +5,7 @@
 #include <limits>
 #include <memory>
 
-#include "core/simulation.h"
+#include "core/simulation/simulation.h"
 
 using namespace demcal;
 using namespace demcal::objectives;

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/simulation.h"
+#include "core/simulation/simulation.h"
 #include "objectives/common/snapshot.h"
 
 using namespace demcal;

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/simulation.h"
+#include "core/simulation/simulation.h"
 #include "objectives/discharge/hopper_fill.h"
 #include "objectives/discharge/outflow_recorder.h"
 

@@ -6,7 +6,7 @@
 #include <numbers>
 #include <vector>
 
-#include "core/random.h"
+#include "core/math/random.h"
 #include "objectives/common/snapshot.h"
 
 namespace demcal::objectives::testing {

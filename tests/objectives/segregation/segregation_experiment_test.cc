@@ -7,7 +7,7 @@
 #include <set>
 #include <variant>
 
-#include "core/simulation.h"
+#include "core/simulation/simulation.h"
 
 namespace demcal::objectives {
 namespace {

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "core/simulation.h"
+#include "core/simulation/simulation.h"
 #include "workflow/files/scene_json.h"
 #include "workflow/test_paths.h"
 

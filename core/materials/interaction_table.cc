@@ -1,0 +1,41 @@
+#include "core/materials/interaction_table.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "core/contact/jkr.h"
+
+namespace demcal::core {
+
+double BetaFromRestitution(double e) {
+  if (e >= 1.0) return 0.0;
+  const double l = std::log(e);
+  return l / std::sqrt(l * l + std::numbers::pi * std::numbers::pi);
+}
+
+ResolvedPair MakeResolvedPair(double e_star, double g_star, double beta, double mu_s, double mu_r,
+                              double gamma) {
+  const double k = gamma > 0 ? JkrNormal::AdhesionLength(e_star, gamma) : 0.0;
+  return {e_star, g_star, beta, mu_s, mu_r, gamma, k, std::sqrt(4.0 * g_star / e_star)};
+}
+
+InteractionTable::InteractionTable(const std::vector<Material>& materials,
+                                   const std::vector<PairParameters>& pairs)
+    : n_(static_cast<int>(materials.size())), resolved_(pairs.size()) {
+  for (int i = 0; i < n_; ++i) {
+    for (int j = 0; j < n_; ++j) {
+      const Material& a = materials[i];
+      const Material& b = materials[j];
+      const PairParameters& p = pairs[i * n_ + j];
+      const double inv_e = (1 - a.poisson_ratio * a.poisson_ratio) / a.youngs_modulus_Pa +
+                           (1 - b.poisson_ratio * b.poisson_ratio) / b.youngs_modulus_Pa;
+      const double inv_g = 2 * (2 - a.poisson_ratio) * (1 + a.poisson_ratio) / a.youngs_modulus_Pa +
+                           2 * (2 - b.poisson_ratio) * (1 + b.poisson_ratio) / b.youngs_modulus_Pa;
+      resolved_[i * n_ + j] =
+          MakeResolvedPair(1.0 / inv_e, 1.0 / inv_g, BetaFromRestitution(p.restitution),
+                           p.sliding_friction, p.rolling_friction, p.interfacial_energy_J_m2);
+    }
+  }
+}
+
+}  // namespace demcal::core

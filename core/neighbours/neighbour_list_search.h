@@ -1,0 +1,73 @@
+#pragma once
+// Internal to the neighbour list (neighbour_list.cc, neighbour_list_update.cc): the cell of a
+// point and the candidate search over the 27 cells around a particle.
+#include <cmath>
+
+#include "core/neighbours/neighbour_list.h"
+
+namespace demcal::core {
+
+inline int NeighbourList::Grid::CellOf(const Vec3& x) const {
+  // Outliers are clamped into the edge cells, or wrapped on periodic axes.
+  // Reduced and clamped as a double before the conversion, so a far outlier (a particle flung
+  // to 1e300 m before the run's checks catch it) or a NaN never overflows the int (UB).
+  auto index = [](double v, int n, bool wraps) {
+    if (wraps) v -= n * std::floor(v / n);  // into [0, n], up to rounding
+    if (!(v >= 0)) return 0;
+    if (v >= n) return n - 1;
+    return static_cast<int>(v);
+  };
+  const int ix = index((x.x - origin.x) * inv_cell.x, nx, wrap[0]);
+  const int iy = index((x.y - origin.y) * inv_cell.y, ny, wrap[1]);
+  const int iz = index((x.z - origin.z) * inv_cell.z, nz, wrap[2]);
+  return (iz * ny + iy) * nx + ix;
+}
+
+// Visits every j in the cells around i with |x_i − x_j| < r_i + r_j + skin (minimum image),
+// j > i if kUpperOnly, else every j ≠ i; spheres of i's body are skipped.
+template <bool kUpperOnly, class Visit>
+void NeighbourList::ForEachCandidate(const Grid& grid, size_t i, const std::vector<Vec3>& x,
+                                     const std::vector<double>& r, const std::vector<int>* body,
+                                     double skin, Visit&& visit) const {
+  const int own_body = body ? (*body)[i] : -1;
+  const PeriodicBox& box = periodic_;
+  const int c = cell_of_particle_[i];
+  const int home[3] = {c % grid.nx, (c / grid.nx) % grid.ny, c / (grid.nx * grid.ny)};
+  const int dims[3] = {grid.nx, grid.ny, grid.nz};
+  // Neighbour cells per axis, wrapped once here (not per cell: integer division is slow) on
+  // periodic axes; a periodic axis with fewer than three cells is searched whole, once.
+  int cells[3][3], count[3];
+  for (int a = 0; a < 3; ++a) {
+    count[a] = 0;
+    if (box.IsPeriodic(a) && !grid.wrap[a]) {
+      for (int k = 0; k < dims[a]; ++k) cells[a][count[a]++] = k;
+      continue;
+    }
+    for (int k = home[a] - 1; k <= home[a] + 1; ++k) {
+      if (grid.wrap[a])
+        cells[a][count[a]++] = (k + dims[a]) % dims[a];
+      else if (k >= 0 && k < dims[a])
+        cells[a][count[a]++] = k;
+    }
+  }
+  for (int cz = 0; cz < count[2]; ++cz) {
+    for (int cy = 0; cy < count[1]; ++cy) {
+      const int row = (cells[2][cz] * grid.ny + cells[1][cy]) * grid.nx;
+      for (int cx = 0; cx < count[0]; ++cx) {
+        const int cell = row + cells[0][cx];
+        const uint32_t first = cell_start_[cell], last = cell_start_[cell + 1];
+        // A cell lists its particles in ascending slot order, and slots are kept in cell order
+        // (Simulation's periodic re-sort): about half the cells hold only j < i, skipped whole.
+        if (kUpperOnly && (first == last || cell_particles_[last - 1] <= i)) continue;
+        for (uint32_t s = first; s < last; ++s) {
+          const uint32_t j = cell_particles_[s];
+          if ((kUpperOnly ? j <= i : j == i) || (own_body >= 0 && (*body)[j] == own_body)) continue;
+          const double reach = r[i] + r[j] + skin;
+          if (Norm2(box.MinimumImage(x[i] - x[j])) < reach * reach) visit(j);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace demcal::core

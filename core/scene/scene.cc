@@ -1,0 +1,78 @@
+#include "core/scene/scene.h"
+
+#include "core/contact/jkr.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace demcal::core {
+
+int Scene::MaterialIndex(const std::string& name) const {
+  for (size_t i = 0; i < materials.size(); ++i)
+    if (materials[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+int Scene::SpeciesIndex(const std::string& name) const {
+  for (size_t i = 0; i < species.size(); ++i)
+    if (species[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+double Scene::MaxDiameter() const {
+  double d = 0;
+  for (const Species& s : species) d = std::max(d, s.size.MaxDiameter());
+  for (const ParticleSpec& p : particles) d = std::max(d, p.diameter_m);
+  return d;
+}
+
+double Scene::MinDiameter() const {
+  double d = std::numeric_limits<double>::infinity();
+  for (const Species& s : species) d = std::min(d, s.size.MinDiameter());
+  for (const ParticleSpec& p : particles)
+    if (p.diameter_m > 0) d = std::min(d, p.diameter_m);
+  return d;
+}
+
+double MaxAdhesiveBreakGap(const Scene& scene) {
+  const size_t n = scene.materials.size();
+  if (scene.pair_parameters.size() != n * n) return 0;
+  const InteractionTable table(scene.materials, scene.pair_parameters);
+  const double r_max = 0.5 * scene.MaxDiameter();
+  double gap = 0;
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = 0; j < n; ++j) {
+      const ResolvedPair& p = table.Get(i, j);
+      if (p.interfacial_energy_J_m2 > 0)
+        gap = std::max(gap, JkrNormal::BreakGap(r_max, p.effective_youngs_Pa, p.interfacial_energy_J_m2));
+    }
+  return gap;
+}
+
+double NeighbourSkin(const Scene& scene) {
+  if (scene.skin_m > 0) return scene.skin_m;
+  return std::max(0.25 * scene.MinDiameter(), 2.5 * MaxAdhesiveBreakGap(scene));
+}
+
+namespace {
+// Rayleigh time of one sphere (LIGGGHTS fix_check_timestep_gran; physics.md §1.5).
+double SphereRayleighTime(const Material& m, double radius_m) {
+  return std::numbers::pi * radius_m * std::sqrt(m.density_kg_m3 / m.ShearModulus()) /
+         (0.1631 * m.poisson_ratio + 0.8766);
+}
+}  // namespace
+
+double RayleighTime(const Scene& scene) {
+  double t = std::numeric_limits<double>::infinity();
+  for (const Species& sp : scene.species)
+    t = std::min(t, SphereRayleighTime(scene.materials[sp.material], 0.5 * sp.size.MinDiameter()));
+  for (const ParticleSpec& p : scene.particles)
+    if (p.diameter_m > 0)
+      t = std::min(t, SphereRayleighTime(scene.materials[scene.species[p.species].material],
+                                         0.5 * p.diameter_m));
+  return t;
+}
+
+}  // namespace demcal::core

@@ -1,0 +1,373 @@
+// Scene::IsValid: every field of a scene checked against its physical range, then the
+// cross-field limits (walls inside the domain and not across a periodic axis, particles not
+// inside one another, factories that fit, a run that fits a step counter).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "core/contact/jkr.h"
+#include "core/scene/scene.h"
+#include "core/scene/scene_overlaps.h"
+#include "core/walls/triangle_mesh.h"
+#include "core/walls/wall_extent.h"
+
+namespace demcal::core {
+namespace {
+
+// Collects the first violation as "field = value is outside allowed range".
+class Checker {
+ public:
+  explicit Checker(std::string* error) : error_(error) {}
+  bool ok() const { return ok_; }
+  void Fail(const std::string& message) {
+    if (ok_ && error_) *error_ = message;
+    ok_ = false;
+  }
+  // open/closed bounds: lo_open ⇒ value > lo, else value >= lo (same for hi)
+  void Range(const std::string& field, double v, double lo, double hi, bool lo_open,
+             bool hi_open, const std::string& unit = "") {
+    const bool good = std::isfinite(v) && (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
+    if (good) return;
+    // Readable bounds: "(0, 1e+06] s", "> 0 Pa"; never "inf" or a 300-digit number.
+    std::ostringstream os;
+    os << "field '" << field << "' = " << v << (unit.empty() ? "" : " " + unit)
+       << " is outside the allowed range ";
+    if (std::isinf(hi))
+      os << (lo_open ? "> " : ">= ") << lo;
+    else
+      os << (lo_open ? "(" : "[") << lo << ", " << hi << (hi_open ? ")" : "]");
+    if (!unit.empty()) os << " " << unit;
+    Fail(os.str());
+  }
+  void Positive(const std::string& field, double v, const std::string& unit) {
+    Range(field, v, 0, kInf, true, true, unit);
+  }
+  static constexpr double kInf = std::numeric_limits<double>::infinity();
+
+ private:
+  std::string* error_;
+  bool ok_ = true;
+};
+
+std::string Indexed(const std::string& name, size_t i) { return name + "[" + std::to_string(i) + "]"; }
+
+void CheckMaterials(const Scene& s, Checker& c) {
+  if (s.materials.empty()) c.Fail("field 'materials' must list at least one material");
+  for (size_t i = 0; i < s.materials.size(); ++i) {
+    const Material& m = s.materials[i];
+    const std::string f = Indexed("materials", i);
+    c.Positive(f + ".youngs_modulus_Pa", m.youngs_modulus_Pa, "Pa");
+    c.Range(f + ".poisson_ratio", m.poisson_ratio, -1, 0.5, true, true);
+    c.Range(f + ".density_kg_m3", m.density_kg_m3, 0, 1e5, false, false, "kg/m3");
+  }
+}
+
+void CheckSpecies(const Scene& s, Checker& c) {
+  for (size_t i = 0; i < s.species.size(); ++i) {
+    const Species& sp = s.species[i];
+    const std::string f = Indexed("species", i);
+    if (sp.material < 0 || sp.material >= static_cast<int>(s.materials.size()))
+      c.Fail("field '" + f + ".material' names no defined material");
+    else
+      c.Range(f + ".material density", s.materials[sp.material].density_kg_m3, 0, 1e5, true, false,
+              "kg/m3");
+    const SizeDistribution& d = sp.size;
+    using K = SizeDistribution::Kind;
+    if (d.kind == K::kFixed) c.Range(f + ".diameter_m", d.diameter_m, 0, 10, true, false, "m");
+    if (d.kind == K::kUniform) {
+      c.Range(f + ".diameter_m.min", d.min_diameter_m, 0, 10, true, false, "m");
+      c.Range(f + ".diameter_m.max", d.max_diameter_m, d.min_diameter_m, 10, false, false, "m");
+    }
+    if (d.kind == K::kTable) {
+      if (d.table_diameter_m.empty() || d.table_diameter_m.size() != d.table_number_fraction.size())
+        c.Fail("field '" + f + ".diameter_table' needs equally long non-empty diameter and fraction lists");
+      double sum = 0;
+      for (size_t k = 0; k < d.table_diameter_m.size(); ++k) {
+        c.Range(f + ".diameter_table[" + std::to_string(k) + "].diameter_m", d.table_diameter_m[k], 0, 10, true, false, "m");
+        c.Range(f + ".diameter_table[" + std::to_string(k) + "].number_fraction", d.table_number_fraction[k], 0, 1, false, false);
+        sum += d.table_number_fraction[k];
+      }
+      if (std::abs(sum - 1.0) > 1e-6) c.Fail("field '" + f + ".diameter_table' number fractions must sum to 1");
+    }
+  }
+}
+
+void CheckPairs(const Scene& s, Checker& c) {
+  const size_t n = s.materials.size();
+  if (s.pair_parameters.size() != n * n) {
+    c.Fail("field 'interactions' must resolve to one entry per material pair");
+    return;
+  }
+  for (size_t i = 0; i < n; ++i) {
+    for (size_t j = 0; j < n; ++j) {
+      const PairParameters& p = s.pair_parameters[i * n + j];
+      const std::string f = "interactions[" + s.materials[i].name + "," + s.materials[j].name + "]";
+      c.Range(f + ".sliding_friction", p.sliding_friction, 0, 10, false, false);
+      c.Range(f + ".rolling_friction", p.rolling_friction, 0, 10, false, false);
+      c.Range(f + ".restitution", p.restitution, 0, 1, true, false);
+      c.Range(f + ".interfacial_energy_J_m2", p.interfacial_energy_J_m2, 0, 1e3, false, false, "J/m2");
+    }
+  }
+}
+
+// A surface's IsValid message "cylinder: radius_m must be ..." becomes
+// "field 'walls[2].radius_m' must be ... (cylinder 'silo')".
+void CheckWall(const Scene& s, size_t i, Checker& c) {
+  const Wall& w = s.walls[i];
+  const std::string f = Indexed("walls", i);
+  if (w.material < 0 || w.material >= static_cast<int>(s.materials.size()))
+    c.Fail("field '" + f + ".material' names no defined material");
+  std::string message;
+  const bool shape_ok = std::visit(
+      [&](const auto& shape) {
+        using S = std::decay_t<decltype(shape)>;
+        if constexpr (std::is_same_v<S, MeshRef>) {
+          if (shape.mesh && IsFinite(shape.offset_m)) return true;
+          message = shape.mesh ? "mesh: offset_m is not finite"
+                               : "mesh: mesh holds no triangle mesh (read the STL file with "
+                                 "ReadMeshWall before validating the scene)";
+          return false;
+        } else {
+          return shape.IsValid(&message);
+        }
+      },
+      w.shape);
+  if (!shape_ok) {
+    const size_t colon = message.find(": ");
+    const size_t space = message.find(' ', colon + 2);
+    if (colon == std::string::npos || space == std::string::npos) {
+      c.Fail("field '" + f + "' (" + ShapeName(w.shape) + "): " + message);
+    } else {
+      c.Fail("field '" + f + "." + message.substr(colon + 2, space - colon - 2) + "'" +
+             message.substr(space) + " (" + ShapeName(w.shape) + " '" + w.name + "')");
+    }
+  }
+  if (!c.ok()) return;
+  const char* axes = "xyz";
+  // docs/scene_format.md: no wall across a periodic axis (particles would wrap through it); a
+  // wall a particle radius inside the periodic box, or unchanged along the axis, is fine.
+  // (A periodic axis along gravity is reported below, as the more basic mistake.)
+  for (int a = 0; a < 3 && c.ok(); ++a) {
+    if (!s.periodic[a] || s.gravity_m_s2[a] != 0 || InvariantAlongAxis(w, a)) continue;
+    const AxisInterval x = WallExtent(w, a, s.time.duration_s);
+    const double margin = 0.5 * s.MaxDiameter();
+    if (x.lo_m >= s.domain_min_m[a] + margin && x.hi_m <= s.domain_max_m[a] - margin) continue;
+    std::ostringstream os;
+    os << "field '" << f << "' (" << ShapeName(w.shape) << " '" << w.name
+       << "') crosses the periodic axis " << axes[a] << ": it ";
+    if (std::isinf(x.lo_m) || std::isinf(x.hi_m))
+      os << "is unbounded along " << axes[a];
+    else
+      os << "reaches [" << x.lo_m << ", " << x.hi_m << "] m along " << axes[a];
+    os << ", the periodic domain is [" << s.domain_min_m[a]
+       << ", " << s.domain_max_m[a] << "] m and a wall must stay a particle radius (" << margin
+       << " m) inside it or be unchanged along the axis (a plane parallel to it, an infinite "
+       << "cylinder along it); drop the wall (a box: its " << axes[a] << " faces) or periodic."
+       << axes[a];
+    c.Fail(os.str());
+  }
+  if (const auto* ref = std::get_if<MeshRef>(&w.shape);
+      ref && ref->mesh && ref->mesh->NumVertices() > 0 && c.ok()) {
+    // A mesh that never meets the domain is a unit or offset mistake (mm read as m).
+    Vec3 lo = ref->mesh->Vertex(0) + ref->offset_m, hi = lo;
+    for (size_t v = 0; v < ref->mesh->NumVertices(); ++v)
+      for (int a = 0; a < 3; ++a) {
+        const double x = ref->mesh->Vertex(static_cast<int32_t>(v))[a] + ref->offset_m[a];
+        lo[a] = std::min(lo[a], x);
+        hi[a] = std::max(hi[a], x);
+      }
+    const double travel =
+        Norm(w.velocity_m_s) *
+        (std::isinf(w.motion_end_s) ? s.time.duration_s : w.motion_end_s - w.motion_start_s);
+    for (int a = 0; a < 3; ++a)
+      if (hi[a] + travel < s.domain_min_m[a] || lo[a] - travel > s.domain_max_m[a]) {
+        std::ostringstream os;
+        os << "field '" << f << "' (mesh '" << w.name << "' from " << ref->source
+           << ") lies entirely outside the domain along " << axes[a] << ": the mesh spans ["
+           << lo[a] << ", " << hi[a] << "] m, the domain [" << s.domain_min_m[a] << ", "
+           << s.domain_max_m[a] << "] m; check the STL's units (scale) and offset_m";
+        c.Fail(os.str());
+        break;
+      }
+  }
+  if (!IsFinite(w.velocity_m_s)) c.Fail("field '" + f + ".velocity_m_s' must be finite");
+  if (!IsFinite(w.load_point_m)) c.Fail("field '" + f + ".load_point_m' must be finite");
+  c.Range(f + ".motion_start_s", w.motion_start_s, 0, 1e9, false, false, "s");
+  if (!std::isinf(w.motion_end_s) || w.motion_end_s < 0)
+    c.Range(f + ".motion_end_s", w.motion_end_s, w.motion_start_s, 1e9, false, false, "s");
+}
+
+void CheckGeometry(const Scene& s, Checker& c) {
+  for (int a = 0; a < 3; ++a)
+    if (!(s.domain_max_m[a] > s.domain_min_m[a]))
+      c.Fail("field 'domain.max_m' must exceed 'domain.min_m' on every axis");
+  for (size_t i = 0; i < s.walls.size(); ++i) CheckWall(s, i, c);
+  if (!IsFinite(s.gravity_m_s2)) c.Fail("field 'gravity_m_s2' must be finite");
+  const char* axis_names[3] = {"x", "y", "z"};
+  for (int a = 0; a < 3 && c.ok(); ++a) {
+    if (!s.periodic[a]) continue;
+    const std::string f = std::string("periodic.") + axis_names[a];
+    if (s.gravity_m_s2[a] != 0)
+      c.Fail("field '" + f + "': a periodic axis must be perpendicular to gravity (energy "
+             "accounting and heaps need a floor)");
+    // Three neighbour cells must fit, so that no pair meets through two images.
+    const double cell = s.MaxDiameter() + NeighbourSkin(s);
+    const double length = s.domain_max_m[a] - s.domain_min_m[a];
+    if (length < 3 * cell) {
+      std::ostringstream os;
+      os << "field '" << f << "': the domain is " << length << " m long on this axis; periodic "
+         << "boundaries need at least 3 × (largest diameter + skin) = " << 3 * cell << " m";
+      c.Fail(os.str());
+    }
+  }
+}
+
+void CheckParticles(const Scene& s, Checker& c) {
+  const int ns = static_cast<int>(s.species.size());
+  for (size_t i = 0; i < s.particles.size(); ++i) {
+    const ParticleSpec& p = s.particles[i];
+    const std::string f = Indexed("particles", i);
+    if (p.species < 0 || p.species >= ns) c.Fail("field '" + f + ".species' names no defined species");
+    c.Range(f + ".diameter_m", p.diameter_m, 0, 10, false, false, "m");
+    for (int a = 0; a < 3; ++a)
+      if (p.position_m[a] < s.domain_min_m[a] || p.position_m[a] > s.domain_max_m[a])
+        c.Fail("field '" + f + ".position_m' lies outside the domain");
+    if (!IsFinite(p.velocity_m_s) || !IsFinite(p.angular_velocity_rad_s))
+      c.Fail("field '" + f + "' has a non-finite velocity");
+    if (p.fixed && p.species >= 0 && p.species < ns && !s.species[p.species].clump_shape.empty())
+      c.Fail("field '" + f + ".fixed': only spheres can be fixed, species '" +
+             s.species[p.species].name + "' is a clump");
+  }
+  if (c.ok()) {
+    const std::string overlap = ExplicitOverlapError(s);
+    if (!overlap.empty()) c.Fail(overlap);
+  }
+  for (size_t i = 0; i < s.fills.size(); ++i) {
+    const FillSpec& fl = s.fills[i];
+    const std::string f = Indexed("fills", i);
+    if (fl.species < 0 || fl.species >= ns) c.Fail("field '" + f + ".species' names no defined species");
+    c.Range(f + ".count", static_cast<double>(fl.count), 0, 1e8, true, false);
+    for (int a = 0; a < 3; ++a) {
+      if (!(fl.region.max_m[a] > fl.region.min_m[a]))
+        c.Fail("field '" + f + ".region' must be non-empty on every axis");
+      if (fl.region.min_m[a] < s.domain_min_m[a] || fl.region.max_m[a] > s.domain_max_m[a])
+        c.Fail("field '" + f + ".region' must lie inside the domain");
+    }
+  }
+}
+
+void CheckFactories(const Scene& s, Checker& c) {
+  const int ns = static_cast<int>(s.species.size());
+  for (size_t i = 0; i < s.factories.size(); ++i) {
+    const FactorySpec& f = s.factories[i];
+    const std::string name = Indexed("factories", i);
+    if (f.species.empty() || f.species.size() != f.mass_fractions.size()) {
+      c.Fail("field '" + name + ".species' must list at least one species with a mass fraction each");
+      continue;
+    }
+    double sum = 0, mean_density = 0, d_max = 0;
+    for (size_t k = 0; k < f.species.size(); ++k) {
+      const std::string fk = name + ".species[" + std::to_string(k) + "]";
+      if (f.species[k] < 0 || f.species[k] >= ns) {
+        c.Fail("field '" + fk + "' names no defined species");
+        return;
+      }
+      c.Range(fk + ".mass_fraction", f.mass_fractions[k], 0, 1, false, false);
+      sum += f.mass_fractions[k];
+      const Species& sp = s.species[f.species[k]];
+      mean_density += f.mass_fractions[k] * s.materials[sp.material].density_kg_m3;
+      d_max = std::max(d_max, sp.size.MaxDiameter());
+    }
+    if (std::abs(sum - 1) > 1e-6) c.Fail("field '" + name + ".species' mass fractions must sum to 1");
+    c.Positive(name + ".mass_rate_kg_s", f.mass_rate_kg_s, "kg/s");
+    c.Range(name + ".start_s", f.start_s, 0, 1e9, false, false, "s");
+    if (!std::isinf(f.end_s)) c.Range(name + ".end_s", f.end_s, f.start_s, 1e9, true, false, "s");
+    if (!std::isinf(f.total_mass_kg))
+      c.Range(name + ".total_mass_kg", f.total_mass_kg, 0, 1e9, true, false, "kg");
+    c.Range(name + ".batch_interval_s", f.batch_interval_s, 0, 1e6, false, false, "s");
+    c.Range(name + ".follow_heap.clearance_m", f.follow_heap_clearance_m, 0, 1e3, false, false, "m");
+    c.Range(name + ".follow_heap.settled_speed_m_s", f.settled_speed_m_s, 0, 1e3, true, false, "m/s");
+    if (!IsFinite(f.region_velocity_m_s))
+      c.Fail("field '" + name + ".region_velocity_m_s' must be finite");
+    for (int a = 0; a < 3; ++a)
+      if (f.region.min_m[a] < s.domain_min_m[a] || f.region.max_m[a] > s.domain_max_m[a] ||
+          !(f.region.max_m[a] > f.region.min_m[a]))
+        c.Fail("field '" + name + ".region' must be a non-empty region inside the domain");
+    if (!c.ok()) return;
+    if (d_max >= f.region.MinExtent()) {
+      std::ostringstream os;
+      os << "field '" << name << ".region' is too small: its smallest extent "
+         << f.region.MinExtent() << " m does not exceed the largest particle diameter " << d_max << " m";
+      c.Fail(os.str());
+      return;
+    }
+    // One batch must fit in the region at a solid fraction random insertion can reach (0.3).
+    const double interval = ParticleFactory::BatchInterval(f, Norm(s.gravity_m_s2));
+    const double batch_volume = f.mass_rate_kg_s * interval / mean_density;
+    if (batch_volume > 0.3 * f.region.Volume()) {
+      std::ostringstream os;
+      os << "field '" << name << ".region' is too small for mass_rate_kg_s = " << f.mass_rate_kg_s
+         << ": a batch of " << interval << " s needs a solid fraction of "
+         << batch_volume / f.region.Volume()
+         << " in it (at most 0.3); enlarge the region (taller regions also batch less often) or "
+            "lower the rate";
+      c.Fail(os.str());
+    }
+  }
+}
+
+void CheckTime(const Scene& s, Checker& c) {
+  c.Range("time.duration_s", s.time.duration_s, 0, 1e6, false, false, "s");
+  c.Range("time.rayleigh_fraction", s.time.rayleigh_fraction, 0, 1, true, false);
+  c.Range("time.timestep_s", s.time.timestep_s, 0, 1, false, false, "s");
+  c.Range("skin_m", s.skin_m, 0, 1, false, false, "m");
+  c.Range("max_wall_time_s", s.max_wall_time_s, 0, 1e9, false, false, "s");
+  if (!c.ok() || s.species.empty()) return;
+  const double gap = MaxAdhesiveBreakGap(s);
+  if (s.skin_m > 0 && s.skin_m <= gap) {
+    std::ostringstream os;
+    os << "field 'skin_m' = " << s.skin_m << " m must exceed the largest JKR break gap " << gap
+       << " m, or stretched adhesive contacts would be lost; leave it unset for automatic";
+    c.Fail(os.str());
+  }
+  const double t_r = RayleighTime(s);
+  if (s.time.timestep_s > t_r && !s.time.force_timestep) {
+    std::ostringstream os;
+    os << "field 'time.timestep_s' = " << s.time.timestep_s << " s exceeds the Rayleigh time "
+       << t_r << " s of the smallest, stiffest species; contacts would be under-resolved and "
+       << "the run would blow up. Use time.rayleigh_fraction (default 0.2) or set "
+       << "time.force_timestep = true to insist";
+    c.Fail(os.str());
+  }
+}
+
+}  // namespace
+
+bool Scene::IsValid(std::string* error) const {
+  Checker c(error);
+  CheckMaterials(*this, c);
+  if (c.ok()) CheckSpecies(*this, c);
+  if (c.ok()) CheckPairs(*this, c);
+  if (c.ok()) CheckGeometry(*this, c);
+  if (c.ok()) CheckParticles(*this, c);
+  if (c.ok()) CheckFactories(*this, c);
+  for (size_t i = 0; i < sinks.size() && c.ok(); ++i) {
+    const std::string problem = SinkProblem(sinks[i]);
+    if (!problem.empty()) c.Fail("field '" + Indexed("sinks", i) + problem);
+  }
+  RollingModel model;
+  if (c.ok() && !MakeRollingModel(rolling, &model))
+    c.Fail("field 'contact_model.rolling' = '" + rolling.name + "' is not one of none|cdt|epsd|epsd2");
+  if (c.ok()) c.Range("contact_model.epsd_damping_ratio", rolling.epsd_damping_ratio, 0, 1, false, false);
+  JkrRollingLoad load;
+  if (c.ok() && !ParseJkrRollingLoad(rolling.jkr_rolling_load, &load))
+    c.Fail("field 'contact_model.jkr_rolling_load' = '" + rolling.jkr_rolling_load +
+           "' is not one of net|repulsive");
+  if (c.ok() && species.empty() && (!particles.empty() || !fills.empty() || !factories.empty()))
+    c.Fail("field 'species' must list at least one species");
+  if (c.ok()) CheckTime(*this, c);
+  return c.ok();
+}
+
+}  // namespace demcal::core
