@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "calibrate/cohesion_scaling.h"
-#include "workflow/exit_codes.h"
+#include "outputs/exit_codes.h"
 #include "workflow/reproduce/cohesion_json.h"
 
 namespace demcal::apps {

@@ -4,7 +4,7 @@
 // when it was selected. main.cc lists the factories; adding a subcommand (experiment,
 // calibrate, ...) is one new file plus one line in that list.
 //
-// The action returns a process exit code (workflow/exit_codes.h); options parsed by CLI11 live in
+// The action returns a process exit code (outputs/exit_codes.h); options parsed by CLI11 live in
 // state owned by the action (captured shared_ptr), so they outlive the parse.
 #include <CLI/CLI.hpp>
 #include <functional>

@@ -3,7 +3,8 @@
 #include <iostream>
 #include <memory>
 
-#include "workflow/experiments/run_experiment.h"
+#include "experiments/common/run_experiment.h"
+#include "experiments/experiment_registry.h"
 
 namespace demcal::apps {
 
@@ -11,11 +12,13 @@ using namespace demcal::workflow;
 
 Command AddExperimentCommand(CLI::App& parent) {
   auto options = std::make_shared<ExperimentOptions>();
-  CLI::App* app = parent.add_subcommand(
-      "experiment", "Run a virtual experiment (angle of repose, funnel discharge, segregation heap)");
-  app->add_option("kind", options->kind, "aor, discharge or segregation")
+  std::string described;
+  for (const std::string& name : ExperimentKindNames())
+    described += (described.empty() ? "" : ", ") + std::string(FindExperimentKind(name)->description);
+  CLI::App* app = parent.add_subcommand("experiment", "Run a virtual experiment (" + described + ")");
+  app->add_option("kind", options->kind, JoinNames(ExperimentKindNames()))
       ->required()
-      ->check(CLI::IsMember({"aor", "discharge", "segregation"}));
+      ->check(CLI::IsMember(ExperimentKindNames()));
   app->add_option("params", options->params_path, "experiment parameter file (demcal-experiment/1 JSON)")
       ->required();
   app->add_option("--out", options->out_dir, "output directory (created if missing)")->required();

@@ -1,5 +1,5 @@
 #pragma once
-// `demcal experiment`: the command-line front of workflow/experiments/run_experiment.h (argv, help, progress on stderr); the work
+// `demcal experiment`: the command-line front of experiments/common/run_experiment.h (argv, help, progress on stderr); the work
 // is done by the workflow layer.
 #include "apps/command.h"
 

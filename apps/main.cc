@@ -14,7 +14,7 @@
 #include "apps/reproduce_command.h"
 #include "apps/simulate_command.h"
 #include "core/version.h"
-#include "workflow/exit_codes.h"
+#include "outputs/exit_codes.h"
 
 namespace {
 

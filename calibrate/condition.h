@@ -1,7 +1,7 @@
 #pragma once
 // Condition: what distinguishes one measurement from another of the same observable and
 // material — a coating level, a size cut, a test geometry — as column -> cell of the measurement
-// table (workflow/files/measurement_table.h). Cells are numbers or words; numbers compare by
+// table (files/measurement_table.h). Cells are numbers or words; numbers compare by
 // value ("0.5" equals "0.50"). Parameters may apply only under a condition (Γ of EP at 0.5 wt%)
 // or follow a covariate of it (Γ(w), parameter_curve.h).
 //

@@ -8,8 +8,8 @@
 // Failures are values of the status, never exceptions (Ceres' CostFunction contract: a sample
 // that cannot be computed is reported, and the optimiser treats it as infeasible).
 //
-// Adding an experiment to calibration is one probe file in calibrate/probes/ plus its line in
-// the experiment registry (workflow/experiments/experiment_registry.cc).
+// An experiment becomes a calibration target with a probe in its room
+// (experiments/<name>/<name>_probe.h) named in its registry entry (<name>_kind.cc).
 //
 // Thread-safety: Run is called concurrently for different replicates and candidates and must be
 // reentrant.

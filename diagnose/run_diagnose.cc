@@ -6,9 +6,9 @@
 #include "diagnose/dem/study_model.h"
 #include "diagnose/effects/effect_registry.h"
 #include "diagnose/report/diagnosis_outputs.h"
-#include "workflow/exit_codes.h"
-#include "workflow/files/study_file.h"
-#include "workflow/outputs/output_lock.h"
+#include "outputs/exit_codes.h"
+#include "workflow/calibration/study_file.h"
+#include "outputs/output_lock.h"
 
 namespace demcal::diagnose {
 namespace {

@@ -1,14 +1,12 @@
 // libFuzzer harness: the experiment reader (demcal-experiment/1: particle model, fidelity and
-// the aor / discharge / segregation sections). Never crashes; a failure names the source.
+// every registered experiment's section). Never crashes; a failure names the source.
 #include <cstdint>
 #include <cstdlib>
 #include <string>
 
-#include "workflow/files/aor_json.h"
-#include "workflow/files/discharge_json.h"
-#include "workflow/files/experiment_file.h"
-#include "workflow/files/json_document.h"
-#include "workflow/files/segregation_json.h"
+#include "experiments/common/experiment_file.h"
+#include "experiments/experiment_registry.h"
+#include "files/json_document.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace demcal::workflow;
@@ -21,13 +19,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (error.rfind("fuzz.json", 0) != 0) std::abort();
     return 0;
   }
-  demcal::objectives::AorSettings aor;
-  demcal::objectives::DischargeSettings discharge;
-  demcal::objectives::SegregationSettings segregation;
-  if (file.experiment == "aor") ParseAorSection(file.section, "fuzz.json", file.model, &aor, &error);
-  if (file.experiment == "discharge")
-    ParseDischargeSection(file.section, "fuzz.json", file.model, &discharge, &error);
-  if (file.experiment == "segregation")
-    ParseSegregationSection(file.section, "fuzz.json", file.model, &segregation, &error);
+  FindExperimentKind(file.experiment)->check_section(file, &error);
   return 0;
 }

@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "workflow/files/json_document.h"
+#include "files/json_document.h"
 
 namespace {
 int Depth(const nlohmann::json& j) {

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "fuzz/fuzz_input_file.h"
-#include "workflow/files/measurement_table.h"
+#include "files/measurement_table.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string path = demcal::fuzz::WriteFuzzInput("table.csv", data, size);

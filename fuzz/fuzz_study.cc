@@ -6,7 +6,7 @@
 #include <string>
 
 #include "fuzz/fuzz_input_file.h"
-#include "workflow/files/study_file.h"
+#include "workflow/calibration/study_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string path = demcal::fuzz::WriteFuzzInput("study.json", data, size);

@@ -6,7 +6,7 @@
 // Destroying an uncommitted AtomicFile removes its temporary.
 //
 // Thread-safety: one object per thread; two processes writing the same NAME each use their own
-// temporary and the last rename wins (workflow/outputs/output_lock.h keeps them apart).
+// temporary and the last rename wins (outputs/output_lock.h keeps them apart).
 //
 // Usage:
 //   AtomicFile file(path);

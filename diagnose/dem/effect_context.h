@@ -12,7 +12,7 @@
 #include <string>
 
 #include "diagnose/effects/effect.h"
-#include "workflow/files/study_file.h"
+#include "workflow/calibration/study_file.h"
 
 namespace demcal::diagnose {
 

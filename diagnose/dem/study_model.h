@@ -25,7 +25,7 @@
 #include "diagnose/gap/observation.h"
 #include "diagnose/loop/forward_model.h"
 #include "workflow/calibration/study_runs.h"
-#include "workflow/files/study_file.h"
+#include "workflow/calibration/study_file.h"
 
 namespace demcal::diagnose {
 

@@ -3,7 +3,7 @@
 #include <sstream>
 
 #include "diagnose/report/diagnosis_plots.h"
-#include "workflow/outputs/html_report.h"
+#include "outputs/html_report.h"
 
 namespace demcal::diagnose {
 namespace {

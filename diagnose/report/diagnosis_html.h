@@ -2,7 +2,7 @@
 // report.html of a diagnosis: the verdict, the gap before and after per observable and
 // condition, the ranking and the signatures, where the gap was and what the diagnosis cost —
 // the same content as diagnosis.json and the SVG plots, as one self-contained page
-// (workflow/outputs/html_report.h). Synthetic inputs carry the report's "synthetic" badge.
+// (outputs/html_report.h). Synthetic inputs carry the report's "synthetic" badge.
 #include <string>
 
 #include "diagnose/report/diagnosis_outputs.h"

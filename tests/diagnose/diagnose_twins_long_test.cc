@@ -10,7 +10,7 @@
 
 #include "core/io/scratch_dir.h"
 #include "diagnose/run_diagnose.h"
-#include "workflow/exit_codes.h"
+#include "outputs/exit_codes.h"
 #include "workflow/test_paths.h"
 #include "workflow/tiny_scene.h"
 

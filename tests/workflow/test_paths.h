@@ -1,6 +1,7 @@
 #pragma once
-// Test helper: the repository root, found from this header's own path (<root>/tests/apps/), so
-// tests that read examples/ run from any working directory.
+// Test helper: the repository root, so tests that read examples/, datasets/ and tests/data/ run
+// from any working directory. The build defines DEMCAL_TEST_SOURCE_DIR (tests/CMakeLists.txt);
+// without it, the root is found from this header's own path (<root>/tests/workflow/).
 #include <filesystem>
 
 namespace demcal::testing {

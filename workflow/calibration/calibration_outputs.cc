@@ -7,8 +7,8 @@
 #include "core/version.h"
 #include "objectives/report/text_file.h"
 #include "workflow/calibration/calibration_plots.h"
-#include "workflow/experiments/experiment_runner.h"
-#include "workflow/files/json_document.h"
+#include "experiments/common/experiment_runner.h"
+#include "files/json_document.h"
 
 namespace demcal::workflow {
 namespace {

@@ -13,7 +13,7 @@
 #include <string>
 
 #include "calibrate/calibration.h"
-#include "workflow/files/study_file.h"
+#include "workflow/calibration/study_file.h"
 
 namespace demcal::workflow {
 

@@ -7,8 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include "objectives/report/text_file.h"
-#include "workflow/files/json_document.h"
-#include "workflow/files/study_file.h"
+#include "files/json_document.h"
+#include "workflow/calibration/study_file.h"
 
 namespace demcal::workflow {
 namespace {

@@ -12,8 +12,8 @@
 #include "workflow/calibration/calibration_outputs.h"
 #include "workflow/calibration/clump_count_table.h"
 #include "workflow/calibration/study_runs.h"
-#include "workflow/exit_codes.h"
-#include "workflow/outputs/output_lock.h"
+#include "outputs/exit_codes.h"
+#include "outputs/output_lock.h"
 
 namespace demcal::workflow {
 namespace {

@@ -5,9 +5,9 @@
 #include <sstream>
 
 #include "core/bodies/clump_shapes.h"
-#include "workflow/experiments/experiment_registry.h"
-#include "workflow/experiments/experiment_runner.h"
-#include "workflow/files/json_document.h"
+#include "experiments/experiment_registry.h"
+#include "experiments/common/experiment_runner.h"
+#include "files/json_document.h"
 
 namespace demcal::workflow {
 namespace {

@@ -14,7 +14,7 @@
 
 #include "calibrate/target_evaluator.h"
 #include "objectives/common/fidelity.h"
-#include "workflow/files/study_file.h"
+#include "workflow/calibration/study_file.h"
 
 namespace demcal::workflow {
 

@@ -5,8 +5,8 @@
 #include <limits>
 
 #include "workflow/calibration/run_study.h"
-#include "workflow/exit_codes.h"
-#include "workflow/files/json_document.h"
+#include "outputs/exit_codes.h"
+#include "files/json_document.h"
 
 namespace demcal::workflow {
 namespace {

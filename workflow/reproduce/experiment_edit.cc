@@ -1,6 +1,6 @@
 #include "workflow/reproduce/experiment_edit.h"
 
-#include "workflow/files/json_document.h"
+#include "files/json_document.h"
 
 namespace demcal::workflow {
 namespace {

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "workflow/outputs/html_report.h"
+#include "outputs/html_report.h"
 #include "workflow/reproduce/reproduce_plots.h"
 
 namespace demcal::workflow {

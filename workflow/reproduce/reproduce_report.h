@@ -1,6 +1,6 @@
 #pragma once
 // The report of `demcal reproduce`: DIR/report.html (self-contained: inline SVG, no scripts, no
-// network; workflow/outputs/html_report.h) and the same document as DIR/report.md with its
+// network; outputs/html_report.h) and the same document as DIR/report.md with its
 // figures in DIR/figures/. Sections: paper vs demcal (the summary table), one per stage (its
 // numbers, its plot in the paper's figure style, its output folder), where the time went, and
 // the output files. Everything resting on synthetic data carries a "synthetic" badge.

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <filesystem>
 
-#include "workflow/exit_codes.h"
-#include "workflow/files/json_document.h"
-#include "workflow/outputs/output_lock.h"
+#include "outputs/exit_codes.h"
+#include "files/json_document.h"
+#include "outputs/output_lock.h"
 #include "workflow/reproduce/reproduce_report.h"
 #include "workflow/reproduce/scenario_params.h"
 #include "workflow/reproduce/stages.h"

@@ -5,8 +5,8 @@
 #include "calibrate/liggghts_export.h"
 #include "core/version.h"
 #include "objectives/report/text_file.h"
-#include "workflow/files/experiment_file.h"
-#include "workflow/files/json_document.h"
+#include "experiments/common/experiment_file.h"
+#include "files/json_document.h"
 #include "workflow/reproduce/experiment_edit.h"
 
 namespace demcal::workflow {

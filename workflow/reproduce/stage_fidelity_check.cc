@@ -9,8 +9,8 @@
 #include <filesystem>
 #include <sstream>
 
-#include "workflow/experiments/run_experiment.h"
-#include "workflow/files/json_document.h"
+#include "experiments/common/run_experiment.h"
+#include "files/json_document.h"
 #include "workflow/reproduce/experiment_edit.h"
 #include "workflow/reproduce/stages.h"
 

@@ -11,7 +11,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "workflow/files/measurement_table.h"
+#include "files/measurement_table.h"
 #include "workflow/reproduce/calibration_step.h"
 #include "workflow/reproduce/stages.h"
 

@@ -17,8 +17,8 @@
 #include <thread>
 
 #include "objectives/common/replicates.h"
-#include "workflow/experiments/run_experiment.h"
-#include "workflow/files/json_document.h"
+#include "experiments/common/run_experiment.h"
+#include "files/json_document.h"
 #include "workflow/reproduce/experiment_edit.h"
 #include "workflow/reproduce/segregation_metrics.h"
 #include "workflow/reproduce/stages.h"

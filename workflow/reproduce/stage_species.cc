@@ -6,7 +6,7 @@
 // for the stages after it.
 #include <cmath>
 
-#include "workflow/files/json_document.h"
+#include "files/json_document.h"
 #include "workflow/reproduce/calibration_step.h"
 #include "workflow/reproduce/experiment_edit.h"
 #include "workflow/reproduce/stages.h"

@@ -5,8 +5,8 @@
 #include <functional>
 #include <sstream>
 
-#include "workflow/files/json_document.h"
-#include "workflow/files/json_fields.h"
+#include "files/json_document.h"
+#include "files/json_fields.h"
 
 namespace demcal::workflow {
 namespace {

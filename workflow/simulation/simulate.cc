@@ -8,14 +8,14 @@
 #include <memory>
 #include <numeric>
 
-#include "workflow/exit_codes.h"
-#include "workflow/outputs/earlier_outputs.h"
-#include "workflow/outputs/mass_flow_log.h"
-#include "workflow/outputs/output_lock.h"
-#include "workflow/outputs/progress_reporter.h"
-#include "workflow/outputs/run_outputs.h"
-#include "workflow/files/scene_json.h"
-#include "workflow/outputs/summary_json.h"
+#include "outputs/exit_codes.h"
+#include "outputs/earlier_outputs.h"
+#include "outputs/mass_flow_log.h"
+#include "outputs/output_lock.h"
+#include "outputs/progress_reporter.h"
+#include "outputs/run_outputs.h"
+#include "files/scene_json.h"
+#include "outputs/summary_json.h"
 #include "core/simulation/simulation.h"
 
 namespace demcal::workflow {

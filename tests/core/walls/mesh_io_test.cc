@@ -15,13 +15,14 @@
 #include <string>
 
 #include "core/walls/triangle_mesh.h"
+#include "workflow/test_paths.h"
 
 using namespace demcal::core;
 namespace fs = std::filesystem;
 
 namespace {
 
-fs::path DataDir() { return fs::path(__FILE__).parent_path().parent_path() / "data"; }
+fs::path DataDir() { return demcal::testing::RepoRoot() / "tests" / "data"; }
 
 // A private scratch directory, removed at the end of the test.
 struct ScratchDir {

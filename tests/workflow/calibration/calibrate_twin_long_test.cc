@@ -13,7 +13,7 @@
 
 #include "core/io/scratch_dir.h"
 #include "workflow/calibration/run_study.h"
-#include "workflow/exit_codes.h"
+#include "outputs/exit_codes.h"
 #include "workflow/test_paths.h"
 #include "workflow/tiny_scene.h"
 

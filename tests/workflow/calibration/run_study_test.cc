@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "workflow/exit_codes.h"
+#include "outputs/exit_codes.h"
 #include "workflow/test_paths.h"
 #include "workflow/tiny_scene.h"
 #include "core/io/scratch_dir.h"

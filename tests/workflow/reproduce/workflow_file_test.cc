@@ -13,17 +13,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The repository root: RepoRoot() (from __FILE__, relative when ccache's base_dir is set), else
-// the first parent of the working directory holding the bundled workflow (ctest runs in build/tests).
-fs::path Root() {
-  const fs::path bundled = fs::path("datasets") / "alizadeh2018" / "workflow.json";
-  if (fs::exists(demcal::testing::RepoRoot() / bundled)) return demcal::testing::RepoRoot();
-  for (fs::path p = fs::current_path(); !p.empty() && p != p.root_path(); p = p.parent_path())
-    if (fs::exists(p / bundled)) return p;
-  return demcal::testing::RepoRoot();
-}
-
-const fs::path kBundled = Root() / "datasets" / "alizadeh2018" / "workflow.json";
+const fs::path kBundled = demcal::testing::RepoRoot() / "datasets" / "alizadeh2018" / "workflow.json";
 
 nlohmann::json Bundled() {
   std::ifstream in(kBundled);

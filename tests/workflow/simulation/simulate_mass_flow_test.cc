@@ -1,11 +1,11 @@
-// demcal simulate with sinks: mass_flow.csv (workflow/outputs/mass_flow_log.h) and the sink
+// demcal simulate with sinks: mass_flow.csv (outputs/mass_flow_log.h) and the sink
 // tallies of summary.json, on a small version of examples/silo_discharge.json.
 #include <catch2/catch.hpp>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "workflow/exit_codes.h"
+#include "outputs/exit_codes.h"
 #include "workflow/simulation/simulate.h"
 #include "workflow/test_paths.h"
 #include "workflow/tiny_scene.h"

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <sstream>
 
-#include "workflow/exit_codes.h"
+#include "outputs/exit_codes.h"
 #include "workflow/simulation/simulate.h"
 #include "workflow/tiny_scene.h"
 

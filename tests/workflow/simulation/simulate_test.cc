@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "workflow/exit_codes.h"
+#include "outputs/exit_codes.h"
 #include "workflow/test_paths.h"
 #include "workflow/tiny_scene.h"
 #include "core/io/legacy_vtk_reader.h"

@@ -1,0 +1,13 @@
+#pragma once
+// The `demcal experiment aor` runner (aor_runner.cc): replicates of the file's run, their
+// tables and pictures, DIR/result.json; a process exit code (workflow/exit_codes.h).
+#include <ostream>
+
+#include "experiments/common/experiment_runner.h"
+
+namespace demcal::workflow {
+
+int RunAorExperiment(const ExperimentFile& file, const ExperimentContext& context,
+                     std::ostream& log);
+
+}  // namespace demcal::workflow

@@ -1,0 +1,93 @@
+#include "experiments/common/run_experiment.h"
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "outputs/exit_codes.h"
+#include "experiments/common/experiment_file.h"
+#include "experiments/experiment_registry.h"
+#include "files/json_document.h"
+#include "outputs/earlier_outputs.h"
+#include "outputs/output_lock.h"
+
+namespace demcal::workflow {
+
+namespace {
+
+// A refused input: the message on the log and, if --out already holds something, the earlier
+// outputs moved to previous_run/ and the refusal in rejected.json, so the folder does not look
+// like a finished run of this input (earlier_outputs.h). A new --out is not created for it.
+int Reject(const ExperimentOptions& options, OutputLock* lock, const std::string& message,
+           std::ostream& log, bool already_logged = false) {
+  if (!already_logged) log << "error: " << message << "\n";
+  std::error_code ec;
+  if (!std::filesystem::is_directory(options.out_dir, ec)) return kExitInvalidInput;
+  std::string error;
+  if (!lock->held() && !LockOutputDirectory(options.out_dir, "demcal experiment " + options.kind,
+                                            lock, &error)) {
+    log << "error: " << error << "\n";
+    return kExitInvalidInput;
+  }
+  std::vector<std::string> moved;
+  if (!SetAsideEarlierOutputs(options.out_dir, {options.params_path}, &moved, &error))
+    log << "error: " << error << "\n";
+  nlohmann::ordered_json rejected;
+  rejected["format"] = "demcal-rejected/1";
+  rejected["command"] = "demcal experiment " + options.kind;
+  rejected["input"] = options.params_path;
+  rejected["termination"] = "invalid_input";
+  rejected["message"] = message;
+  rejected["earlier_outputs_moved_to"] =
+      moved.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(kPreviousRunDir + std::string("/"));
+  rejected["earlier_outputs_moved"] = moved;
+  if (!WriteJsonFile(options.out_dir + "/rejected.json", rejected, &error))
+    log << "error: " << error << "\n";
+  return kExitInvalidInput;
+}
+
+}  // namespace
+
+int RunExperiment(const ExperimentOptions& options, std::ostream& log) {
+  OutputLock lock;
+  const ExperimentKind* kind = FindExperimentKind(options.kind);
+  if (!kind)
+    return Reject(options, &lock,
+                  "unknown experiment '" + options.kind + "' (" + JoinNames(ExperimentKindNames()) + ")",
+                  log);
+  ExperimentFile file;
+  std::string error;
+  if (!LoadExperimentFile(options.params_path, &file, &error))
+    return Reject(options, &lock, error, log);
+  if (file.experiment != options.kind)
+    return Reject(options, &lock,
+                  options.params_path + ": field 'experiment' = '" + file.experiment +
+                      "' but the command asks for '" + options.kind + "'",
+                  log);
+  ExperimentContext context;
+  context.out_dir = options.out_dir;
+  context.replicates = options.replicates > 0 ? options.replicates : file.replicates;
+  context.fidelity = options.quick ? file.quick_fidelity : file.fidelity;
+  context.threads = options.threads;
+  context.quiet = options.quiet;
+  if (!context.fidelity.IsValid(&error))
+    return Reject(options, &lock, options.params_path + ": " + error, log);
+  // One process per output directory (this also creates it).
+  if (!LockOutputDirectory(options.out_dir, "demcal experiment " + options.kind, &lock, &error)) {
+    log << "error: --out: " << error << "\n";
+    return kExitInvalidInput;
+  }
+  // A fresh run: a rejection note of an earlier attempt no longer applies.
+  std::error_code ignored;
+  std::filesystem::remove(std::filesystem::path(options.out_dir) / "rejected.json", ignored);
+  const int code = kind->run(file, context, log);
+  // The runner refused its section (e.g. aor.angle): the same treatment as a refused file.
+  if (code == kExitInvalidInput)
+    return Reject(options, &lock,
+                  options.params_path + ": the '" + options.kind +
+                      "' section was refused (see the error printed before this file)",
+                  log, /*already_logged=*/true);
+  return code;
+}
+
+}  // namespace demcal::workflow

@@ -1,0 +1,230 @@
+#include "experiments/segregation/segregation_result.h"
+
+#include <functional>
+
+#include "objectives/common/replicates.h"
+
+namespace demcal::workflow {
+
+namespace {
+
+using nlohmann::ordered_json;
+using objectives::HeapSegregation;
+using objectives::SegregationIndex;
+using objectives::SegregationRun;
+
+// One index of one species, from a run's analysis; nullptr when the run has none.
+using IndexOf = std::function<const SegregationIndex*(const HeapSegregation&, int species)>;
+
+ordered_json Stat(const std::vector<double>& values) {
+  const objectives::Summary s = objectives::Summarise(values);
+  return {{"mean", s.n > 0 ? ordered_json(s.mean) : ordered_json(nullptr)},
+          {"sem", s.n > 1 ? ordered_json(s.sem) : ordered_json(nullptr)},
+          {"n", s.n}};
+}
+
+// Mean ± sem over the ok runs of value(index) for the defined indices.
+ordered_json IndexStat(const std::vector<SegregationRun>& runs, int species, const IndexOf& of,
+                       double SegregationIndex::*value) {
+  std::vector<double> values;
+  for (const SegregationRun& run : runs) {
+    if (!run.ok()) continue;
+    const SegregationIndex* index = of(run.analysis->indices, species);
+    if (index && index->defined) values.push_back(index->*value);
+  }
+  return Stat(values);
+}
+
+// The random-mixture floor of one index of one species, from a run's floor; nullptr without.
+using FloorOf = std::function<const objectives::IndexFloor*(const objectives::HeapFloor&, int)>;
+
+// Mean over the ok runs of the floor's mean, low and high band edge (of CoV or of S_n).
+ordered_json FloorStat(const std::vector<SegregationRun>& runs, int species, const FloorOf& of,
+                       bool s_n) {
+  std::vector<double> mean, low, high;
+  for (const SegregationRun& run : runs) {
+    if (!run.ok() || !run.floor) continue;
+    const objectives::IndexFloor* f = of(*run.floor, species);
+    if (!f || !(s_n ? f->s_n_defined : f->defined)) continue;
+    mean.push_back(s_n ? f->s_n_mean : f->cov_mean);
+    low.push_back(s_n ? f->s_n_low : f->cov_low);
+    high.push_back(s_n ? f->s_n_high : f->cov_high);
+  }
+  auto average = [](const std::vector<double>& v) {
+    return v.empty() ? ordered_json(nullptr) : ordered_json(objectives::Summarise(v).mean);
+  };
+  return {
+      {"mean", average(mean)}, {"low", average(low)}, {"high", average(high)}, {"n", mean.size()}};
+}
+
+const objectives::IndexFloor* FloorNumber(const objectives::RegionFloor& region, int species) {
+  return species < static_cast<int>(region.species.size()) ? &region.species[species].number
+                                                           : nullptr;
+}
+const objectives::IndexFloor* FloorMass(const objectives::RegionFloor& region, int species) {
+  return species < static_cast<int>(region.species.size()) ? &region.species[species].mass
+                                                           : nullptr;
+}
+
+// The floor keys beside the indices of one region: cov_<region>_floor, s_n_<region>_floor.
+void AddFloor(const std::vector<SegregationRun>& runs, int k, const std::string& region,
+              const FloorOf& of, ordered_json* j) {
+  (*j)["cov_" + region + "_floor"] = FloorStat(runs, k, of, false);
+  (*j)["s_n_" + region + "_floor"] = FloorStat(runs, k, of, true);
+}
+
+const SegregationIndex* Number(const objectives::RegionSegregation& region, int species) {
+  return species < static_cast<int>(region.species.size()) ? &region.species[species].number
+                                                           : nullptr;
+}
+const SegregationIndex* Mass(const objectives::RegionSegregation& region, int species) {
+  return species < static_cast<int>(region.species.size()) ? &region.species[species].mass
+                                                           : nullptr;
+}
+
+ordered_json SpeciesJson(const std::vector<SegregationRun>& runs, int k, const std::string& name,
+                         int layers) {
+  const IndexOf front = [](const HeapSegregation& h, int s) { return Number(h.front, s); };
+  const IndexOf back = [](const HeapSegregation& h, int s) { return Number(h.back, s); };
+  const IndexOf whole = [](const HeapSegregation& h, int s) { return Mass(h.whole, s); };
+  ordered_json j;
+  j["species"] = name;
+  j["cov_2d_front"] = IndexStat(runs, k, front, &SegregationIndex::cov_m);
+  j["cov_r_2d_front"] = IndexStat(runs, k, front, &SegregationIndex::cov_r);
+  j["s_n_2d_front"] = IndexStat(runs, k, front, &SegregationIndex::s_n);
+  j["cov_2d_back"] = IndexStat(runs, k, back, &SegregationIndex::cov_m);
+  j["cov_r_2d_back"] = IndexStat(runs, k, back, &SegregationIndex::cov_r);
+  j["s_n_2d_back"] = IndexStat(runs, k, back, &SegregationIndex::s_n);
+  j["cov_3d"] = IndexStat(runs, k, whole, &SegregationIndex::cov_m);
+  j["cov_r_3d"] = IndexStat(runs, k, whole, &SegregationIndex::cov_r);
+  j["s_n_3d"] = IndexStat(runs, k, whole, &SegregationIndex::s_n);
+  j["mean_mass_fraction_3d"] = IndexStat(runs, k, whole, &SegregationIndex::mean_fraction);
+  std::vector<double> outflow;  // of all that left the funnel (Fig. 16's average level)
+  for (const SegregationRun& run : runs)
+    if (run.ok() && k < static_cast<int>(run.outflow_mass_fraction.size()))
+      outflow.push_back(run.outflow_mass_fraction[k]);
+  j["outflow_mass_fraction"] = Stat(outflow);
+  using objectives::HeapFloor;
+  AddFloor(
+      runs, k, "2d_front", [](const HeapFloor& f, int s) { return FloorNumber(f.front, s); }, &j);
+  AddFloor(
+      runs, k, "2d_back", [](const HeapFloor& f, int s) { return FloorNumber(f.back, s); }, &j);
+  AddFloor(
+      runs, k, "3d", [](const HeapFloor& f, int s) { return FloorMass(f.whole, s); }, &j);
+  ordered_json per_layer = ordered_json::array();
+  for (int layer = 0; layer < layers; ++layer) {
+    const IndexOf of = [layer](const HeapSegregation& h, int s) -> const SegregationIndex* {
+      return layer < static_cast<int>(h.layers.size()) ? Mass(h.layers[layer], s) : nullptr;
+    };
+    ordered_json l = IndexStat(runs, k, of, &SegregationIndex::cov_m);
+    l["layer"] = layer + 1;
+    l["floor"] = FloorStat(
+        runs, k,
+        [layer](const objectives::HeapFloor& f, int s) -> const objectives::IndexFloor* {
+          return layer < static_cast<int>(f.layers.size()) ? FloorMass(f.layers[layer], s)
+                                                           : nullptr;
+        },
+        false);
+    per_layer.push_back(l);
+  }
+  j["cov_per_layer_3d"] = per_layer;
+  return j;
+}
+
+ordered_json TrackedJson(const objectives::TrackedGranule& g) {
+  ordered_json j;
+  j["id"] = g.track.id;
+  j["samples"] = g.track.samples.size();
+  j["impact_time_s"] = g.impact_sample ? ordered_json(g.impact_time_s) : nullptr;
+  j["peak_specific_kinetic_J_kg"] =
+      g.impact_sample ? ordered_json(g.peak_specific_kinetic_J_kg) : nullptr;
+  j["penetration_depth_m"] = g.penetration ? ordered_json(g.penetration->depth_m) : nullptr;
+  j["penetration_depth_diameters"] =
+      g.penetration ? ordered_json(g.penetration->depth_diameters) : nullptr;
+  return j;
+}
+
+ordered_json RunJson(int replicate, const SegregationRun& run) {
+  ordered_json j;
+  j["replicate"] = replicate;
+  j["seed"] = run.seed;
+  j["status"] = run.Status();
+  j["message"] = !run.settle.ok() ? run.settle.message : run.analysis_message;
+  j["particles"] = run.particles;
+  std::vector<int64_t> per_species;
+  for (const objectives::Grain& g : run.heap.grains) {
+    if (g.species < 0) continue;
+    if (g.species >= static_cast<int>(per_species.size())) per_species.resize(g.species + 1, 0);
+    ++per_species[g.species];
+  }
+  j["heap_grains_per_species"] = per_species;
+  double mass = 0;
+  for (const objectives::Grain& g : run.heap.grains) mass += g.mass_kg;
+  j["heap_mass_kg"] = mass;
+  if (run.analysis) {
+    const objectives::HeapExtent& e = run.analysis->grid.extent();
+    j["heap_base_width_m"] = e.x_right_m - e.x_left_m;
+    j["heap_height_m"] = e.height_m;
+    j["grains_outside_bins"] = run.analysis->counts.outside_count;
+  }
+  j["mixture_angle_deg"] = run.angle.ok ? ordered_json(run.angle.angle_deg) : nullptr;
+  j["angle_message"] = run.angle.message;
+  j["funnel_first_out_s"] = run.first_out_s;
+  j["funnel_empty_s"] = run.funnel_emptied ? ordered_json(run.empty_s) : nullptr;
+  j["discharge_time_s"] = run.funnel_emptied ? ordered_json(run.discharge_time_s) : nullptr;
+  j["feed_duration_s"] = run.feed_duration_s;
+  j["funnel_feed_limited"] = run.funnel_feed_limited;
+  j["outflow_mass_fraction"] = run.outflow_mass_fraction;
+  j["settle_time_s"] = run.settle.settle_time_s;
+  j["settled_by"] = run.settle.settled_by.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(run.settle.settled_by);
+  j["surface_change_d"] = run.settle.surface_change_d >= 0 ? nlohmann::ordered_json(run.settle.surface_change_d) : nlohmann::ordered_json();
+  j["wall_time_s"] = run.wall_time_s;
+  ordered_json tracked = ordered_json::array();
+  for (const objectives::TrackedGranule& g : run.tracked) tracked.push_back(TrackedJson(g));
+  j["tracked_granules"] = tracked;
+  return j;
+}
+
+}  // namespace
+
+ordered_json SegregationResultJson(const objectives::SegregationSettings& settings,
+                                   const std::vector<std::string>& species_names,
+                                   const std::vector<SegregationRun>& runs) {
+  ordered_json result;
+  result["basis"] = {{"2d", "number fraction"}, {"3d", "mass fraction"}};
+  result["noise_floor"] = {
+      {"method",
+       "species labels shuffled among the heap's grains in bins (same positions and "
+       "counts); CoV and S_n = CoV/CoV_r(measured) of each shuffled heap"},
+      {"shuffles", settings.floor.shuffles},
+      {"band", settings.floor.band}};
+  result["funnel"] = settings.funnel.enabled;
+  result["heap_feed_mass_kg"] = settings.feed.mass_kg;
+  std::vector<double> angles, discharge, depths;
+  int ok = 0;
+  for (const SegregationRun& run : runs) {
+    if (!run.ok()) continue;
+    ++ok;
+    if (run.angle.ok) angles.push_back(run.angle.angle_deg);
+    discharge.push_back(run.discharge_time_s);
+    for (const objectives::TrackedGranule& g : run.tracked)
+      if (g.penetration) depths.push_back(g.penetration->depth_diameters);
+  }
+  result["replicates_ok"] = ok;
+  ordered_json species = ordered_json::array();
+  for (size_t k = 0; k < species_names.size(); ++k)
+    species.push_back(
+        SpeciesJson(runs, static_cast<int>(k), species_names[k], settings.bins.layers));
+  result["species"] = species;
+  result["mixture_angle_deg"] = Stat(angles);
+  result["discharge_time_s"] = Stat(discharge);
+  result["tracked_species"] = species_names.at(settings.TrackedSpecies());
+  result["penetration_depth_diameters"] = Stat(depths);
+  ordered_json runs_json = ordered_json::array();
+  for (size_t r = 0; r < runs.size(); ++r)
+    runs_json.push_back(RunJson(static_cast<int>(r), runs[r]));
+  result["runs"] = runs_json;
+  return result;
+}
+
+}  // namespace demcal::workflow

@@ -1,0 +1,167 @@
+#include "files/measurement_table.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "calibrate/condition.h"
+#include "calibrate/observable_registry.h"
+
+namespace demcal::workflow {
+namespace {
+
+constexpr size_t kMaxTableBytes = 64 << 20;  // a bench dataset is kilobytes; refuse a runaway file
+const std::set<std::string> kFixedColumns = {"observable", "unit", "material", "value",
+                                             "uncertainty", "repeats", "provenance", "source"};
+
+// RFC 4180 fields: commas inside double quotes, "" for a quote. False for an unclosed quote.
+bool SplitCsvLine(const std::string& line, std::vector<std::string>* fields) {
+  fields->assign(1, "");
+  bool quoted = false;
+  for (size_t k = 0; k < line.size(); ++k) {
+    const char c = line[k];
+    if (c == '"' && quoted && k + 1 < line.size() && line[k + 1] == '"') fields->back() += '"', ++k;
+    else if (c == '"') quoted = !quoted;
+    else if (c == ',' && !quoted) fields->emplace_back();
+    else if (c != '\r') fields->back() += c;
+  }
+  return !quoted;
+}
+
+bool ParseNumber(const std::string& text, double* out) {
+  std::string trimmed = text;
+  while (!trimmed.empty() && trimmed.back() == ' ') trimmed.pop_back();
+  return calibrate::ParseConditionNumber(trimmed, out);
+}
+
+class RowReader {
+ public:
+  RowReader(const std::string& at, std::string* error) : at_(at), error_(error) {}
+  bool Fail(const std::string& column, const std::string& problem) {
+    *error_ = at_ + column + ": " + problem;
+    return false;
+  }
+  bool Parse(const std::map<std::string, std::string>& cells, MeasurementRow* row) {
+    row->observable = cells.at("observable");
+    row->unit = cells.at("unit");
+    row->material = cells.at("material");
+    row->provenance = cells.at("provenance");
+    row->source = cells.at("source");
+    const calibrate::ObservableInfo* info = calibrate::FindObservable(row->observable);
+    if (!info) return Fail("observable", "unknown '" + row->observable + "'; allowed: " + Known());
+    if (row->unit != info->unit) return Fail("unit", "'" + row->unit + "' but " + row->observable + " is in " + info->unit);
+    if (row->material.empty()) return Fail("material", "empty");
+    if (row->source.empty()) return Fail("source", "empty: every value says where it came from");
+    if (row->provenance != "measured" && row->provenance != "inferred" && row->provenance != "synthetic")
+      return Fail("provenance", "'" + row->provenance + "'; allowed: measured, inferred, synthetic");
+    if (!ParseNumber(cells.at("value"), &row->value))
+      return Fail("value", "'" + cells.at("value") + "' is not a finite number");
+    if (!info->Contains(row->value))
+      return Fail("value", std::to_string(row->value) + " is outside " + info->RangeText());
+    const std::string& u = cells.at("uncertainty");
+    if (!u.empty() && !(ParseNumber(u, &row->uncertainty) && row->uncertainty > 0 &&
+                        row->uncertainty <= info->max - info->min))
+      return Fail("uncertainty", "'" + u + "'; allowed: empty or a number in (0, " +
+                                     std::to_string(info->max - info->min) + "] " + info->unit);
+    const std::string& n = cells.at("repeats");
+    double repeats = 0;
+    if (!n.empty() && !(ParseNumber(n, &repeats) && repeats >= 1 && repeats <= 1e6 &&
+                        repeats == std::floor(repeats)))
+      return Fail("repeats", "'" + n + "'; allowed: empty or a whole number in [1, 1000000]");
+    row->repeats = static_cast<int>(repeats);
+    return true;
+  }
+
+ private:
+  static std::string Known() {
+    std::string names;
+    for (const std::string& n : calibrate::ObservableNames()) names += (names.empty() ? "" : ", ") + n;
+    return names;
+  }
+  std::string at_;
+  std::string* error_;
+};
+
+bool SameKey(const MeasurementRow& a, const MeasurementRow& b) {
+  if (a.observable != b.observable || a.material != b.material || a.conditions.size() != b.conditions.size())
+    return false;
+  for (const auto& [column, cell] : a.conditions) {
+    auto it = b.conditions.find(column);
+    if (it == b.conditions.end() || !calibrate::SameConditionCell(cell, it->second)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool MeasurementRow::NumericCondition(const std::string& column, double* out) const {
+  return calibrate::ConditionNumber(conditions, column, out);
+}
+
+bool LoadMeasurementTable(const std::string& path, MeasurementTable* out, std::string* error) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) return *error = path + ": cannot read the measurement table", false;
+  if (static_cast<size_t>(in.tellg()) > kMaxTableBytes)
+    return *error = path + ": larger than 64 MiB; not a measurement table", false;
+  in.seekg(0);
+  out->path = path;
+  std::string line;
+  std::vector<std::string> header, fields;
+  if (!std::getline(in, line) || !SplitCsvLine(line, &header))
+    return *error = path + ":1: no header line", false;
+  for (const std::string& column : kFixedColumns)
+    if (std::find(header.begin(), header.end(), column) == header.end())
+      return *error = path + ":1: missing column '" + column + "'", false;
+  for (const std::string& column : header)
+    if (!kFixedColumns.count(column)) out->condition_columns.push_back(column);
+  for (int n = 2; std::getline(in, line); ++n) {
+    if (line.empty() || line == "\r") continue;
+    const std::string at = path + ":" + std::to_string(n) + ": ";
+    if (!SplitCsvLine(line, &fields)) return *error = at + "unclosed double quote", false;
+    if (fields.size() != header.size())
+      return *error = at + std::to_string(fields.size()) + " fields, the header has " +
+                      std::to_string(header.size()), false;
+    std::map<std::string, std::string> cells;
+    for (size_t k = 0; k < header.size(); ++k) cells[header[k]] = fields[k];
+    MeasurementRow row;
+    row.line = n;
+    if (!RowReader(at, error).Parse(cells, &row)) return false;
+    for (const std::string& column : out->condition_columns)
+      if (!cells[column].empty()) row.conditions[column] = cells[column];
+    for (const MeasurementRow& earlier : out->rows)
+      if (SameKey(earlier, row))
+        return *error = at + "the same observable, material and conditions as line " +
+                        std::to_string(earlier.line) + " (" + row.observable + ", " + row.material +
+                        ", " + calibrate::DescribeCondition(row.conditions) + "): one value per condition", false;
+    out->rows.push_back(row);
+  }
+  if (out->rows.empty()) return *error = path + ": no rows", false;
+  return true;
+}
+
+const MeasurementRow* MeasurementTable::Find(const std::string& observable, const std::string& material,
+                                             const std::map<std::string, std::string>& conditions,
+                                             std::string* error) const {
+  std::vector<const MeasurementRow*> hits;
+  for (const MeasurementRow& row : rows) {
+    if (row.observable != observable || row.material != material) continue;
+    bool match = true;
+    for (const auto& [column, cell] : conditions) {
+      auto it = row.conditions.find(column);
+      match = match && it != row.conditions.end() && calibrate::SameConditionCell(it->second, cell);
+    }
+    if (match) hits.push_back(&row);
+  }
+  const std::string what = observable + " of " + material +
+                           (conditions.empty() ? "" : " at " + calibrate::DescribeCondition(conditions));
+  if (hits.empty()) return *error = path + ": no row with " + what, nullptr;
+  if (hits.size() > 1)
+    return *error = path + ": " + std::to_string(hits.size()) + " rows with " + what + " (lines " +
+                    std::to_string(hits[0]->line) + ", " + std::to_string(hits[1]->line) +
+                    "); add the condition that tells them apart", nullptr;
+  return hits[0];
+}
+
+}  // namespace demcal::workflow

@@ -1,0 +1,61 @@
+// The tidy measurement table (measurement_table.h): the bundled tables load, rows are found by
+// observable, material and condition, and bad tables are refused naming the line and column.
+#include "files/measurement_table.h"
+
+#include <catch2/catch.hpp>
+#include <fstream>
+
+#include "core/io/scratch_dir.h"
+#include "workflow/test_paths.h"
+
+using namespace demcal::workflow;
+using demcal::testing::RepoRoot;
+using demcal::testing::ScratchDir;
+
+namespace {
+
+const char* kHeader = "observable,unit,material,coating_PEG_wt_pct,value,uncertainty,repeats,provenance,source\n";
+
+std::string Load(const ScratchDir& dir, const std::string& rows, MeasurementTable* table = nullptr) {
+  std::ofstream(dir.str("t.csv")) << kHeader << rows;
+  MeasurementTable t;
+  std::string error;
+  const bool ok = LoadMeasurementTable(dir.str("t.csv"), table ? table : &t, &error);
+  return ok ? "ok" : error;
+}
+
+}  // namespace
+
+TEST_CASE("the alizadeh2018 table: Table 1 angles, the inferred 0.5 wt% row, by condition", "[unit]") {
+  MeasurementTable table;
+  std::string error;
+  REQUIRE(LoadMeasurementTable((RepoRoot() / "datasets/alizadeh2018/measurements.csv").string(), &table, &error));
+  const MeasurementRow* bp = table.Find("angle_deg", "BP", {{"coating_PEG_wt_pct", "0.0"}}, &error);
+  REQUIRE(bp);
+  CHECK(bp->value == 40.0);
+  CHECK_FALSE(bp->HasUncertainty());
+  CHECK(bp->provenance == "measured");
+  const MeasurementRow* ep = table.Find("angle_deg", "EP", {{"coating_PEG_wt_pct", "0.5"}}, &error);
+  REQUIRE(ep);
+  CHECK(ep->provenance == "inferred");
+  CHECK(table.Find("angle_deg", "mixture", {}, &error) == nullptr);  // two coating levels
+  CHECK_THAT(error, Catch::Contains("2 rows") && Catch::Contains("tells them apart"));
+}
+
+TEST_CASE("measurement tables refuse bad rows naming the line and the column", "[unit]") {
+  ScratchDir dir("measurement_table");
+  const std::string good = "angle_deg,deg,BP,0,40,1,5,measured,Table 1\n";
+  CHECK(Load(dir, good) == "ok");
+  CHECK_THAT(Load(dir, "angle_deg,deg,BP,0,400,,,measured,x\n"), Catch::Contains("t.csv:2: value") && Catch::Contains("[0, 90] deg"));
+  CHECK_THAT(Load(dir, "angle_deg,deg,BP,0,-40,,,measured,x\n"), Catch::Contains("outside"));
+  CHECK_THAT(Load(dir, good + "angle_deg,deg,BP,0.0,41,,,measured,y\n"),
+             Catch::Contains("t.csv:3") && Catch::Contains("as line 2"));
+  CHECK_THAT(Load(dir, "angle_deg,rad,BP,0,0.7,,,measured,x\n"), Catch::Contains("unit"));
+  CHECK_THAT(Load(dir, "porosity,-,BP,0,0.4,,,measured,x\n"), Catch::Contains("unknown 'porosity'"));
+  CHECK_THAT(Load(dir, "angle_deg,deg,BP,0,40,,,guessed,x\n"), Catch::Contains("provenance"));
+  CHECK_THAT(Load(dir, "angle_deg,deg,BP,0,40,-1,,measured,x\n"), Catch::Contains("uncertainty"));
+  CHECK_THAT(Load(dir, "angle_deg,deg,BP,0,nan,,,measured,x\n"), Catch::Contains("not a finite number"));
+  CHECK_THAT(Load(dir, "angle_deg,deg,BP,0,40,,,measured,\n"), Catch::Contains("source"));
+  CHECK_THAT(Load(dir, "angle_deg,deg,BP,0,40,,,measured,\"x\n"), Catch::Contains("quote"));
+  CHECK_THAT(Load(dir, "angle_deg,deg,BP,40\n"), Catch::Contains("4 fields"));
+}
