@@ -4,7 +4,7 @@
 Usage: python3 scripts/check_doc_links.py [REPO_ROOT]   (default: the folder above scripts/)
        python3 scripts/check_doc_links.py --self-test   (plants broken links, checks each is found)
 
-Reads every tracked *.md file (every *.md under the root when it is not a git checkout) and
+Reads every *.md file git tracks or would track (every *.md under the root when it is not a git checkout) and
 checks, outside fenced code blocks:
   - relative Markdown links and images, [text](path) and [label]: path: the path, taken from the
     file's folder, must exist inside the repository; a #fragment on a Markdown target must name
@@ -37,7 +37,8 @@ PLACEHOLDER_PART = re.compile(r"^[A-Z][A-Z_]+$")
 
 def tracked_markdown(root):
   try:
-    out = subprocess.run(["git", "-C", root, "ls-files", "-z", "--", "*.md"], check=True,
+    out = subprocess.run(["git", "-C", root, "ls-files", "-z", "--cached", "--others",
+                          "--exclude-standard", "--", "*.md"], check=True,
                          capture_output=True).stdout.decode()
     files = [f for f in out.split("\0") if f]
     if files:
