@@ -7,7 +7,7 @@
 //                        radius apart (bench/liggghts/in.clump builds the same clump), about
 //                        --particles / N of them in a taller box (they are poured from higher up);
 //   --jkr-cohesion Coh   JKR adhesion with Γ chosen so that the cohesion number
-//                        Coh = (1/(ρg)) [Γ⁵ / (E*² R*⁸)]^{1/3} (physics.md §6) has this value.
+//                        Coh = (1/(ρg)) [Γ⁵ / (E*² R*⁸)]^{1/3} (docs/physics.md §6) has this value.
 // particle_steps_per_s counts bodies (clumps or free spheres); sphere_steps_per_s counts spheres.
 #include <CLI/CLI.hpp>
 

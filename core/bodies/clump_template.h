@@ -1,6 +1,6 @@
 #pragma once
 // ClumpTemplate: the shape of a rigid multi-sphere ("clumped sphere") particle, i.e. a union of
-// member spheres, together with its mass properties for one density (physics.md §7.1). The
+// member spheres, together with its mass properties for one density (docs/physics.md §7.1). The
 // template is expressed in its own principal frame: centre of mass at the origin and the body
 // axes along the principal axes of inertia, sorted so that I1 ≤ I2 ≤ I3 (for an elongated clump
 // axis 1 is the long axis). SI units throughout (m, m³, kg, kg·m²).
@@ -8,12 +8,12 @@
 // Mass properties of the union (overlapping volume counted once) are integrated by one of:
 //   kExactSum   spheres + parallel-axis theorem; exact when no two spheres overlap, otherwise it
 //               counts the overlaps twice (an overestimate: +18.5 % volume for two unit spheres
-//               at distance 1, physics.md §7.1).
+//               at distance 1, docs/physics.md §7.1).
 //   kCollinear  exact (to round-off) for any overlap when all centres lie on one line: the union
 //               is a solid of revolution whose squared profile is piecewise one sphere's parabola.
 //   kVoxel      regular grid of cubic cells of side r_min / voxel_divisions over the bounding box;
 //               a cell counts (as a full uniform cube) when its centre is inside any sphere
-//               (woodem SphereClumpGeom::recompute, physics.md §7.1).
+//               (woodem SphereClumpGeom::recompute, docs/physics.md §7.1).
 //   kMonteCarlo uniform random points in the bounding box; error ∝ N^{-1/2} (seeded).
 //   kAuto       kExactSum without overlaps, else kCollinear if collinear, else kVoxel.
 //

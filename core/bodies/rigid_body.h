@@ -1,6 +1,6 @@
 #pragma once
 // Rigid-body rotation for a body with diagonal principal inertia (a clump in its principal
-// frame), integrated kick–drift–kick (physics.md §7.2):
+// frame), integrated kick–drift–kick (docs/physics.md §7.2):
 //   HalfKick:  L ← L + ½ τ Δt                       (torque τ and L in the space frame)
 //   Drift:     q ← exp(ω Δt) ⊗ q, then |q| ← 1      (rotation by |ω|Δt about ω̂, space frame)
 //   HalfKick:  with the torque of the new orientation.

@@ -14,8 +14,8 @@ namespace demcal::core {
 
 // Per-contact memory kept between steps (zeroed when the contact ends).
 struct ContactHistory {
-  Vec3 shear_m;            // accumulated tangential displacement δ_t (physics.md §1.3)
-  Vec3 rolling_torque_N_m; // EPSD spring torque M_k (physics.md §2.2)
+  Vec3 shear_m;            // accumulated tangential displacement δ_t (docs/physics.md §1.3)
+  Vec3 rolling_torque_N_m; // EPSD spring torque M_k (docs/physics.md §2.2)
   double jkr_sqrt_radius;  // √a of the JKR contact radius last step (m^½); 0 before the first
 };
 

@@ -1,8 +1,8 @@
 #pragma once
-// Hertz normal force with the EDEM/LIGGGHTS restitution dashpot (physics.md §1.2):
+// Hertz normal force with the EDEM/LIGGGHTS restitution dashpot (docs/physics.md §1.2):
 //   F_n = (4/3) E* sqrt(R*) δ^{3/2} − 2 sqrt(5/6) β sqrt(S_n m*) v_n,  S_n = 2 E* sqrt(R* δ).
 // The force is not clamped at zero: the contact ends at δ = 0, which makes the restitution
-// mapping e ↔ β exact and velocity independent (physics.md §1.4 table, first column).
+// mapping e ↔ β exact and velocity independent (docs/physics.md §1.4 table, first column).
 #include <cmath>
 
 #include "core/contact/contact_state.h"

@@ -1,5 +1,5 @@
 #pragma once
-// Normal slot "jkr": Hertz–Mindlin with JKR adhesion, EDEM convention (physics.md §3 and the
+// Normal slot "jkr": Hertz–Mindlin with JKR adhesion, EDEM convention (docs/physics.md §3 and the
 // demcal decision at its top). Γ is EDEM's interfacial energy; the work of adhesion is w = 2Γ:
 //   F(a) = 4E*a³/(3R*) − 4 sqrt(π Γ E*) a^{3/2},   δ(a) = a²/R* − sqrt(4π Γ a / E*).
 // The contact forms when the spheres touch (δ = 0, where F = −8/9 F_c, F_c = 3πΓR*) and breaks

@@ -1,6 +1,6 @@
 #pragma once
 // Mindlin no-slip tangential spring with history and Coulomb cap, as LIGGGHTS
-// `tangential history` (physics.md §1.3):
+// `tangential history` (docs/physics.md §1.3):
 //   δ_t += v_t dt, projected on the current tangent plane;  F_t = −S_t δ_t − c_t v_t,
 //   S_t = 8 G* sqrt(R* δ);  if S_t|δ_t| > μ_s|F_n|: F_t capped to μ_s|F_n| (no damping while
 //   sliding) and the spring reset to the cap. (|F_n| is NormalForce::friction_load_N: the

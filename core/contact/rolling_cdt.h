@@ -1,6 +1,6 @@
 #pragma once
 // Rolling slot "cdt": EDEM's "Standard Rolling Friction", a constant directional torque
-// (Sakaguchi et al. 1993; Ai et al. 2011 type A; physics.md §2.1):
+// (Sakaguchi et al. 1993; Ai et al. 2011 type A; docs/physics.md §2.1):
 //   τ_i = −μ_r F_n R_i ω̂_i,  τ_j = −μ_r F_n R_j ω̂_j   (per body, elastic F_n).
 // Known weakness: the torque does not vanish as ω → 0, so static heaps jitter; prefer "epsd".
 #include <cmath>

@@ -1,6 +1,6 @@
 #pragma once
 // Rolling slot "epsd" / "epsd2": elastic–plastic spring–dashpot rolling resistance (Ai et al.
-// 2011 type C; EDEM "Type C"; LIGGGHTS rolling_model_epsd(2).h; physics.md §2.2).
+// 2011 type C; EDEM "Type C"; LIGGGHTS rolling_model_epsd(2).h; docs/physics.md §2.2).
 //   ω_t = (ω_i − ω_j) without its normal component;  M_k += k_r ω_t dt (kept in the tangent
 //   plane);  |M_k| ≤ μ_r R* F_n (full mobilisation: capped, no damping);
 //   otherwise M = M_k + C_r ω_t.   Torque: τ_i −= M, τ_j += M.

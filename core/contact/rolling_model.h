@@ -13,7 +13,7 @@ namespace demcal::core {
 
 using RollingModel = std::variant<RollingNone, RollingCdt, RollingEpsd>;
 
-// The load the rolling limit μ_r multiplies in an adhesive (JKR) contact (physics.md §3).
+// The load the rolling limit μ_r multiplies in an adhesive (JKR) contact (docs/physics.md §3).
 //  kNet: the compressive force the contact transmits, max(0, F_JKR) (default). At zero load an
 //    adhesive contact then has no rolling limit beyond the dashpot/spring, as a smooth sphere.
 //  kRepulsive: the repulsive Hertz part 4E*a³/(3R*), as the Coulomb limit. At zero load this is

@@ -20,7 +20,7 @@ struct PairParameters {
   double interfacial_energy_J_m2 = 0.0;   // Γ, EDEM convention (work of adhesion w = 2Γ), >= 0
 };
 
-// What the contact loop uses for a pair of materials (physics.md §1.1).
+// What the contact loop uses for a pair of materials (docs/physics.md §1.1).
 struct ResolvedPair {
   double effective_youngs_Pa;  // E*: 1/E* = (1-ν_i²)/E_i + (1-ν_j²)/E_j
   double effective_shear_Pa;   // G*: 1/G* = 2(2-ν_i)(1+ν_i)/E_i + 2(2-ν_j)(1+ν_j)/E_j

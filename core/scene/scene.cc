@@ -57,7 +57,7 @@ double NeighbourSkin(const Scene& scene) {
 }
 
 namespace {
-// Rayleigh time of one sphere (LIGGGHTS fix_check_timestep_gran; physics.md §1.5).
+// Rayleigh time of one sphere (LIGGGHTS fix_check_timestep_gran; docs/physics.md §1.5).
 double SphereRayleighTime(const Material& m, double radius_m) {
   return std::numbers::pi * radius_m * std::sqrt(m.density_kg_m3 / m.ShearModulus()) /
          (0.1631 * m.poisson_ratio + 0.8766);

@@ -83,7 +83,7 @@ struct Scene {
   double MinDiameter() const;
 };
 
-// Rayleigh time of the scene's stiffest, smallest species (physics.md §1.5):
+// Rayleigh time of the scene's stiffest, smallest species (docs/physics.md §1.5):
 // Δt_R = π R sqrt(ρ/G) / (0.1631 ν + 0.8766), minimised over species.
 double RayleighTime(const Scene& scene);
 

@@ -1,5 +1,5 @@
 #pragma once
-// Diagnose: the discrepancy workflow (docs/diagnose.md; design.md "The discrepancy workflow").
+// Diagnose: the discrepancy workflow (docs/diagnose.md; docs/design.md "The discrepancy workflow").
 //  1. Calibrate the base model (ForwardModel::CalibrateBase); standardised residuals per
 //     observation (observation.h) and the gap test (gap_test.h).
 //  2. No gap: stop, "no missing effect found".

@@ -1,7 +1,7 @@
 #pragma once
-// Angle-of-repose experiment (paper section 2.5.2; physics.md §5.1): a feed of one species or a
-// mixture is poured at a mass rate from a set height onto a rough base (a glued particle layer),
-// either into a pseudo-2D box (slot heap with two flanks, the paper's test box) or onto a disc
+// Angle-of-repose experiment (paper section 2.5.2; docs/physics.md §5.1): a feed of one species
+// or a mixture is poured at a mass rate from a set height onto a rough base (a glued particle
+// layer), either into a pseudo-2D box (slot heap with two flanks, the paper's test box) or onto a disc
 // (free conical heap, the excess runs off the edge); when the heap has settled its angle is
 // measured from the surface profile (repose_angle.h).
 //

@@ -1,6 +1,6 @@
 #pragma once
 // Fidelity: how far a virtual experiment departs from the real particles to run faster, and the
-// rules that keep its physics comparable (physics.md §6, paper section 2.5.1):
+// rules that keep its physics comparable (docs/physics.md §6, paper section 2.5.1):
 //   * size coarse-graining: every particle diameter × size_scale (all species together, so size
 //     ratios and mass fractions are kept; the geometry of the test is not scaled);
 //   * stiffness reduction: every material's Young's modulus × stiffness_scale;

@@ -1,6 +1,6 @@
 #pragma once
 // Coefficient of variation of sample concentrations, Alizadeh et al. 2018 Eq. 5: CoV = σ/μ.
-// σ is the SAMPLE standard deviation (divisor n − 1), as in physics.md §5.2 where the mean is
+// σ is the SAMPLE standard deviation (divisor n − 1), as in docs/physics.md §5.2 where the mean is
 // estimated from the same samples; the random-mixture reference (random_mixture.h) uses this same
 // function, so the bias of σ cancels in S_n = CoV_m/CoV_r (Eq. 7).
 #include <optional>

@@ -1,6 +1,6 @@
 #pragma once
 // Angle of repose of a settled heap from a Snapshot, as in Alizadeh et al. 2018 (Powder Technol.
-// 339:789-800) section 2.5.2 and Fig. 5, and ../shared/physics.md §5.1:
+// 339:789-800) section 2.5.2 and Fig. 5, and docs/physics.md §5.1:
 //  1. surface profile: per cell the top z + R of the highest sphere (surface_profile.h);
 //  2. heap height H = max top − base_z_m; keep points with
 //     window_low·H ≤ top − base ≤ window_high·H (drops the rounded apex and the toe/run-out);
@@ -78,7 +78,7 @@ ReposeAngle MeasureSlotHeapAngle(const Snapshot& snapshot, const ReposeAngleOpti
 ReposeAngle MeasureConicalHeapAngle(const Snapshot& snapshot, Vec3 axis_point_m,
                                     const ReposeAngleOptions& options);
 
-// The vertical axis of a conical heap when the inflow axis is not known (../shared/physics.md §5.1
+// The vertical axis of a conical heap when the inflow axis is not known (docs/physics.md §5.1
 // step 3): the centroid (x, y) of the spheres whose top is within top_fraction·H of the highest
 // top, H = max top − base_z_m. z of the result is base_z_m. False when nothing is above the base.
 bool EstimateHeapAxis(const Snapshot& snapshot, double base_z_m, Vec3* axis_point_m,

@@ -3,7 +3,7 @@
 // coordinate s (x for a slot heap, distance to the axis for a sector of a conical heap). Each
 // point is the top z + R of the highest sphere whose centre falls in the cell, at that sphere's
 // own s (not the cell centre), so points on a flat-faced packing lie exactly on its face.
-// Recipe: ../shared/physics.md §5.1 step 1.
+// Recipe: docs/physics.md §5.1 step 1.
 //
 //   std::vector<SurfacePoint> profile = SlotProfile(snapshot, /*cell_m=*/0.003);
 #include <vector>

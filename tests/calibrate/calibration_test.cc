@@ -1,6 +1,6 @@
-// Calibration twin tests (style.md habit 12): data generated from known parameters by a cheap
-// synthetic probe (one run group, one target, through the TargetEvaluator as every study runs),
-// recovered by the calibration; resumption from the journal.
+// Calibration twin tests (docs/design.md, Conventions): data generated from known parameters by a
+// cheap synthetic probe (one run group, one target, through the TargetEvaluator as every study
+// runs), recovered by the calibration; resumption from the journal.
 #include "calibrate/calibration.h"
 
 #include <catch2/catch.hpp>

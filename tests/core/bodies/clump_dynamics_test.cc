@@ -41,7 +41,7 @@ TEST_CASE("a one-sphere clump moves like the sphere", "[unit][clump]") {
   REQUIRE(sphere.Initialize(&err));
   REQUIRE(clump.Initialize(&err));
   REQUIRE(clump.system().clumps.Size() == 1);
-  // Same mass and inertia (physics.md §7.1: a single sphere's exact properties).
+  // Same mass and inertia (docs/physics.md §7.1: a single sphere's exact properties).
   const double m = sphere.particles().mass_kg[0];
   CHECK(clump.system().clumps.mass_kg[0] == Approx(m).epsilon(1e-12));
   CHECK(clump.system().clumps.principal_inertia_kg_m2[0].x ==

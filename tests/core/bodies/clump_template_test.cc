@@ -16,7 +16,7 @@ constexpr double kPi = std::numbers::pi;
 double SphereVolume(double r) { return 4.0 / 3.0 * kPi * r * r * r; }
 
 // Lens (intersection) of two spheres of radius R at centre distance d ≤ 2R subtracted from the
-// two spheres: V = 2·(4/3)πR³ − π(4R + d)(2R − d)²/12 (physics.md §7.1; Weisstein, MathWorld
+// two spheres: V = 2·(4/3)πR³ − π(4R + d)(2R − d)²/12 (docs/physics.md §7.1; Weisstein, MathWorld
 // "Sphere-Sphere Intersection").
 double LensUnionVolume(double r, double d) {
   return 2 * SphereVolume(r) - kPi * (4 * r + d) * (2 * r - d) * (2 * r - d) / 12;
@@ -89,7 +89,7 @@ TEST_CASE("clump: one sphere has exactly the sphere's mass and inertia", "[clump
 }
 
 TEST_CASE("clump: non-overlapping spheres equal the parallel-axis sum", "[clump][unit]") {
-  // physics.md §7.1: m = Σρ(4/3)πr³, c = Σ m_k x_k / m, I = Σ[(2/5) m_k r_k² 𝟙 + m_k(|d|²𝟙 − d
+  // docs/physics.md §7.1: m = Σρ(4/3)πr³, c = Σ m_k x_k / m, I = Σ[(2/5) m_k r_k² 𝟙 + m_k(|d|²𝟙 − d
   // dᵀ)].
   const std::vector<ClumpSphere> s = {{{0, 0, 0}, 1.0}, {{3, 0.5, 0}, 0.5}, {{-1, 2.5, 1}, 0.8}};
   const double rho = 3.0;
@@ -159,7 +159,7 @@ TEST_CASE("clump: two overlapping spheres match the lens formula and analytic in
 
 TEST_CASE("clump: ignoring overlaps overestimates the union by 18.5 % (two unit spheres, d = 1)",
           "[clump][physics]") {
-  // physics.md §7.1: union 7.0686 vs naive 8.3776.
+  // docs/physics.md §7.1: union 7.0686 vs naive 8.3776.
   const auto s = TwoOnAxis(1.0, 1.0, {0, 0, 0}, {0, 0, 1});
   MassPropertiesOptions naive;
   naive.method = MassMethod::kExactSum;

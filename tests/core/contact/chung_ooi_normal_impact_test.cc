@@ -1,6 +1,6 @@
 // Chung & Ooi (2011) Granular Matter 13:643, benchmark tests 1–3 (normal impacts), with the
-// inputs and Hertz values of physics.md §4.1. The analytic values are Hertz theory (physics.md
-// §1.5): δ_max = (15 m* v² / (16 E* √R*))^{2/5}, F_max = (4/3) E* √R* δ_max^{3/2},
+// inputs and Hertz values of docs/physics.md §4.1. The analytic values are Hertz theory
+// (docs/physics.md §1.5): δ_max = (15 m* v² / (16 E* √R*))^{2/5}, F_max = (4/3) E* √R* δ_max^{3/2},
 // t_c = 2 (δ_max / v) ∫₀¹ (1 − x^{5/2})^{-1/2} dx = 2.9433 δ_max / v (the integral is
 // B(2/5, 1/2) / (5/2), evaluated with std::tgamma).
 #include <catch2/catch.hpp>
@@ -20,7 +20,7 @@ double SphereMass(double radius, double density) {
   return density * 4.0 / 3.0 * kPi * radius * radius * radius;
 }
 
-// 1/E* = (1 − ν_i²)/E_i + (1 − ν_j²)/E_j (physics.md §1.1).
+// 1/E* = (1 − ν_i²)/E_i + (1 − ν_j²)/E_j (docs/physics.md §1.1).
 double EffectiveYoungs(const Material& a, const Material& b) {
   return 1.0 / ((1 - a.poisson_ratio * a.poisson_ratio) / a.youngs_modulus_Pa +
                 (1 - b.poisson_ratio * b.poisson_ratio) / b.youngs_modulus_Pa);
@@ -112,7 +112,7 @@ void CheckAgainstHertz(const ImpactRecord& rec, const Hertz& h) {
 
 TEST_CASE("Hertz closed form reproduces the Chung & Ooi reference numbers of physics.md",
           "[unit]") {
-  // physics.md §4.1 table, tests 1 and 2 (rigid wall: E* = E/(1 − ν²)).
+  // docs/physics.md §4.1 table, tests 1 and 2 (rigid wall: E* = E/(1 − ν²)).
   const double m_glass = SphereMass(0.01, 2800);
   const Hertz glass = HertzImpact(48e9 / (2 * (1 - 0.04)), 0.005, 0.5 * m_glass, 20);
   CHECK(glass.max_overlap_m == Approx(274.1e-6).epsilon(1e-3));
@@ -126,11 +126,11 @@ TEST_CASE("Hertz closed form reproduces the Chung & Ooi reference numbers of phy
 
 TEST_CASE("Chung & Ooi test 1: elastic impact of two identical spheres matches Hertz",
           "[physics]") {
-  // Chung & Ooi 2011 test 1; inputs and expected values physics.md §4.1: R = 10 mm,
+  // Chung & Ooi 2011 test 1; inputs and expected values docs/physics.md §4.1: R = 10 mm,
   // v = ±10 m/s, e = 1, μ = 0.35.
   struct Case {
     Material material;
-    Hertz reference;  // physics.md §4.1 table
+    Hertz reference;  // docs/physics.md §4.1 table
   };
   const Case cases[] = {
       {{"glass", 48e9, 0.20, 2800}, {274.1e-6, 10.70e3, 40.34e-6}},
@@ -164,12 +164,12 @@ TEST_CASE("Chung & Ooi test 1: elastic impact of two identical spheres matches H
 
 TEST_CASE("Chung & Ooi test 2: elastic impact of a sphere on a rigid plane matches Hertz",
           "[physics]") {
-  // Chung & Ooi 2011 test 2; physics.md §4.1: R = 0.1 m, v = 0.2 m/s, e = 1; the wall is
+  // Chung & Ooi 2011 test 2; docs/physics.md §4.1: R = 0.1 m, v = 0.2 m/s, e = 1; the wall is
   // 1000× stiffer (as in Yade's script). The engine is compared with Hertz for the actual E*
-  // and, as a second check, with the physics.md rigid-wall values (which differ by < 0.1 %).
+  // and, as a second check, with the docs/physics.md rigid-wall values (which differ by < 0.1 %).
   struct Case {
     Material material;
-    Hertz rigid_reference;  // physics.md §4.1 table
+    Hertz rigid_reference;  // docs/physics.md §4.1 table
   };
   const Case cases[] = {
       {{"al_alloy", 70e9, 0.30, 2699}, {49.72e-6, 11.37e3, 0.7316e-3}},
@@ -204,9 +204,9 @@ TEST_CASE("Chung & Ooi test 2: elastic impact of a sphere on a rigid plane match
 }
 
 TEST_CASE("Chung & Ooi test 3: restitution out equals restitution in", "[physics]") {
-  // Chung & Ooi 2011 test 3; physics.md §4.1: R = 2.5 mm, v = 3.9 m/s onto a wall, μ = 0.
+  // Chung & Ooi 2011 test 3; docs/physics.md §4.1: R = 2.5 mm, v = 3.9 m/s onto a wall, μ = 0.
   // With the contact ending at δ = 0 the β(e) dashpot gives e_out = e exactly
-  // (physics.md §1.4, first column).
+  // (docs/physics.md §1.4, first column).
   const Material materials[] = {{"al_oxide", 380e9, 0.23, 4000}, {"cast_iron", 100e9, 0.25, 7000}};
   for (const Material& m : materials) {
     for (const double e : {0.2, 0.4, 0.6, 0.8, 1.0}) {

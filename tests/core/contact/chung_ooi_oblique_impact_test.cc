@@ -1,11 +1,11 @@
 // Chung & Ooi (2011) Granular Matter 13:643, benchmark tests 4 and 5: oblique impacts of a
-// sphere on a rigid plane (inputs from physics.md §4.1). Expected values: rigid-body impulse
-// theory (physics.md §4.1, "analytic gross-slip limit"). If the contact slides throughout
+// sphere on a rigid plane (inputs from docs/physics.md §4.1). Expected values: rigid-body impulse
+// theory (docs/physics.md §4.1, "analytic gross-slip limit"). If the contact slides throughout
 // (v_t/v_n ≥ (7/2) μ (1 + e) for a sphere without initial spin) the friction impulse is μ times
 // the normal impulse m (1 + e) v_n, so
 //   Δv_t = −μ (1 + e) v_n,   ω' = (5/2) μ (1 + e) v_n / R   (I = (2/5) m R²).
 // Below that ratio rigid-body theory predicts leaving in rolling (v_t' = R ω'), but the elastic
-// Mindlin spring makes the stick regime deviate (Maw, Barber & Fawcett 1976; physics.md §4.1
+// Mindlin spring makes the stick regime deviate (Maw, Barber & Fawcett 1976; docs/physics.md §4.1
 // says to compare qualitatively): there the tests check rigid-body invariants and compare with
 // an independent integration of the same contact model.
 #include <catch2/catch.hpp>
@@ -48,7 +48,7 @@ Rebound ObliqueImpact(const Material& m, double r, double restitution, double fr
   s.particles = {{0, {0, 0, r + gap}, {v_t, 0, -v_n}, {}, 2 * r}};
   s.domain_min_m = {-0.5, -0.5, -0.5};
   s.domain_max_m = {0.5, 0.5, 0.5};
-  // Hertz contact time for the normal approach, t_c = 2.8683 (m²/(R E*² v))^{1/5} (physics.md
+  // Hertz contact time for the normal approach, t_c = 2.8683 (m²/(R E*² v))^{1/5} (docs/physics.md
   // §1.5 with the constant of chung_ooi_normal_impact_test.cc); 1000 steps per contact.
   const double e_star =
       1.0 / ((1 - m.poisson_ratio * m.poisson_ratio) / m.youngs_modulus_Pa +
@@ -101,7 +101,7 @@ const Material kPolyethylene{"polyethylene", 1e9, 0.40, 1400};
 
 TEST_CASE("Chung & Ooi test 4: oblique impact in gross slip follows the impulse limit",
           "[physics]") {
-  // physics.md §4.1 test 4: |v| = 3.9 m/s, R = 2.5 mm, e = 0.98, μ = 0.092. Gross slip for
+  // docs/physics.md §4.1 test 4: |v| = 3.9 m/s, R = 2.5 mm, e = 0.98, μ = 0.092. Gross slip for
   // incidence angles (from the normal) above atan(3.5 μ (1 + e)) = 32.5°.
   const double r = 2.5e-3, speed = 3.9, e = 0.98, mu = 0.092;
   for (const Material& m : {kAlOxide, kAlAlloy}) {
@@ -114,7 +114,7 @@ TEST_CASE("Chung & Ooi test 4: oblique impact in gross slip follows the impulse 
 
 TEST_CASE("Chung & Ooi test 5: oblique impact in gross slip follows the impulse limit",
           "[physics]") {
-  // physics.md §4.1 test 5: v_n = 5 m/s, v_t up to 70 m/s, μ = 0.3, e = 1; steel and
+  // docs/physics.md §4.1 test 5: v_n = 5 m/s, v_t up to 70 m/s, μ = 0.3, e = 1; steel and
   // polyethylene. Gross slip for v_t/v_n ≥ 3.5 μ (1 + e) = 2.1. R does not enter the
   // normalised results; R = 10 mm is used.
   const double r = 0.01, v_n = 5, e = 1.0, mu = 0.3;
@@ -125,8 +125,8 @@ TEST_CASE("Chung & Ooi test 5: oblique impact in gross slip follows the impulse 
 
 TEST_CASE("oblique impact below gross slip conserves contact-point angular momentum", "[physics]") {
   // Chung & Ooi 2011 tests 4/5 at small incidence (v_t/v_n well below 3.5 μ (1 + e)).
-  // Model-independent facts (rigid-body mechanics, physics.md §4.1): the friction impulse stays
-  // below the Coulomb bound μ m (1 + e) v_n, and since both contact forces act at the contact
+  // Model-independent facts (rigid-body mechanics, docs/physics.md §4.1): the friction impulse
+  // stays below the Coulomb bound μ m (1 + e) v_n, and since both contact forces act at the contact
   // point, the angular momentum about it, m R v_t + I ω, is conserved through the impact.
   const double r = 0.01, v_n = 5, e = 1.0, mu = 0.3;
   for (const Material& m : {kSteel, kPolyethylene}) {
@@ -143,7 +143,7 @@ TEST_CASE("oblique impact below gross slip conserves contact-point angular momen
 
 namespace {
 
-// Reference for the stick regime: the physics.md §1.2–1.3 model (Hertz normal force, e = 1;
+// Reference for the stick regime: the docs/physics.md §1.2–1.3 model (Hertz normal force, e = 1;
 // Mindlin spring S_t = 8 G* sqrt(R δ) on the accumulated tangential displacement, Coulomb cap)
 // for a sphere hitting a wall, integrated independently of the engine from δ = 0 with
 // velocity Verlet and 20 000 steps per contact. Returns the contact-point tangential
@@ -191,11 +191,11 @@ double ReferenceTangentialRestitution(const Material& m, double r, double mu, do
 
 TEST_CASE("oblique impact below gross slip matches the Hertz-Mindlin stick response", "[physics]") {
   // Chung & Ooi 2011 test 5 inputs at small and intermediate incidence. Rigid-body theory
-  // (physics.md §4.1) predicts leaving in rolling, v_t' = R ω'; with the elastic Mindlin
+  // (docs/physics.md §4.1) predicts leaving in rolling, v_t' = R ω'; with the elastic Mindlin
   // spring and e = 1 (no tangential damping) that does not happen: the tangential spring gives
   // most of its energy back, so the contact point leaves with (v_t' − R ω')/v_t ≈ +0.95
   // (steel, ν = 0.3) at v_t/v_n = 0.1 and reverses near the gross-slip threshold (the
-  // Maw–Barber–Fawcett effect physics.md §4.1 mentions). The engine is compared with an
+  // Maw–Barber–Fawcett effect docs/physics.md §4.1 mentions). The engine is compared with an
   // independent fine-step integration of the same model (ReferenceTangentialRestitution).
   const double r = 0.01, v_n = 5, e = 1.0, mu = 0.3;
   for (const Material& m : {kSteel, kPolyethylene}) {

@@ -1,5 +1,5 @@
 // JKR adhesion (EDEM convention, w = 2Γ): model landmarks and DEM behaviour.
-// Expected values: physics.md §3.2 / §4.2, derived from Johnson, Kendall & Roberts (1971) with
+// Expected values: docs/physics.md §3.2 / §4.2, derived from Johnson, Kendall & Roberts (1971) with
 // w = 2Γ: F_c = (3/2)π w R* = 3πΓR*; F(δ=0) = −(8/9)F_c; min F = −F_c; displacement-controlled
 // snap-off at δ_min = −(3/4)(π²w²R*/E*²)^{1/3} with F = −(5/9)F_c; sticking velocity
 // v_s = sqrt(2 W_sep/m*), W_sep = 7.092 (w⁵R*⁴/E*²)^{1/3}.

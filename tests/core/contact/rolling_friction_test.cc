@@ -1,4 +1,4 @@
-// Rolling-resistance models on a single sphere, against the analytic checks of physics.md §2
+// Rolling-resistance models on a single sphere, against the analytic checks of docs/physics.md §2
 // ("Analytic rolling checks"):
 //  * EPSD / EPSD2 (Ai et al. 2011 type C): the rolling torque is capped at μ_r R F_n, so a
 //    sphere on an incline of angle θ rests iff tan θ ≤ μ_r. Above it, it rolls with
@@ -68,7 +68,7 @@ void RunOrFail(Simulation& sim, double duration_s) {
 
 TEST_CASE("EPSD rolling resistance holds a sphere on an incline iff tan(theta) <= mu_r",
           "[physics]") {
-  // physics.md §2.2 and "Analytic rolling checks": static iff tan θ ≤ μ_r.
+  // docs/physics.md §2.2 and "Analytic rolling checks": static iff tan θ ≤ μ_r.
   const double mu_r = 0.1;
   for (const char* model : {"epsd", "epsd2"}) {
     for (const double ratio : {0.9, 1.1}) {
@@ -137,7 +137,7 @@ TEST_CASE("An adhesive sphere's rolling limit: the transmitted load (net) or the
 }
 
 TEST_CASE("CDT rolling friction stops a rolling sphere after 7 v0^2 / (10 mu_r g)", "[physics]") {
-  // physics.md §2.1 (EDEM standard rolling friction, constant torque) and "Analytic rolling
+  // docs/physics.md §2.1 (EDEM standard rolling friction, constant torque) and "Analytic rolling
   // checks": a = −(5/7) μ_r g, s = 7 v0² / (10 μ_r g) for a sphere rolling without slip.
   const double mu_r = 0.2, v0 = 0.5;
   const double s_expected = 7 * v0 * v0 / (10 * mu_r * kG);  // 0.0892 m

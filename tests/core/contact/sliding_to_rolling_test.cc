@@ -1,4 +1,4 @@
-// A sphere launched without spin on a flat wall slides, then rolls (physics.md §2, "Analytic
+// A sphere launched without spin on a flat wall slides, then rolls (docs/physics.md §2, "Analytic
 // rolling checks"). While sliding, kinetic friction μ m g decelerates the centre and spins the
 // sphere up: v(t) = v0 − μ g t, R ω(t) = (5/2) μ g t. The slip velocity v − R ω vanishes at
 // t* = 2 v0 / (7 μ g), after which the sphere rolls at v = (5/7) v0 (no rolling resistance).

@@ -1,4 +1,4 @@
-// NeighbourList against a brute-force oracle (the nanoflann test habit, style.md): the cell
+// NeighbourList against a brute-force oracle (docs/design.md, Conventions): the cell
 // list must hold exactly the pairs i < j with |x_i − x_j| < r_i + r_j + skin, on random
 // polydisperse clouds and on adversarial placements (cell faces, domain faces, outside the
 // domain), and its reverse index must describe the same entries.

@@ -1,7 +1,7 @@
 // Determinism across thread counts (simulation.h, contact_forces.h: each particle sums its
 // contact slots in a fixed order, so results are bit-identical for any number of threads;
-// style.md habit 10). A few hundred frictional spheres with EPSD rolling resistance are poured
-// into a box with 1 and with 2 worker threads; every particle's state must match exactly.
+// docs/design.md, Conventions). A few hundred frictional spheres with EPSD rolling resistance are
+// poured into a box with 1 and with 2 worker threads; every particle's state must match exactly.
 #include <catch2/catch.hpp>
 #include <string>
 

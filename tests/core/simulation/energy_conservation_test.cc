@@ -1,8 +1,8 @@
 // Energy conservation of an elastic, frictionless granular gas. With e = 1 (β = 0, no dashpot),
 // μ_s = 0 and no rolling resistance, every contact force is the conservative Hertz force, whose
 // potential is U = (8/15) E* sqrt(R*) δ^{5/2} (the integral of (4/3) E* sqrt(R*) δ^{3/2},
-// physics.md §1.2). With gravity off, kinetic + contact elastic energy is a constant of motion;
-// velocity Verlet keeps it to a bounded error with no secular drift.
+// docs/physics.md §1.2). With gravity off, kinetic + contact elastic energy is a constant of
+// motion; velocity Verlet keeps it to a bounded error with no secular drift.
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -1,5 +1,5 @@
 // Failures are reported as a status, never as a crash or a hang (simulation.h, run_summary.h;
-// style.md: IsValid for bad configuration before any work, a termination status for runtime
+// docs/design.md: IsValid for bad configuration before any work, a termination status for runtime
 // outcomes).
 #include <catch2/catch.hpp>
 #include <string>

@@ -61,7 +61,7 @@ void CheckSteeper(const Summary& high, const Summary& low) {
 
 }  // namespace
 
-// Zhou et al. 2001 (Phys. Rev. E 64:021301) and physics.md §4.3: the angle of repose increases
+// Zhou et al. 2001 (Phys. Rev. E 64:021301) and docs/physics.md §4.3: the angle of repose increases
 // with sliding and rolling friction; adhesion (JKR Γ) steepens heaps too (paper Fig. 6). For
 // spheres, rolling resistance dominates (Zhou et al. 2002's fit has θ → 0 as μ_r → 0), so the
 // sliding-friction effect is checked at a moderate μ_r, and from a slippery μ_s = 0.15: between

@@ -23,7 +23,7 @@ TEST_CASE("Γ scaled at constant Cohesion number keeps the number", "[unit]") {
   const double coh = CohesionNumber(gamma, e_star, r, rho, 9.81);
   const double scaled = ScaleGammaAtConstantCohesion(gamma, 0.01, 3.0);
   CHECK(CohesionNumber(scaled, 0.01 * e_star, 3 * r, rho, 9.81) == Approx(coh).epsilon(1e-12));
-  // Stiffness alone: Γ ∝ E*^{2/5} (physics.md §6). The paper's own example, 1.6 → 0.25 GPa,
+  // Stiffness alone: Γ ∝ E*^{2/5} (docs/physics.md §6). The paper's own example, 1.6 → 0.25 GPa,
   // gives 0.041 J/m² where it quotes 0.046 (which corresponds to E ≈ 0.335 GPa).
   CHECK(ScaleGammaAtConstantCohesion(0.086, 0.25 / 1.6, 1.0) == Approx(0.0409).epsilon(2e-3));
 }
