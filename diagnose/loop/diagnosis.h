@@ -1,7 +1,7 @@
 #pragma once
 // Diagnose: the discrepancy workflow (docs/diagnose.md; design.md "The discrepancy workflow").
 //  1. Calibrate the base model (ForwardModel::CalibrateBase); standardised residuals per
-//     observation (observation.h) and the gap test (gap_test.h).
+//     observation (observation.h) and the gap test (gap_significance.h).
 //  2. No gap: stop, "no missing effect found".
 //  3. Else, per candidate effect not yet added: its signature — one simulated point, the
 //     current fit with the effect at its probe value (same seeds) — and a linearised
@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-#include "diagnose/gap/gap_test.h"
+#include "diagnose/gap/gap_significance.h"
 #include "diagnose/loop/forward_model.h"
 #include "diagnose/ranking/ranking.h"
 
