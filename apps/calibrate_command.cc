@@ -12,8 +12,10 @@ using namespace demcal::workflow;
 Command AddCalibrateCommand(CLI::App& parent) {
   auto options = std::make_shared<CalibrateOptions>();
   CLI::App* app = parent.add_subcommand(
-      "calibrate", "Calibrate DEM parameters against a measurement (demcal-study/1 file)");
-  app->add_option("study", options->study_path, "study file (demcal-study/1 JSON)")->required();
+      "calibrate", "Calibrate DEM parameters against measurements (demcal-study/2 file)");
+  app->add_option("study", options->study_path,
+                  "study file (demcal-study/2 JSON; demcal-study/1 is still read)")
+      ->required();
   app->add_option("--out", options->out_dir,
                   "output directory; holds the journal: run again with the same --out to resume")
       ->required();
