@@ -29,6 +29,8 @@
 #include <string>
 #include <vector>
 
+#include "calibrate/termination.h"
+
 namespace demcal::calibrate {
 
 // The largest simulation noise (sem / measurement uncertainty) of a match: the simulation may
@@ -106,9 +108,7 @@ struct OptimiserOptions {
 };
 
 struct OptimiserResult {
-  // "within_noise" (a match), "converged" (tolerance reached, no match within noise),
-  // "out_of_range" (the measurement lies outside what the bounds reach), "budget", "failed".
-  std::string termination = "failed";
+  Termination termination = Termination::kFailed;  // never kInvalid (termination.h)
   std::string message = "not run";
   std::vector<double> best_unit;  // the best candidate evaluated
   double best_cost = 0;

@@ -20,7 +20,7 @@
 // iteration, two plus at most extra_refits × (base parameters + 3) per refitted candidate.
 //
 //   Diagnosis d = Diagnose(model, observations, candidates, options);
-//   d.termination;  // "no_missing_effect", "effect_found", "gap_remains", "gap_unexplained"
+//   d.termination;  // kNoMissingEffect, kEffectFound, kGapRemains, kGapUnexplained
 //
 // Thread-safety: runs on the calling thread; the model parallelises.
 #include <functional>
@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "diagnose/gap/gap_significance.h"
+#include "diagnose/loop/diagnosis_termination.h"
 #include "diagnose/loop/forward_model.h"
 #include "diagnose/ranking/ranking.h"
 
@@ -67,7 +68,7 @@ struct PhaseTime {
 };
 
 struct Diagnosis {
-  std::string termination = "failed";
+  DiagnosisTermination termination = DiagnosisTermination::kFailed;
   std::string message = "Diagnose was not called";
   BaseCalibration base;
   std::vector<Observation> before;  // at the base calibration
