@@ -3,9 +3,12 @@
 #include <iostream>
 #include <memory>
 
+#include "apps/cli_checks.h"
 #include "workflow/calibration/run_study.h"
 
 namespace demcal::apps {
+
+namespace limits = objectives::limits;
 
 using namespace demcal::workflow;
 
@@ -22,9 +25,9 @@ Command AddCalibrateCommand(CLI::App& parent) {
   app->add_flag("--quick", options->quick, "run at the experiment file's quick fidelity");
   app->add_option("--max-evaluations", options->max_evaluations,
                   "candidate budget (default: the study's optimiser.max_evaluations)")
-      ->check(CLI::Range(1, 100000));
+      ->check(CliRange<int>(limits::kMaxEvaluations));
   app->add_option("--threads", options->threads, "replicates run side by side on this many cores (0: all)")
-      ->check(CLI::Range(0, 1024));
+      ->check(CliRange<int>(limits::kThreads));
   app->add_flag("--quiet", options->quiet, "no progress lines on stderr");
   return {app, [options] { return RunCalibrate(*options, std::cerr); }};
 }

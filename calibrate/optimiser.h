@@ -97,12 +97,13 @@ BatchTrialFunction Batched(TrialFunction trial);
 // failed sample.
 TrialResult EvaluateOne(const BatchTrialFunction& batch, const std::vector<double>& unit);
 
-// Options shared by every optimiser. Defaults suit a few-parameter DEM calibration.
+// Options shared by every optimiser. Defaults suit a few-parameter DEM calibration. Allowed
+// ranges: objectives/common/input_limits.h (kMaxEvaluations, kUnitTolerance, kBatchSize).
 struct OptimiserOptions {
   int max_evaluations = 20;       // candidates the optimiser may ask for (journal hits included)
   double unit_tolerance = 0.002;  // stop when the search interval / step is this small (unit cube)
-  int batch_size = 4;             // candidates per batch of the batch optimisers, in [1, 1024];
-                                  // set it >= the cores that evaluate them
+  int batch_size = 4;             // candidates per batch of the batch optimisers; set it >= the
+                                  // cores that evaluate them
   uint64_t seed = 1;              // for the optimisers that draw (differential_evolution)
   bool IsValid(std::string* error) const;
 };

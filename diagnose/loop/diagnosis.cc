@@ -5,18 +5,24 @@
 
 #include "diagnose/loop/candidate_step.h"
 #include "diagnose/loop/fit_state.h"
+#include "objectives/common/input_limits.h"
 
 namespace demcal::diagnose {
 
 bool DiagnoseOptions::IsValid(std::string* error) const {
-  if (!(significance > 0 && significance < 0.5))
-    return *error = "significance must be in (0, 0.5), got " + std::to_string(significance), false;
-  if (!(discrepancy_floor >= 0 && discrepancy_floor <= 10))
-    return *error = "discrepancy floor must be in [0, 10] single-run scatters, got " +
-                    std::to_string(discrepancy_floor), false;
-  if (dem_refits < 1 || dem_refits > 10) return *error = "refits must be in [1, 10]", false;
-  if (max_effects < 1 || max_effects > 6) return *error = "max effects must be in [1, 6]", false;
-  if (extra_refits < 0 || extra_refits > 20) return *error = "extra refits must be in [0, 20]", false;
+  namespace limits = objectives::limits;
+  if (!limits::kSignificance.Contains(significance))
+    return *error = "significance must be in " + limits::kSignificance.Text() + ", got " +
+                    std::to_string(significance), false;
+  if (!limits::kDiscrepancyFloor.Contains(discrepancy_floor))
+    return *error = "discrepancy floor must be in " + limits::kDiscrepancyFloor.Text() +
+                    " single-run scatters, got " + std::to_string(discrepancy_floor), false;
+  if (!limits::kDiagnoseRefits.Contains(dem_refits))
+    return *error = "refits must be in " + limits::kDiagnoseRefits.Text(), false;
+  if (!limits::kDiagnoseMaxEffects.Contains(max_effects))
+    return *error = "max effects must be in " + limits::kDiagnoseMaxEffects.Text(), false;
+  if (!limits::kDiagnoseExtraRefits.Contains(extra_refits))
+    return *error = "extra refits must be in " + limits::kDiagnoseExtraRefits.Text(), false;
   return true;
 }
 

@@ -34,12 +34,13 @@
 
 namespace demcal::diagnose {
 
+// Allowed ranges: objectives/common/input_limits.h (kSignificance, kDiscrepancyFloor, ...).
 struct DiagnoseOptions {
-  double significance = 0.01;    // the gap test's and the evidence's level, (0, 0.5)
-  double discrepancy_floor = 1;  // model-discrepancy floor, in single-run scatters, >= 0
-  int dem_refits = 2;            // candidates refitted by simulation per iteration, >= 1
-  int max_effects = 2;           // effects added at most, >= 1
-  int extra_refits = 4;          // re-centred refit points per refitted candidate beyond two, [0, 20]
+  double significance = 0.01;    // the gap test's and the evidence's level
+  double discrepancy_floor = 1;  // model-discrepancy floor, in single-run scatters
+  int dem_refits = 2;            // candidates refitted by simulation per iteration
+  int max_effects = 2;           // effects added at most
+  int extra_refits = 4;          // re-centred refit points per refitted candidate beyond two
   bool IsValid(std::string* error) const;
 };
 
