@@ -3,26 +3,31 @@
 #include <iostream>
 #include <memory>
 
+#include "apps/cli_checks.h"
 #include "workflow/calibration/run_study.h"
 
 namespace demcal::apps {
+
+namespace limits = objectives::limits;
 
 using namespace demcal::workflow;
 
 Command AddCalibrateCommand(CLI::App& parent) {
   auto options = std::make_shared<CalibrateOptions>();
   CLI::App* app = parent.add_subcommand(
-      "calibrate", "Calibrate DEM parameters against a measurement (demcal-study/1 file)");
-  app->add_option("study", options->study_path, "study file (demcal-study/1 JSON)")->required();
+      "calibrate", "Calibrate DEM parameters against measurements (demcal-study/2 file)");
+  app->add_option("study", options->study_path,
+                  "study file (demcal-study/2 JSON; demcal-study/1 is still read)")
+      ->required();
   app->add_option("--out", options->out_dir,
                   "output directory; holds the journal: run again with the same --out to resume")
       ->required();
   app->add_flag("--quick", options->quick, "run at the experiment file's quick fidelity");
   app->add_option("--max-evaluations", options->max_evaluations,
                   "candidate budget (default: the study's optimiser.max_evaluations)")
-      ->check(CLI::Range(1, 100000));
+      ->check(CliRange<int>(limits::kMaxEvaluations));
   app->add_option("--threads", options->threads, "replicates run side by side on this many cores (0: all)")
-      ->check(CLI::Range(0, 1024));
+      ->check(CliRange<int>(limits::kThreads));
   app->add_flag("--quiet", options->quiet, "no progress lines on stderr");
   return {app, [options] { return RunCalibrate(*options, std::cerr); }};
 }

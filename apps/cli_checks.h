@@ -1,12 +1,23 @@
 #pragma once
 // CLI11 validators whose messages read like the rest of demcal's ("must be > 0 s") instead of
-// CLI11's, which print the largest double as a 300-digit number.
+// CLI11's, which print the largest double as a 300-digit number; and the input limits as CLI11
+// ranges.
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
 #include <string>
 
+#include "objectives/common/input_limits.h"
+
 namespace demcal::apps {
+
+// A limit of the input-limits table (objectives/common/input_limits.h) as CLI11's closed range,
+// in the option's type T (its help then reads "INT in [1 - 100000]"). Open ends are left to the
+// IsValid behind the option.
+template <class T>
+CLI::Range CliRange(const objectives::limits::Limit& limit) {
+  return CLI::Range(static_cast<T>(limit.lo), static_cast<T>(limit.hi));
+}
 
 // A finite number of seconds, > 0 (or >= 0 with allow_zero), at most `max_s`.
 inline CLI::Validator Seconds(bool allow_zero, double max_s) {

@@ -3,9 +3,12 @@
 #include <iostream>
 #include <memory>
 
+#include "apps/cli_checks.h"
 #include "diagnose/run_diagnose.h"
 
 namespace demcal::apps {
+
+namespace limits = objectives::limits;
 
 Command AddDiagnoseCommand(CLI::App& parent) {
   auto o = std::make_shared<diagnose::DiagnoseCommandOptions>();
@@ -20,18 +23,20 @@ Command AddDiagnoseCommand(CLI::App& parent) {
       ->check(CLI::Range(1e-6, 0.5));
   app->add_option("--discrepancy-floor", o->diagnose.discrepancy_floor,
                   "model-discrepancy noise floor in single-run scatters of the simulation (default 1)")
-      ->check(CLI::Range(0.0, 10.0));
+      ->check(CliRange<double>(limits::kDiscrepancyFloor));
   app->add_option("--effects", o->effects, "candidate effects (default: the whole library)")->delimiter(',');
   app->add_option("--species", o->species, "the species the effects act on (default: from the study's parameters)");
   app->add_option("--refits", o->diagnose.dem_refits, "candidates refitted by simulation per step (default 2)")
-      ->check(CLI::Range(1, 10));
-  app->add_option("--max-effects", o->diagnose.max_effects, "effects added at most (default 2)")->check(CLI::Range(1, 6));
+      ->check(CliRange<int>(limits::kDiagnoseRefits));
+  app->add_option("--max-effects", o->diagnose.max_effects, "effects added at most (default 2)")
+      ->check(CliRange<int>(limits::kDiagnoseMaxEffects));
   app->add_option("--extra-refits", o->diagnose.extra_refits,
                   "re-centred refit points per refitted candidate beyond two, while each lowers its chi2 by >= 1 (default 4)")
-      ->check(CLI::Range(0, 20));
+      ->check(CliRange<int>(limits::kDiagnoseExtraRefits));
   app->add_option("--max-evaluations", o->max_evaluations, "base calibration budget (default: the study's)")
-      ->check(CLI::Range(1, 100000));
-  app->add_option("--threads", o->threads, "runs side by side on this many cores (0: all)")->check(CLI::Range(0, 1024));
+      ->check(CliRange<int>(limits::kMaxEvaluations));
+  app->add_option("--threads", o->threads, "runs side by side on this many cores (0: all)")
+      ->check(CliRange<int>(limits::kThreads));
   app->add_flag("--quiet", o->quiet, "no progress lines on stderr");
   return {app, [o] { return diagnose::RunDiagnose(*o, std::cerr); }};
 }

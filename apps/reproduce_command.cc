@@ -3,9 +3,12 @@
 #include <iostream>
 #include <memory>
 
+#include "apps/cli_checks.h"
 #include "workflow/reproduce/run_reproduce.h"
 
 namespace demcal::apps {
+
+namespace limits = objectives::limits;
 
 using namespace demcal::workflow;
 
@@ -21,7 +24,7 @@ Command AddReproduceCommand(CLI::App& parent) {
       ->required();
   app->add_flag("--quick", options->quick, "run every experiment at its quick fidelity");
   app->add_option("--threads", options->threads, "runs side by side on this many cores (0: all)")
-      ->check(CLI::Range(0, 1024));
+      ->check(CliRange<int>(limits::kThreads));
   app->add_flag("--quiet", options->quiet, "fewer progress lines on stderr");
   return {app, [options] { return RunReproduce(*options, std::cerr); }};
 }

@@ -60,13 +60,13 @@ core::Scene PourScene(const PourOptions& o) {
 }  // namespace
 
 CLI::App* AddPourCommand(CLI::App& app, PourOptions* o) {
-  auto* c = app.add_subcommand("pour", "time the poured heap on a frozen base (issue 11)");
+  auto* c = app.add_subcommand("pour", "time the poured heap on a frozen base");
   c->add_option("--threads", o->threads, "worker threads");
   c->add_option("--steps", o->steps, "timed steps from the start of the pour");
   c->add_option("--base-radius", o->base_radius_m, "radius of the frozen base disc, m");
   c->add_option("--rate", o->mass_rate_kg_s, "mass rate of the stream, kg/s");
   c->add_flag("--keep-fixed-pairs", o->keep_fixed_pairs,
-              "sweep fixed spheres like moving ones (the treatment before issue 11)");
+              "sweep fixed spheres like moving ones (keep fixed-fixed pairs in the list)");
   c->add_option("--refresh", o->refresh_fraction,
                  "incremental rebuilds: re-search particles beyond this fraction of the skin "
                  "from their reference (0: full rebuilds)");

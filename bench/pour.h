@@ -1,9 +1,9 @@
 #pragma once
-// demcal_bench pour: the poured conical heap of issue 11 — spheres d 1.8–2.2 mm (uniform),
-// ρ = 2500 kg/m³, E = 5 MPa, ν = 0.25, e = 0.5, μs = 0.5, μr = 0.1 (epsd2), Δt = 2.4e-5 s, skin
-// 0.5 mm, poured from a 5 mm-radius stream onto a frozen rough base (a disc of fixed 2 mm
-// spheres at 2 mm pitch, lifted at random by up to half a radius, as objectives/glued_base.cc
-// builds it). Times --steps steps from the start of the pour and prints where the time went.
+// demcal_bench pour: a poured conical heap — spheres d 1.8–2.2 mm (uniform), ρ = 2500 kg/m³,
+// E = 5 MPa, ν = 0.25, e = 0.5, μs = 0.5, μr = 0.1 (epsd2), Δt = 2.4e-5 s, skin 0.5 mm, poured
+// from a 5 mm-radius stream onto a frozen rough base (a disc of fixed 2 mm spheres at 2 mm
+// pitch, lifted at random by up to half a radius, as objectives/common/glued_base.cc builds it).
+// Times --steps steps from the start of the pour and prints where the time went.
 #include <CLI/CLI.hpp>
 
 namespace demcal::bench {

@@ -1,5 +1,5 @@
 // demcal_segregation_floor: the random-mixture noise floor of the segregation indices against the
-// coarse-graining s, without DEM (issue 15). For each s it builds a SYNTHETIC random mixture of the
+// coarse-graining s, without DEM. For each s it builds a SYNTHETIC random mixture of the
 // paper's heap — the feed of examples/segregation_paper.json (BP 425–500 µm 780 kg/m³, TAED
 // 850–1000 µm 850 kg/m³, EP 600–700 µm 2320 kg/m³; mass fractions 0.925/0.055/0.02 of 30.85 g),
 // diameters × s, each grain's species independent of its place — in the triangular cross-section

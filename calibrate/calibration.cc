@@ -205,7 +205,7 @@ CalibrationSummary Calibrate(CandidateEvaluator& evaluator, const ParameterSpace
   Optimiser optimise = nullptr;
   const std::string error = Validate(space, targets, options, &optimise);
   if (!error.empty()) {
-    s.termination = "invalid";
+    s.termination = Termination::kInvalid;
     s.message = error;
     return s;
   }

@@ -73,7 +73,7 @@ struct ParameterEstimate {
 using CandidateProgress = std::function<void(const Candidate& candidate, double elapsed_s)>;
 
 struct CalibrationSummary {
-  std::string termination = "failed";  // the optimiser's (optimiser.h), or "invalid"
+  Termination termination = Termination::kFailed;  // the optimiser's, or kInvalid
   std::string message = "Calibrate was not called";
   std::vector<Candidate> candidates;  // in the order evaluated
   int best = -1;                      // index into candidates, −1 if none gave a value
@@ -92,7 +92,7 @@ struct CalibrationSummary {
   int refinement_points = 0;  // candidates added after the optimiser to sharpen J (also in candidates)
   std::string journal_error;  // first failure to write the journal ("" if none)
 
-  bool ok() const { return best >= 0 && termination == "within_noise"; }
+  bool ok() const { return best >= 0 && termination == Termination::kWithinNoise; }
   std::string BriefReport(const ParameterSpace& space) const;
 };
 

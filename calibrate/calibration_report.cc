@@ -9,7 +9,7 @@ namespace demcal::calibrate {
 std::string CalibrationSummary::BriefReport(const ParameterSpace& space) const {
   std::ostringstream out;
   out.precision(4);
-  out << "calibration: " << termination << " (" << message << "), " << candidates.size()
+  out << "calibration: " << TerminationName(termination) << " (" << message << "), " << candidates.size()
       << " candidates in " << batches << " batches, " << replicates_run << " replicate runs (+"
       << replicates_reused << " from the journal)\n";
   if (best < 0) return out.str();

@@ -1,6 +1,7 @@
 #include "calibrate/candidate_evaluator.h"
 
 #include <cmath>
+#include <string_view>
 
 namespace demcal::calibrate {
 
@@ -13,6 +14,18 @@ bool CandidateResult::ok() const {
   for (const TargetValue& t : targets)
     if (!t.ok()) return false;
   return true;
+}
+
+namespace {
+constexpr std::string_view kInfeasiblePrefix = "infeasible: ";
+}  // namespace
+
+std::string InfeasibleStatus(const std::string& why) {
+  return std::string(kInfeasiblePrefix) + why;
+}
+
+bool IsInfeasibleStatus(const std::string& status) {
+  return status.rfind(kInfeasiblePrefix, 0) == 0;
 }
 
 }  // namespace demcal::calibrate

@@ -36,6 +36,11 @@ struct CandidateResult {
   bool ok() const;                   // status "ok" and every target ok
 };
 
+// The status of a candidate the parameter space refused before any run ("infeasible: " + why),
+// and the test for it: a refused candidate fails as a whole, whatever its targets say.
+std::string InfeasibleStatus(const std::string& why);
+bool IsInfeasibleStatus(const std::string& status);
+
 class CandidateEvaluator {
  public:
   virtual ~CandidateEvaluator() = default;

@@ -16,7 +16,22 @@
 namespace demcal::calibrate {
 namespace {
 
-constexpr const char* kFormat = "demcal-journal/2";
+// The header's study fingerprint is FNV-1a 64 (core/math/fnv1a.h). Journals of earlier versions
+// hold fingerprints computed otherwise, which can never match: they are refused by their version,
+// with what to do, rather than as "a different study".
+constexpr int kVersion = 3;
+constexpr const char* kFormatPrefix = "demcal-journal/";
+const std::string kFormat = kFormatPrefix + std::to_string(kVersion);
+
+// The version of a "demcal-journal/N" header, or 0 when it is not one.
+int FormatVersion(const std::string& format) {
+  if (format.rfind(kFormatPrefix, 0) != 0) return 0;
+  const std::string digits = format.substr(std::strlen(kFormatPrefix));
+  if (digits.empty() || digits.size() > 6 ||
+      digits.find_first_not_of("0123456789") != std::string::npos)
+    return 0;
+  return std::stoi(digits);
+}
 
 // A record is ~200 bytes; a megabyte line is not one of ours (and a cheap guard before parsing).
 constexpr size_t kMaxLineBytes = 1 << 20;
@@ -144,7 +159,13 @@ bool EvaluationJournal::Open(const std::string& path, const std::string& fingerp
     nlohmann::json j = nlohmann::json::parse(line, nullptr, /*allow_exceptions=*/false);
     const std::string at = path + ":" + std::to_string(number) + ": ";
     if (!has_header) {
-      if (!j.is_object() || j.value("format", "") != kFormat)
+      const std::string format = j.is_object() ? j.value("format", "") : "";
+      if (const int version = FormatVersion(format); version != 0 && version != kVersion) {
+        const std::string by = version < kVersion ? "an older" : "a newer";
+        return Fail(error, path + " was written by " + by + " demcal (" + format +
+                               "); move it away or use a new --out to start afresh");
+      }
+      if (format != kFormat)
         return Fail(error, at + "not a demcal journal (the header must have format \"" + kFormat + "\")");
       if (j.value("study", "") != fingerprint)
         return Fail(error, path + ": this journal belongs to a different study (other model, "

@@ -5,16 +5,17 @@
 // asks for the same candidates again and finds them here (exact match on the parameter values
 // and the replicate's seed).
 //
-// File: the first line is a header {"format": "demcal-journal/2", "study": <fingerprint>}; then
+// File: the first line is a header {"format": "demcal-journal/3", "study": <fingerprint>}; then
 // one record per replicate run: {"group": g, "parameters": [...], "replicate": r, "seed": s,
 // "status": "ok", "values": {"angle_deg": x, ...}, "wall_time_s": t} (single-observable studies
 // write "value": x instead of "values"). The group names the experiment run a record belongs to
 // (an experiment file under a condition: one heap feeds every target that reads it). A line cut
 // short by a kill is dropped on reopening. A journal of another study (a different fingerprint)
-// is refused, never mixed in. Every record is checked on loading: types, finite numbers, the
-// parameter count, values inside their observable's physical range; a bad line is an error
-// "journal.jsonl:LINE: ...", and a second record of the same run with other content is an
-// error, never a silent overwrite.
+// is refused, never mixed in; so is one of another format version ("written by an older demcal
+// (demcal-journal/2); move it away or use a new --out to start afresh"). Every record is checked
+// on loading: types, finite numbers, the parameter count, values inside their observable's
+// physical range; a bad line is an error "journal.jsonl:LINE: ...", and a second record of the
+// same run with other content is an error, never a silent overwrite.
 //
 //   EvaluationJournal journal;
 //   if (!journal.Open(dir + "/journal.jsonl", fingerprint, &error)) ...;

@@ -29,6 +29,8 @@
 #include <string>
 #include <vector>
 
+#include "calibrate/termination.h"
+
 namespace demcal::calibrate {
 
 // The largest simulation noise (sem / measurement uncertainty) of a match: the simulation may
@@ -95,20 +97,19 @@ BatchTrialFunction Batched(TrialFunction trial);
 // failed sample.
 TrialResult EvaluateOne(const BatchTrialFunction& batch, const std::vector<double>& unit);
 
-// Options shared by every optimiser. Defaults suit a few-parameter DEM calibration.
+// Options shared by every optimiser. Defaults suit a few-parameter DEM calibration. Allowed
+// ranges: objectives/common/input_limits.h (kMaxEvaluations, kUnitTolerance, kBatchSize).
 struct OptimiserOptions {
   int max_evaluations = 20;       // candidates the optimiser may ask for (journal hits included)
   double unit_tolerance = 0.002;  // stop when the search interval / step is this small (unit cube)
-  int batch_size = 4;             // candidates per batch of the batch optimisers, in [1, 1024];
-                                  // set it >= the cores that evaluate them
+  int batch_size = 4;             // candidates per batch of the batch optimisers; set it >= the
+                                  // cores that evaluate them
   uint64_t seed = 1;              // for the optimisers that draw (differential_evolution)
   bool IsValid(std::string* error) const;
 };
 
 struct OptimiserResult {
-  // "within_noise" (a match), "converged" (tolerance reached, no match within noise),
-  // "out_of_range" (the measurement lies outside what the bounds reach), "budget", "failed".
-  std::string termination = "failed";
+  Termination termination = Termination::kFailed;  // never kInvalid (termination.h)
   std::string message = "not run";
   std::vector<double> best_unit;  // the best candidate evaluated
   double best_cost = 0;

@@ -45,9 +45,9 @@ class Search {
     }
     return true;
   }
-  OptimiserResult Finish(const std::string& termination, const std::string& message) {
+  OptimiserResult Finish(Termination termination, const std::string& message) {
     result_.termination = termination;
-    result_.message = retreated_ && termination != "out_of_range"
+    result_.message = retreated_ && termination != Termination::kOutOfRange
                           ? message + " (a bound gave no value: probed nearer the start)"
                           : message;
     return result_;
@@ -74,41 +74,41 @@ class Search {
 
 OptimiserResult Search::Run(double start) {
   Point s, lo, hi;
-  if (!Eval(start, &s)) return Finish("failed", "the start candidate gave no value");
-  if (s.settled) return Finish("within_noise", "the start candidate matches within noise");
-  if (Budget()) return Finish("budget", "budget used up at the start candidate");
+  if (!Eval(start, &s)) return Finish(Termination::kFailed, "the start candidate gave no value");
+  if (s.settled) return Finish(Termination::kWithinNoise, "the start candidate matches within noise");
+  if (Budget()) return Finish(Termination::kBudget, "budget used up at the start candidate");
   // Probe the bound on the side the residual says the root lies (assuming an increasing
   // observable); the other bound only if that shows no sign change.
   const bool up_first = s.r() < 0;
   Point& first = up_first ? hi : lo;
   Point& second = up_first ? lo : hi;
   if (!Probe(start, up_first ? 1.0 : 0.0, &first))
-    return Finish("failed", "a bound and the points towards the start gave no value");
-  if (first.settled) return Finish("within_noise", "a bound matches within noise");
+    return Finish(Termination::kFailed, "a bound and the points towards the start gave no value");
+  if (first.settled) return Finish(Termination::kWithinNoise, "a bound matches within noise");
   if (first.r() * s.r() < 0) return up_first ? Refine(s, first) : Refine(first, s);
-  if (Budget()) return Finish("budget", "budget used up probing the bounds");
+  if (Budget()) return Finish(Termination::kBudget, "budget used up probing the bounds");
   if (!Probe(start, up_first ? 0.0 : 1.0, &second))
-    return Finish("failed", "a bound and the points towards the start gave no value");
-  if (second.settled) return Finish("within_noise", "a bound matches within noise");
+    return Finish(Termination::kFailed, "a bound and the points towards the start gave no value");
+  if (second.settled) return Finish(Termination::kWithinNoise, "a bound matches within noise");
   if (second.r() * s.r() < 0) return up_first ? Refine(second, s) : Refine(s, second);
   std::ostringstream m;
   if (retreated_) m << "(a bound gave no value; the nearest point that did is used) ";
   m << "the measurement is outside the range the bounds reach (standardised residuals "
     << lo.r() << " at the lower bound, " << s.r() << " at the start, " << hi.r()
     << " at the upper bound): widen the bounds or add the missing effect";
-  return Finish("out_of_range", m.str());
+  return Finish(Termination::kOutOfRange, m.str());
 }
 
 OptimiserResult Search::Refine(Point a, Point b) {
   double fa = a.r(), fb = b.r();
   int kept = 0;  // +1: a kept repeatedly, −1: b kept repeatedly
   while (b.u - a.u > options_.unit_tolerance) {
-    if (Budget()) return Finish("budget", "budget used up before a match within noise");
+    if (Budget()) return Finish(Termination::kBudget, "budget used up before a match within noise");
     const double u = std::clamp(b.u - fb * (b.u - a.u) / (fb - fa), a.u + 0.01 * (b.u - a.u),
                                 b.u - 0.01 * (b.u - a.u));
     Point p;
-    if (!Eval(u, &p)) return Finish("failed", "a candidate inside the bracket gave no value");
-    if (p.settled) return Finish("within_noise", "matched within noise");
+    if (!Eval(u, &p)) return Finish(Termination::kFailed, "a candidate inside the bracket gave no value");
+    if (p.settled) return Finish(Termination::kWithinNoise, "matched within noise");
     if (p.r() * fa < 0) {  // the crossing is in [a, p]
       b = p, fb = p.r();
       if (kept == 1) fa *= 0.5;
@@ -119,7 +119,7 @@ OptimiserResult Search::Refine(Point a, Point b) {
       kept = -1;
     }
   }
-  return Finish("converged", "bracket narrower than unit_tolerance without a match within noise "
+  return Finish(Termination::kConverged, "bracket narrower than unit_tolerance without a match within noise "
                              "(the observable may jump here, or its noise is underestimated)");
 }
 
@@ -129,7 +129,7 @@ OptimiserResult BracketOptimise(const BatchTrialFunction& trial, const std::vect
                                 const OptimiserOptions& options) {
   Search search(trial, options);
   if (start_unit.size() != 1)
-    return search.Finish("failed", "bracket optimises exactly one parameter (use an nlopt_* optimiser)");
+    return search.Finish(Termination::kFailed, "bracket optimises exactly one parameter (use an nlopt_* optimiser)");
   return search.Run(start_unit[0]);
 }
 

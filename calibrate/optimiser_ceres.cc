@@ -238,7 +238,7 @@ OptimiserResult CeresOptimise(const BatchTrialFunction& trial,
     return result;
   }
   if (trials.settled()) {  // the start went through the shared stop rule
-    result.termination = "within_noise";
+    result.termination = Termination::kWithinNoise;
     result.message = "the start candidate matches within noise";
     return result;
   }
@@ -275,24 +275,24 @@ OptimiserResult CeresOptimise(const BatchTrialFunction& trial,
   m << "finite-difference step " << step << " (unit cube), " << summary.iterations.size()
     << " Ceres iterations";
   if (trials.settled()) {
-    result.termination = "within_noise";
+    result.termination = Termination::kWithinNoise;
     result.message = "matched and settled within noise; " + m.str();
   } else if (trials.matched()) {
-    result.termination = "within_noise";
+    result.termination = Termination::kWithinNoise;
     result.message = "matched within noise, then searched on to Ceres' " +
                      std::string(trials.budget_hit() ? "budget" : "tolerance") + "; " + m.str();
   } else if (trials.budget_hit()) {
-    result.termination = "budget";
+    result.termination = Termination::kBudget;
     result.message = "budget used up before a match within noise; " + m.str();
   } else if (summary.termination_type == ceres::CONVERGENCE) {
-    result.termination = "converged";
+    result.termination = Termination::kConverged;
     result.message = "Ceres converged without a match within noise (" + summary.message + "); " +
                      m.str() + ": the measurements may be out of the bounds' reach or conflict";
   } else if (summary.termination_type == ceres::NO_CONVERGENCE) {
-    result.termination = "budget";
+    result.termination = Termination::kBudget;
     result.message = "Ceres iteration limit; " + m.str();
   } else {
-    result.termination = "failed";
+    result.termination = Termination::kFailed;
     result.message = "Ceres: " + summary.message + "; " + m.str();
   }
   // The covariance's Jacobian at the best candidate: its finite-difference points are usually

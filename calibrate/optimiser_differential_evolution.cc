@@ -76,14 +76,15 @@ class Evolution {
     }
   }
   // `cause`: what stopped the search. One that matched ends within_noise whatever stopped it.
-  OptimiserResult Finish(std::string termination, const std::string& cause) {
+  OptimiserResult Finish(Termination termination, const std::string& cause) {
     std::string message = cause + " without a match within noise";
     if (record_.settled()) {
-      termination = "within_noise", message = "matched and settled within noise";
+      termination = Termination::kWithinNoise, message = "matched and settled within noise";
     } else if (record_.matched()) {
-      termination = "within_noise", message = "matched within noise, then searched on: " + cause;
+      termination = Termination::kWithinNoise;
+      message = "matched within noise, then searched on: " + cause;
     }
-    result_.termination = result_.best_unit.empty() ? "failed" : termination;
+    result_.termination = result_.best_unit.empty() ? Termination::kFailed : termination;
     std::ostringstream m;
     m << message << " (" << generations_ << " generations of " << size_ << ")";
     result_.message = result_.best_unit.empty() ? "no candidate gave a value" : m.str();
@@ -112,8 +113,8 @@ OptimiserResult Evolution::Run(const std::vector<double>& start) {
   population[0].u = start;
   for (double& v : population[0].u) v = std::clamp(v, 0.0, 1.0);
   const bool whole = Evaluate(&population);
-  if (record_.settled()) return Finish("within_noise", "settled");
-  if (!whole) return Finish("budget", "budget used up in the first generation");
+  if (record_.settled()) return Finish(Termination::kWithinNoise, "settled");
+  if (!whole) return Finish(Termination::kBudget, "budget used up in the first generation");
   for (;;) {
     double extent = 0;
     for (int k = 0; k < n; ++k) {
@@ -122,10 +123,10 @@ OptimiserResult Evolution::Run(const std::vector<double>& start) {
       extent = std::max(extent, hi - lo);
     }
     if (extent < options_.unit_tolerance)
-      return Finish("converged",
+      return Finish(Termination::kConverged,
                     "population narrower than unit_tolerance");
     if (result_.evaluations >= options_.max_evaluations)
-      return Finish("budget", "budget used up");
+      return Finish(Termination::kBudget, "budget used up");
     std::vector<Member> trials(size_, Member{std::vector<double>(n)});
     for (int i = 0; i < size_; ++i) {
       const int r1 = Pick(size_, {i}), r2 = Pick(size_, {i, r1}), r3 = Pick(size_, {i, r1, r2});
@@ -142,8 +143,8 @@ OptimiserResult Evolution::Run(const std::vector<double>& start) {
     ++generations_;
     for (size_t i = 0; i < trials.size(); ++i)
       if (trials[i].cost <= population[i].cost) population[i] = trials[i];
-    if (record_.settled()) return Finish("within_noise", "settled");
-    if (!complete) return Finish("budget", "budget used up");
+    if (record_.settled()) return Finish(Termination::kWithinNoise, "settled");
+    if (!complete) return Finish(Termination::kBudget, "budget used up");
   }
 }
 

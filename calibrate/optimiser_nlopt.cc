@@ -51,20 +51,22 @@ OptimiserResult Run(nlopt::algorithm algorithm, const BatchTrialFunction& trial,
     const nlopt::result r = opt.optimize(x, cost);
     const bool budget = r == nlopt::MAXEVAL_REACHED;
     const bool matched = record.matched();
-    result.termination = matched ? "within_noise" : budget ? "budget" : "converged";
+    result.termination = matched  ? Termination::kWithinNoise
+                         : budget ? Termination::kBudget
+                                  : Termination::kConverged;
     result.message = matched  ? std::string("matched within noise, then searched on to the ") +
                                     (budget ? "budget" : "unit tolerance")
                      : budget ? "budget used up before a match within noise"
                               : "step below unit_tolerance without a match within noise";
   } catch (const nlopt::forced_stop&) {
-    result.termination = record.matched() ? "within_noise" : "failed";
+    result.termination = record.matched() ? Termination::kWithinNoise : Termination::kFailed;
     result.message = record.matched() ? "matched and settled within noise" : "NLopt stopped";
   } catch (const std::exception& e) {
-    result.termination = "failed";
+    result.termination = Termination::kFailed;
     result.message = std::string("NLopt: ") + e.what();
   }
-  if (result.best_unit.empty() && result.termination != "failed") {
-    result.termination = "failed";
+  if (result.best_unit.empty() && result.termination != Termination::kFailed) {
+    result.termination = Termination::kFailed;
     result.message = "no candidate gave a value";
   }
   return result;

@@ -4,6 +4,7 @@
 
 #include "calibrate/chi_square.h"
 #include "calibrate/optimiser.h"
+#include "objectives/common/input_limits.h"
 
 namespace demcal::calibrate {
 namespace {
@@ -81,16 +82,17 @@ TrialResult EvaluateOne(const BatchTrialFunction& batch, const std::vector<doubl
 }
 
 bool OptimiserOptions::IsValid(std::string* error) const {
-  if (max_evaluations < 1 || max_evaluations > 100000) {
-    if (error) *error = "max_evaluations: must be in [1, 100000]";
+  namespace limits = objectives::limits;
+  if (!limits::kMaxEvaluations.Contains(max_evaluations)) {
+    if (error) *error = "max_evaluations: must be in " + limits::kMaxEvaluations.Text();
     return false;
   }
-  if (!(unit_tolerance > 0 && unit_tolerance < 0.5)) {
-    if (error) *error = "unit_tolerance: must be in (0, 0.5)";
+  if (!limits::kUnitTolerance.Contains(unit_tolerance)) {
+    if (error) *error = "unit_tolerance: must be in " + limits::kUnitTolerance.Text();
     return false;
   }
-  if (batch_size < 1 || batch_size > 1024) {
-    if (error) *error = "batch_size: must be in [1, 1024]";
+  if (!limits::kBatchSize.Contains(batch_size)) {
+    if (error) *error = "batch_size: must be in " + limits::kBatchSize.Text();
     return false;
   }
   return true;

@@ -147,7 +147,7 @@ CandidateResult TargetEvaluator::Summarise(const std::vector<TargetSample>& samp
                                            bool pooled) const {
   CandidateResult result;
   if (!infeasible.empty()) {
-    result.status = "infeasible: " + infeasible;
+    result.status = InfeasibleStatus(infeasible);
     result.targets.assign(targets_.size(), TargetValue{0, 0, 0, result.status});
     return result;
   }

@@ -73,7 +73,7 @@ int RunDiagnose(const DiagnoseCommandOptions& o, std::ostream& log) {
         << (context.coating_column.empty() ? "" : "; coating column " + context.coating_column) << "; "
         << candidates.size() << " candidate effects\n";
   const Diagnosis d = Diagnose(*model, model->Observations(), candidates, o.diagnose, progress);
-  if (d.termination == "invalid") return log << "error: " << d.message << "\n", kExitInvalidInput;
+  if (d.termination == DiagnosisTermination::kInvalid) return log << "error: " << d.message << "\n", kExitInvalidInput;
   if (!WriteDiagnosisOutputs(o.out_dir, RunInfo(o, study, context, candidates, d, *model), d, &error))
     return log << "error: " << error << "\n", kExitOutputError;
   std::ostringstream times;
@@ -82,7 +82,7 @@ int RunDiagnose(const DiagnoseCommandOptions& o, std::ostream& log) {
     log << "diagnose: " << d.message << "\ndiagnose: " << d.simulations << " simulations (" << d.simulations_reused
         << " from journal), " << d.wall_time_s << " s:" << times.str() << "\ndiagnose: outputs in " << o.out_dir
         << " (diagnosis.json)\n";
-  return d.termination == "failed" ? kExitRunFailed : kExitOk;
+  return d.termination == DiagnosisTermination::kFailed ? kExitRunFailed : kExitOk;
 }
 
 }  // namespace demcal::diagnose

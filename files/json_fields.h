@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "core/math/vec3.h"
+#include "objectives/common/input_limits.h"
 
 namespace demcal::workflow {
 
@@ -51,6 +52,10 @@ struct Range {
   }
   static Range Open(double lo, double hi, const char* unit = "") {
     return {lo, hi, true, true, unit};
+  }
+  // A limit of the input-limits table (objectives/common/input_limits.h).
+  static Range Of(const objectives::limits::Limit& limit, const char* unit = "") {
+    return {limit.lo, limit.hi, limit.lo_open, limit.hi_open, unit};
   }
   static Range Any() { return {}; }
   bool Contains(double v) const;

@@ -96,10 +96,6 @@ bool SameKey(const MeasurementRow& a, const MeasurementRow& b) {
 
 }  // namespace
 
-bool MeasurementRow::NumericCondition(const std::string& column, double* out) const {
-  return calibrate::ConditionNumber(conditions, column, out);
-}
-
 bool LoadMeasurementTable(const std::string& path, MeasurementTable* out, std::string* error) {
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) return *error = path + ": cannot read the measurement table", false;

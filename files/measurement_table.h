@@ -36,8 +36,6 @@ struct MeasurementRow {
   std::string provenance;  // measured, inferred, synthetic
   std::string source;
   bool HasUncertainty() const { return uncertainty > 0; }
-  // A condition as a number; false when absent or not a number.
-  bool NumericCondition(const std::string& column, double* out) const;
 };
 
 struct MeasurementTable {

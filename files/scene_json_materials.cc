@@ -4,8 +4,11 @@
 #include "files/scene_json_sections.h"
 #include "core/bodies/clump_shapes.h"
 #include "core/contact/rolling_model.h"
+#include "objectives/common/input_limits.h"
 
 namespace demcal::workflow::internal {
+
+namespace limits = objectives::limits;
 namespace {
 
 using core::PairParameters;
@@ -57,7 +60,7 @@ void ParseClump(JsonFields& f, core::Species* sp, JsonStatus* status) {
     core::Vec3 axes;
     int64_t n = 0;
     e.Vector("semi_axes", &axes, kRequired);
-    e.Integer("sphere_count", &n, kRequired, Range::Closed(1, 5));
+    e.Integer("sphere_count", &n, kRequired, Range::Of(limits::kClumpSpheres));
     if (!e.ok()) return;
     if (!(axes.x >= axes.y && axes.y >= axes.z && axes.z > 0))
       return e.Fail("semi_axes", "must be [a, b, c] with a >= b >= c > 0");

@@ -162,9 +162,10 @@ void Report(ShapeApproximation* out) {
 bool ApproximateEllipsoid(const Vec3& semi_axes_m, int n_spheres, ShapeApproximation* out,
                           std::string* error) {
   const double a = semi_axes_m.x, b = semi_axes_m.y, c = semi_axes_m.z;
-  if (n_spheres < 1 || n_spheres > 5) {
+  if (n_spheres < 1 || n_spheres > kMaxEllipsoidSpheres) {
     std::ostringstream os;
-    os << "ApproximateEllipsoid: n_spheres = " << n_spheres << " must be in 1..5";
+    os << "ApproximateEllipsoid: n_spheres = " << n_spheres << " must be in 1.."
+       << kMaxEllipsoidSpheres;
     return Fail(error, os.str());
   }
   if (!IsFinite(semi_axes_m) || !(c > 0) || b < c || a < b) {

@@ -45,6 +45,9 @@ struct ShapeApproximation {
   std::string construction;
 };
 
+// The most spheres ApproximateEllipsoid chains into one shape.
+inline constexpr int kMaxEllipsoidSpheres = 5;
+
 // Approximates the ellipsoid with semi-axes a ≥ b ≥ c > 0 (along x, y, z) by n = 1..5 spheres on
 // the x axis whose union has exactly the ellipsoid's volume. See clump_shapes.cc for the
 // construction. Errors: n out of range, semi-axes not finite/positive/sorted.

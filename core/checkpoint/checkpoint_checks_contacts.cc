@@ -1,7 +1,7 @@
 // The restored-state checks of a checkpoint, part 2: the neighbour list, the layout of fixed
 // spheres, pair contact histories and wall candidates with their histories. Rows, partners,
 // reverse index and wall indices are all checked against the particle and wall counts, so the
-// force loop never follows a damaged index (the memory errors of issue 12).
+// force loop never follows a damaged index (which would read or write out of bounds).
 #include <cmath>
 #include <string>
 

@@ -71,9 +71,6 @@ class ContactForces {
   bool CheckRestored(const NeighbourList& list, size_t particles, const std::vector<Wall>& walls,
                      std::string* error) const;
 
-  const std::vector<ContactHistory>& PairHistory() const { return pair_history_; }
-  std::vector<ContactHistory>& MutablePairHistory() { return pair_history_; }
-
  private:
   template <class Model>
   bool EvaluatePair(const Particles& p, const InteractionTable& table, const Model& model,

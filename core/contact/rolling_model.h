@@ -17,9 +17,9 @@ using RollingModel = std::variant<RollingNone, RollingCdt, RollingEpsd>;
 //  kNet: the compressive force the contact transmits, max(0, F_JKR) (default). At zero load an
 //    adhesive contact then has no rolling limit beyond the dashpot/spring, as a smooth sphere.
 //  kRepulsive: the repulsive Hertz part 4E*a³/(3R*), as the Coulomb limit. At zero load this is
-//    4× the pull-off force, so μ_r R* × (4 F_c) locks rolling: measured 2026-12-02, EP spheres
-//    (μ_r 0.25, Γ 0.046 J/m², calibration fidelity) stand at 58.8 ± 1.8° and at Γ ≥ 0.1 J/m²
-//    as columns, where "net" gives 35.9 ± 0.8° (Alizadeh et al. 2018, EDEM: 37.6°).
+//    4× the pull-off force, so μ_r R* × (4 F_c) locks rolling: EP spheres (μ_r 0.25,
+//    Γ 0.046 J/m², calibration fidelity) stand at 58.8 ± 1.8° and at Γ ≥ 0.1 J/m² as columns,
+//    where "net" gives 35.9 ± 0.8° (Alizadeh et al. 2018, EDEM: 37.6°; bench/jkr_rolling_load.sh).
 enum class JkrRollingLoad { kNet, kRepulsive };
 
 struct RollingModelSpec {

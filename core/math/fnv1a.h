@@ -1,8 +1,9 @@
 #pragma once
 // Fnv1a64: the 64-bit FNV-1a hash (Fowler, Noll, Vo; offset basis 14695981039346656037, prime
-// 1099511628211), used for checkpoint checksums and scene fingerprints. Not cryptographic: it
-// detects corruption (any single changed byte always changes the digest, since each step is a
-// bijection of the state; other damage escapes with probability 2^-64), not forgery.
+// 1099511628211), used for checkpoint checksums, scene fingerprints and the calibration journal's
+// study fingerprint. Not cryptographic: it detects corruption (any single changed byte always
+// changes the digest, since each step is a bijection of the state; other damage escapes with
+// probability 2^-64), not forgery.
 //
 // Values are fed by their bytes (same build and machine type, like the checkpoint itself);
 // Field() takes arithmetic values one by one so structs never contribute padding bytes.
@@ -14,6 +15,8 @@
 //   uint64_t digest = h.digest();
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <string>
 #include <string_view>
 #include <type_traits>
 
@@ -50,6 +53,13 @@ inline uint64_t Fnv1a64Of(std::string_view bytes) {
   Fnv1a64 h;
   h.Bytes(bytes.data(), bytes.size());
   return h.digest();
+}
+
+// The digest of `bytes` as 16 lower-case hex digits (as written into journal headers).
+inline std::string Fnv1a64Hex(std::string_view bytes) {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(Fnv1a64Of(bytes)));
+  return text;
 }
 
 }  // namespace demcal::core

@@ -14,6 +14,7 @@
 #include "core/contact/jkr.h"
 #include "core/insertion/insertion.h"
 #include "core/math/random.h"
+#include "core/math/seed_streams.h"
 
 namespace demcal::core {
 namespace {
@@ -111,7 +112,7 @@ bool Simulation::Initialize(std::string* error) {
 }
 
 void Simulation::PlaceInitialParticles(std::string* error) {
-  Rng rng(DeriveSeed(scene_.seed, 0));
+  Rng rng(DeriveSeed(scene_.seed, kInitialParticlesStream));
   for (const ParticleSpec& p : scene_.particles) {
     const Species& sp = scene_.species[p.species];
     const double d = p.diameter_m > 0 ? p.diameter_m : sp.size.Sample(rng.Uniform());
@@ -122,7 +123,7 @@ void Simulation::PlaceInitialParticles(std::string* error) {
   for (size_t f = 0; f < scene_.fills.size(); ++f) {
     const FillSpec& fill = scene_.fills[f];
     const Species& sp = scene_.species[fill.species];
-    Rng fill_rng(DeriveSeed(scene_.seed, 1 + f));
+    Rng fill_rng(DeriveSeed(scene_.seed, kFillStreamBase + f));
     InsertionRequest q;
     q.region = fill.region;
     q.mixture = {{fill.species, sp.material, scene_.materials[sp.material].density_kg_m3, &sp.size, 1}};
@@ -151,7 +152,7 @@ void Simulation::CreateFactories() {
       mixture.push_back({s, sp.material, scene_.materials[sp.material].density_kg_m3, &scene_.species[s].size, 1});
     }
     factories_.emplace_back(spec, std::move(mixture), Norm(scene_.gravity_m_s2),
-                            DeriveSeed(scene_.seed, 1000 + f));
+                            DeriveSeed(scene_.seed, kFactoryStreamBase + f));
   }
 }
 

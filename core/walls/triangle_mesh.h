@@ -116,9 +116,7 @@ class TriangleMesh {
 
   Vec3 Vertex(int32_t v) const { return vertices_[v] + offset_; }
   const std::array<int32_t, 3>& TriangleVertices(int32_t t) const { return tri_vertices_[t]; }
-  const std::array<int32_t, 3>& TriangleEdges(int32_t t) const { return tri_edges_[t]; }
   const Vec3& TriangleNormal(int32_t t) const { return tri_[t].normal; }
-  int32_t TrianglePatch(int32_t t) const { return tri_patch_[t]; }
   const std::array<int32_t, 2>& EdgeVertices(int32_t e) const { return edge_vertices_[e]; }
   std::span<const int32_t> EdgeTriangles(int32_t e) const;
 

@@ -107,10 +107,6 @@ enum class TriangleRegion : uint8_t { kFace, kEdge0, kEdge1, kEdge2, kVertex0, k
 inline bool IsEdgeRegion(TriangleRegion r) {
   return r == TriangleRegion::kEdge0 || r == TriangleRegion::kEdge1 || r == TriangleRegion::kEdge2;
 }
-inline bool IsVertexRegion(TriangleRegion r) {
-  return r == TriangleRegion::kVertex0 || r == TriangleRegion::kVertex1 ||
-         r == TriangleRegion::kVertex2;
-}
 // Local index (0..2) of the edge or vertex named by an edge/vertex region.
 inline int RegionLocalIndex(TriangleRegion r) {
   return IsEdgeRegion(r) ? static_cast<int>(r) - 1 : static_cast<int>(r) - 4;

@@ -56,7 +56,7 @@ BaseCalibration StudyModel::CalibrateBase() {
   run_ += summary.replicates_run;
   reused_ += summary.replicates_reused;
   Pool(s);
-  base.termination = summary.termination;
+  base.termination = calibrate::TerminationName(summary.termination);
   base.message = summary.message;
   if (summary.best < 0) return base;
   const calibrate::Candidate& best = summary.candidates[summary.best];

@@ -5,18 +5,24 @@
 
 #include "diagnose/loop/candidate_step.h"
 #include "diagnose/loop/fit_state.h"
+#include "objectives/common/input_limits.h"
 
 namespace demcal::diagnose {
 
 bool DiagnoseOptions::IsValid(std::string* error) const {
-  if (!(significance > 0 && significance < 0.5))
-    return *error = "significance must be in (0, 0.5), got " + std::to_string(significance), false;
-  if (!(discrepancy_floor >= 0 && discrepancy_floor <= 10))
-    return *error = "discrepancy floor must be in [0, 10] single-run scatters, got " +
-                    std::to_string(discrepancy_floor), false;
-  if (dem_refits < 1 || dem_refits > 10) return *error = "refits must be in [1, 10]", false;
-  if (max_effects < 1 || max_effects > 6) return *error = "max effects must be in [1, 6]", false;
-  if (extra_refits < 0 || extra_refits > 20) return *error = "extra refits must be in [0, 20]", false;
+  namespace limits = objectives::limits;
+  if (!limits::kSignificance.Contains(significance))
+    return *error = "significance must be in " + limits::kSignificance.Text() + ", got " +
+                    std::to_string(significance), false;
+  if (!limits::kDiscrepancyFloor.Contains(discrepancy_floor))
+    return *error = "discrepancy floor must be in " + limits::kDiscrepancyFloor.Text() +
+                    " single-run scatters, got " + std::to_string(discrepancy_floor), false;
+  if (!limits::kDiagnoseRefits.Contains(dem_refits))
+    return *error = "refits must be in " + limits::kDiagnoseRefits.Text(), false;
+  if (!limits::kDiagnoseMaxEffects.Contains(max_effects))
+    return *error = "max effects must be in " + limits::kDiagnoseMaxEffects.Text(), false;
+  if (!limits::kDiagnoseExtraRefits.Contains(extra_refits))
+    return *error = "extra refits must be in " + limits::kDiagnoseExtraRefits.Text(), false;
   return true;
 }
 
@@ -50,11 +56,11 @@ void Finish(const std::vector<Observation>& observations, const FitState& fit, c
   d->after = WithPrediction(observations, fit.prediction, options.discrepancy_floor);
   d->gap_after = TestGap(d->after, fit.Fitted(), {options.significance});
   std::ostringstream m;
-  if (d->termination == "no_missing_effect") {
+  if (d->termination == DiagnosisTermination::kNoMissingEffect) {
     m << "no missing effect found: the base model fits within noise (" << d->gap_before.summary << ")";
-  } else if (d->termination == "effect_found") {
+  } else if (d->termination == DiagnosisTermination::kEffectFound) {
     m << "missing effect: " << Names(d->named, candidates) << "; after adding it " << d->gap_after.summary;
-  } else if (d->termination == "gap_remains") {
+  } else if (d->termination == DiagnosisTermination::kGapRemains) {
     m << "added " << Names(d->named, candidates) << " but a gap remains (" << d->gap_after.summary
       << "), not explained by the library";
   } else {
@@ -71,7 +77,11 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
   Diagnosis d;
   const auto start = Clock::now();
   std::string error;
-  if (!options.IsValid(&error)) return d.termination = "invalid", d.message = error, d;
+  if (!options.IsValid(&error)) {
+    d.termination = DiagnosisTermination::kInvalid;
+    d.message = error;
+    return d;
+  }
   if (progress) progress("calibrating the base model");
   d.base = model.CalibrateBase();
   d.phases.push_back({"base calibration", model.SimulationsRun(),
@@ -85,7 +95,8 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
   d.gap_before = TestGap(d.before, fit.Fitted(), {options.significance});
   if (progress) progress("base model: " + d.gap_before.summary);
   bool gap = d.gap_before.gap_detected;
-  d.termination = gap ? "gap_unexplained" : "no_missing_effect";
+  d.termination =
+      gap ? DiagnosisTermination::kGapUnexplained : DiagnosisTermination::kNoMissingEffect;
   while (gap && static_cast<int>(d.named.size()) < options.max_effects) {
     std::vector<int> remaining;
     for (int c = 0; c < static_cast<int>(candidates.size()); ++c)
@@ -98,7 +109,8 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
     d.steps.push_back(s.step);
     if (progress) progress("ranking: " + s.step.ranking.message);
     if (!s.has_winner) {
-      d.termination = d.named.empty() ? "gap_unexplained" : "gap_remains";
+      d.termination = d.named.empty() ? DiagnosisTermination::kGapUnexplained
+                                      : DiagnosisTermination::kGapRemains;
       break;
     }
     d.named.push_back(s.step.entries[s.step.ranking.winner].candidate);
@@ -106,7 +118,7 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
     const GapReport g = TestGap(WithPrediction(observations, fit.prediction, options.discrepancy_floor), fit.Fitted(),
                                 {options.significance});
     gap = g.gap_detected;
-    d.termination = gap ? "gap_remains" : "effect_found";
+    d.termination = gap ? DiagnosisTermination::kGapRemains : DiagnosisTermination::kEffectFound;
     if (progress) progress("with " + Names(d.named, candidates) + ": " + g.summary);
   }
   Finish(observations, fit, options, candidates, &d);

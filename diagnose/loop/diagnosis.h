@@ -1,7 +1,7 @@
 #pragma once
 // Diagnose: the discrepancy workflow (docs/diagnose.md; docs/design.md "The discrepancy workflow").
 //  1. Calibrate the base model (ForwardModel::CalibrateBase); standardised residuals per
-//     observation (observation.h) and the gap test (gap_test.h).
+//     observation (observation.h) and the gap test (gap_significance.h).
 //  2. No gap: stop, "no missing effect found".
 //  3. Else, per candidate effect not yet added: its signature — one simulated point, the
 //     current fit with the effect at its probe value (same seeds) — and a linearised
@@ -20,25 +20,27 @@
 // iteration, two plus at most extra_refits × (base parameters + 3) per refitted candidate.
 //
 //   Diagnosis d = Diagnose(model, observations, candidates, options);
-//   d.termination;  // "no_missing_effect", "effect_found", "gap_remains", "gap_unexplained"
+//   d.termination;  // kNoMissingEffect, kEffectFound, kGapRemains, kGapUnexplained
 //
 // Thread-safety: runs on the calling thread; the model parallelises.
 #include <functional>
 #include <string>
 #include <vector>
 
-#include "diagnose/gap/gap_test.h"
+#include "diagnose/gap/gap_significance.h"
+#include "diagnose/loop/diagnosis_termination.h"
 #include "diagnose/loop/forward_model.h"
 #include "diagnose/ranking/ranking.h"
 
 namespace demcal::diagnose {
 
+// Allowed ranges: objectives/common/input_limits.h (kSignificance, kDiscrepancyFloor, ...).
 struct DiagnoseOptions {
-  double significance = 0.01;    // the gap test's and the evidence's level, (0, 0.5)
-  double discrepancy_floor = 1;  // model-discrepancy floor, in single-run scatters, >= 0
-  int dem_refits = 2;            // candidates refitted by simulation per iteration, >= 1
-  int max_effects = 2;           // effects added at most, >= 1
-  int extra_refits = 4;          // re-centred refit points per refitted candidate beyond two, [0, 20]
+  double significance = 0.01;    // the gap test's and the evidence's level
+  double discrepancy_floor = 1;  // model-discrepancy floor, in single-run scatters
+  int dem_refits = 2;            // candidates refitted by simulation per iteration
+  int max_effects = 2;           // effects added at most
+  int extra_refits = 4;          // re-centred refit points per refitted candidate beyond two
   bool IsValid(std::string* error) const;
 };
 
@@ -67,7 +69,7 @@ struct PhaseTime {
 };
 
 struct Diagnosis {
-  std::string termination = "failed";
+  DiagnosisTermination termination = DiagnosisTermination::kFailed;
   std::string message = "Diagnose was not called";
   BaseCalibration base;
   std::vector<Observation> before;  // at the base calibration

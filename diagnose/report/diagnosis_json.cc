@@ -78,7 +78,7 @@ Json StepJson(const DiagnosisRunInfo& info, const DiagnosisStep& s) {
 Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
   Json j;
   j["format"] = "demcal-diagnosis/1";
-  j["termination"] = d.termination;
+  j["termination"] = DiagnosisTerminationName(d.termination);
   j["message"] = d.message;
   j["gap_detected"] = d.gap_before.gap_detected;
   j["chi2_per_dof_before"] = Number(d.gap_before.chi2_per_dof);

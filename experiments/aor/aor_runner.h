@@ -1,6 +1,6 @@
 #pragma once
 // The `demcal experiment aor` runner (aor_runner.cc): replicates of the file's run, their
-// tables and pictures, DIR/result.json; a process exit code (workflow/exit_codes.h).
+// tables and pictures, DIR/result.json; a process exit code (outputs/exit_codes.h).
 #include <ostream>
 
 #include "experiments/common/experiment_runner.h"

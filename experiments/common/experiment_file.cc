@@ -3,8 +3,11 @@
 #include "experiments/experiment_registry.h"
 #include "files/json_document.h"
 #include "files/scene_json_sections.h"
+#include "objectives/common/input_limits.h"
 
 namespace demcal::workflow {
+
+namespace limits = objectives::limits;
 
 namespace {
 
@@ -24,9 +27,11 @@ void ParseFidelity(const json& value, const std::string& path, objectives::Fidel
   JsonFields f(value, path, {"name", "size_scale", "stiffness_scale", "rayleigh_fraction"},
                status);
   f.String("name", &fidelity->name, kOptional);
-  f.Number("size_scale", &fidelity->size_scale, kOptional, Range::Closed(1, 20));
-  f.Number("stiffness_scale", &fidelity->stiffness_scale, kOptional, Range::LeftOpen(0, 1));
-  f.Number("rayleigh_fraction", &fidelity->rayleigh_fraction, kOptional, Range::LeftOpen(0, 1));
+  f.Number("size_scale", &fidelity->size_scale, kOptional, Range::Of(limits::kSizeScale));
+  f.Number("stiffness_scale", &fidelity->stiffness_scale, kOptional,
+           Range::Of(limits::kStiffnessScale));
+  f.Number("rayleigh_fraction", &fidelity->rayleigh_fraction, kOptional,
+           Range::Of(limits::kRayleighFraction));
 }
 
 bool ParseExperimentJson(const json& document, const std::string& source, ExperimentFile* out,
@@ -49,7 +54,7 @@ bool ParseExperimentJson(const json& document, const std::string& source, Experi
   top.String("description", &file.description, kOptional);
   top.Unsigned("seed", &file.seed, kOptional);
   int64_t replicates = file.replicates;
-  top.Integer("replicates", &replicates, kOptional, Range::Closed(1, 1000));
+  top.Integer("replicates", &replicates, kOptional, Range::Of(limits::kReplicates));
   file.replicates = static_cast<int>(replicates);
   internal::ParseMaterials(top, &file.model, &status);
   internal::ParseSpecies(top, &file.model, &status);

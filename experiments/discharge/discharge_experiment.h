@@ -1,5 +1,5 @@
 #pragma once
-// Funnel discharge experiment (issue 4; Alizadeh et al. 2018 section 3.3, Fig. 16): a conical
+// Funnel discharge experiment (Alizadeh et al. 2018 section 3.3, Fig. 16): a conical
 // hopper is filled with a feed while a gate closes its orifice; the gate opens at t0 (once the
 // fill has settled, or at a set time) and the mass that leaves through the orifice is recorded
 // per species over time until the hopper is empty, the flow stalls (a jam) or a time limit. The

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/math/random.h"
+#include "core/math/seed_streams.h"
 #include "experiments/discharge/sphere_mass_share.h"
 
 namespace demcal::objectives {
@@ -79,7 +80,7 @@ std::vector<core::ParticleSpec> PlacedFill(const core::Scene& model, const Disch
   std::vector<int> species;
   for (const FeedComponent& c : s.feed.components)
     species.insert(species.end(), PlacedCount(model, s.feed, c), c.species);
-  core::Rng rng(core::DeriveSeed(seed, 0x706c616365ull));  // "place"
+  core::Rng rng(core::DeriveSeed(seed, core::kHopperPlacementStream));
   for (size_t i = species.size(); i > 1; --i)  // Fisher–Yates
     std::swap(species[i - 1], species[static_cast<size_t>(rng.Uniform() * i)]);
   const std::vector<core::Vec3> sites =

@@ -4,13 +4,14 @@
 #include <cmath>
 
 #include "core/math/random.h"
+#include "core/math/seed_streams.h"
 
 namespace demcal::objectives {
 
 GranuleRecorder::GranuleRecorder(const GranuleRecorderOptions& options, uint64_t seed)
     : options_(options) {
   options_.stride = std::max(1, options_.stride);
-  offset_ = static_cast<int>(core::DeriveSeed(seed, 0x7261636b) % options_.stride);
+  offset_ = static_cast<int>(core::DeriveSeed(seed, core::kGranuleSampleStream) % options_.stride);
 }
 
 void GranuleRecorder::Pick(const Snapshot& snapshot) {

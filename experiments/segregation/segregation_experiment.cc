@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/math/random.h"
+#include "core/math/seed_streams.h"
 #include "core/simulation/simulation.h"
 #include "objectives/common/experiment_scene.h"
 #include "experiments/discharge/funnel_clock.h"
@@ -151,13 +152,13 @@ TrackedGranule SummariseTrack(const GranuleTrack& track, const Snapshot& heap,
 void Analyse(const core::Scene& model, const SegregationSettings& s, uint64_t seed,
              SegregationRun* out) {
   SegregationOptions options = s.segregation;
-  options.random.seed = core::DeriveSeed(seed, 0x5345);
+  options.random.seed = core::DeriveSeed(seed, core::kSegregationIndexStream);
   const int species = static_cast<int>(model.species.size());
   out->analysis = AnalyseSegregationHeap(out->heap, BinOptions(s), species, options, std::nullopt,
                                          &out->analysis_message);
   if (out->analysis) {
     SegregationFloorOptions floor = s.floor;
-    floor.seed = core::DeriveSeed(seed, 0x464c);
+    floor.seed = core::DeriveSeed(seed, core::kSegregationFloorStream);
     out->floor = RandomMixtureFloor(out->analysis->grid, out->heap, out->analysis->indices, floor,
                                     &out->analysis_message);
   }

@@ -3,17 +3,21 @@
 #include <cmath>
 #include <sstream>
 
+#include "objectives/common/input_limits.h"
+
 namespace demcal::objectives {
 
 bool Fidelity::IsValid(std::string* error) const {
   std::ostringstream os;
-  if (!(size_scale >= 1 && size_scale <= 20))
-    os << "fidelity.size_scale = " << size_scale << " is outside the allowed range [1, 20]";
-  else if (!(stiffness_scale > 0 && stiffness_scale <= 1))
-    os << "fidelity.stiffness_scale = " << stiffness_scale << " is outside the allowed range (0, 1]";
-  else if (!(rayleigh_fraction > 0 && rayleigh_fraction <= 1))
-    os << "fidelity.rayleigh_fraction = " << rayleigh_fraction
-       << " is outside the allowed range (0, 1]";
+  if (!limits::kSizeScale.Contains(size_scale))
+    os << "fidelity.size_scale = " << size_scale << " is outside the allowed range "
+       << limits::kSizeScale.Text();
+  else if (!limits::kStiffnessScale.Contains(stiffness_scale))
+    os << "fidelity.stiffness_scale = " << stiffness_scale << " is outside the allowed range "
+       << limits::kStiffnessScale.Text();
+  else if (!limits::kRayleighFraction.Contains(rayleigh_fraction))
+    os << "fidelity.rayleigh_fraction = " << rayleigh_fraction << " is outside the allowed range "
+       << limits::kRayleighFraction.Text();
   if (os.str().empty()) return true;
   if (error) *error = os.str();
   return false;

@@ -19,9 +19,10 @@ namespace demcal::objectives {
 
 struct Fidelity {
   std::string name = "full";
-  double size_scale = 1;         // ≥ 1 (coarse-graining), ≤ 20
-  double stiffness_scale = 1;    // (0, 1]
-  double rayleigh_fraction = 0.2;  // Δt as a fraction of the Rayleigh time, (0, 1]
+  // Allowed ranges: objectives/common/input_limits.h (kSizeScale, kStiffnessScale, ...).
+  double size_scale = 1;         // ≥ 1 (coarse-graining)
+  double stiffness_scale = 1;    // ≤ 1 (softer than real)
+  double rayleigh_fraction = 0.2;  // Δt as a fraction of the Rayleigh time
   bool IsValid(std::string* error) const;
 };
 

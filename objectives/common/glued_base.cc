@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/math/random.h"
+#include "core/math/seed_streams.h"
 
 namespace demcal::objectives {
 
@@ -11,7 +12,7 @@ GluedBaseSpec GluedBaseOfFeed(const core::Scene& model, const Feed& feed, uint64
   base.species = feed.components.front().species;
   const core::SizeDistribution& size = model.species[base.species].size;
   base.diameter_m = 0.5 * (size.MinDiameter() + size.MaxDiameter());
-  base.seed = core::DeriveSeed(seed, 77);
+  base.seed = core::DeriveSeed(seed, core::kGluedBaseStream);
   return base;
 }
 

@@ -6,6 +6,7 @@
 #include <tbb/task_arena.h>
 
 #include "core/math/random.h"
+#include "core/math/seed_streams.h"
 
 namespace demcal::objectives {
 
@@ -26,7 +27,7 @@ Summary Summarise(const std::vector<double>& values) {
 }
 
 uint64_t ReplicateSeed(uint64_t base_seed, int replicate) {
-  return core::DeriveSeed(base_seed, 1000 + static_cast<uint64_t>(replicate));
+  return core::DeriveSeed(base_seed, core::kReplicateStreamBase + static_cast<uint64_t>(replicate));
 }
 
 int ThreadsPerReplicate(int count, int workers) {

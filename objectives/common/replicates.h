@@ -3,8 +3,9 @@
 // side by side (one simulation per core, each single-threaded: small DEM runs scale better that
 // way than one run on many threads), and summarised as mean ± standard error.
 //
-// Seeds: replicate r uses DeriveSeed(base_seed, r), the same for every candidate parameter set
-// (common random numbers), so differences between candidates are not packing noise.
+// Seeds: replicate r uses DeriveSeed(base_seed, kReplicateStreamBase + r)
+// (core/math/seed_streams.h), the same for every candidate parameter set (common random numbers),
+// so differences between candidates are not packing noise.
 #include <cstdint>
 #include <functional>
 #include <vector>

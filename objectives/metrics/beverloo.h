@@ -1,8 +1,8 @@
 #pragma once
 // Beverloo's law for the mass flow of coarse cohesionless grains through a circular orifice,
 //   W = C ρ_b √g (D − k d)^{5/2}
-// (Beverloo, Leniger & van de Velde 1961, Chem. Eng. Sci. 15:260; C ≈ 0.55–0.65, k ≈ 1–2; the
-// funnel-discharge validation of issue 4). FitBeverloo fits C and k to flows measured at several
+// (Beverloo, Leniger & van de Velde 1961, Chem. Eng. Sci. 15:260; C ≈ 0.55–0.65, k ≈ 1–2; it
+// validates the funnel-discharge experiment). FitBeverloo fits C and k to flows measured at several
 // orifice diameters D: k by a 1-D minimisation over 0 ≤ k < min D/d, C in closed form for each k.
 // Residuals are relative, (W_fit − W)/W, so every orifice counts alike whatever its flow.
 // Pure function, SI units, thread-safe.

@@ -63,7 +63,6 @@ struct FaceBin {
   int col = 0;  // 0 = leftmost bin of its row
   double x_min_m = 0, x_max_m = 0;
   double z_min_m = 0, z_max_m = 0;
-  double AreaM2() const { return (x_max_m - x_min_m) * (z_max_m - z_min_m); }
 };
 
 // Where a point falls: face bin index (into HeapBinGrid::face_bins) and layer; −1 when outside.

@@ -3,6 +3,7 @@
 #include <numbers>
 
 #include "core/math/random.h"
+#include "core/math/seed_streams.h"
 #include "objectives/metrics/coefficient_of_variation.h"
 
 namespace demcal::objectives {
@@ -86,12 +87,13 @@ std::optional<RegionSegregation> AnalyseRegion(const BinCounts& counts, const La
   RegionSegregation region{range, {}};
   for (int s = 0; s < counts.species_count; ++s) {
     SpeciesSegregation species{s, {}, {}};
-    const uint64_t stream = core::DeriveSeed(options.random.seed, 2 * static_cast<uint64_t>(s));
+    const uint64_t stream = core::DeriveSeed(options.random.seed,
+                                             core::kSpeciesStreamStride * static_cast<uint64_t>(s));
     species.number = Index(Sample(bins, s, Basis::kNumber, 0, 0), options, stream);
     const double volume = granule_volumes_m3[s];
     if (volume > 0) {
       species.mass = Index(Sample(bins, s, Basis::kMass, volume, options.packing_fraction), options,
-                           core::DeriveSeed(stream, 1));
+                           core::DeriveSeed(stream, core::kMassBasisSubstream));
     } else {
       species.mass.note = "no granule volume for species " + std::to_string(s);
       if (species.number.mean_fraction > 0) return fail(species.mass.note);

@@ -65,7 +65,7 @@ TEST_CASE(
   const CalibrationSummary s = Calibrate(model, Space(), Measured(1, 1), Ceres());
   INFO(s.BriefReport(Space()));
   REQUIRE(s.best >= 0);
-  CHECK(s.termination == "within_noise");
+  CHECK(s.termination == Termination::kWithinNoise);
   REQUIRE(s.estimates.size() == 2);
   for (const ParameterEstimate& e : s.estimates) {
     CHECK_FALSE(e.identifiable);
@@ -94,7 +94,7 @@ TEST_CASE(
   LinearTargets both = Model(1, 2);
   const CalibrationSummary s2 = Calibrate(both, Space(), Measured(1, 2), Ceres());
   INFO(s2.BriefReport(Space()));
-  REQUIRE(s2.termination == "within_noise");
+  REQUIRE(s2.termination == Termination::kWithinNoise);
   for (int k = 0; k < 2; ++k) {
     CHECK(s2.estimates[k].identifiable);
     CHECK(s2.estimates[k].sigma == Approx(g[0].sigma_after[k]).epsilon(0.05));
@@ -113,7 +113,7 @@ TEST_CASE(
   for (uint64_t seed = 1; seed <= kSeeds; ++seed) {
     LinearTargets model = Model(seed, 2);
     const CalibrationSummary s = Calibrate(model, Space(), Measured(seed, 2), Ceres());
-    REQUIRE(s.termination == "within_noise");
+    REQUIRE(s.termination == Termination::kWithinNoise);
     for (int k = 0; k < 2; ++k) {
       REQUIRE(std::isfinite(s.estimates[k].sigma));
       recovered[k].push_back(s.estimates[k].value);
@@ -156,7 +156,7 @@ TEST_CASE("the driver asks in batches, is deterministic, and treats NaN as infea
       CHECK_FALSE(c.trial.ok);
     }
   CHECK(nan > 0);  // the start (mu_s = 0.9) is one
-  CHECK(sa.termination == "within_noise");
+  CHECK(sa.termination == Termination::kWithinNoise);
   CHECK(sa.candidates[sa.best].parameters[0] <= 0.8);
 }
 
@@ -172,6 +172,6 @@ TEST_CASE("driver options and targets are checked before anything runs", "[unit]
   CalibrationOptions o = Ceres();
   o.optimiser_options.batch_size = 0;
   CHECK(Calibrate(m, Space(), Measured(1, 2), o).message.find("batch_size") != std::string::npos);
-  CHECK(Calibrate(m, Space(), {}, Ceres()).termination == "invalid");
+  CHECK(Calibrate(m, Space(), {}, Ceres()).termination == Termination::kInvalid);
   CHECK(m.batch_sizes.empty());
 }

@@ -57,7 +57,7 @@ TEST_CASE("calibration twin: bracket recovers the rolling friction that made the
   const double truth = 0.3, measured = angle.base + angle.per_rolling * truth;  // 33 deg
   const CalibrationSummary s = Run(angle, RollingSpace(), measured, {});
   INFO(s.BriefReport(RollingSpace()));
-  REQUIRE(s.termination == "within_noise");
+  REQUIRE(s.termination == Termination::kWithinNoise);
   REQUIRE(s.estimates.size() == 1);
   CHECK(Sigma(s, 0) > 0);
   CHECK(std::abs(BestParameters(s)[0] - truth) <= 2 * Sigma(s, 0));
@@ -69,7 +69,7 @@ TEST_CASE("calibration twin: bracket recovers the rolling friction that made the
 TEST_CASE("calibration says when the measurement is out of the bounds' reach", "[unit][calibrate]") {
   SyntheticAngle angle;
   const CalibrationSummary s = Run(angle, RollingSpace(), 80.0, {});  // needs mu_r ≈ 1.08 > 0.9
-  CHECK(s.termination == "out_of_range");
+  CHECK(s.termination == Termination::kOutOfRange);
   CHECK(s.message.find("outside the range") != std::string::npos);
   CHECK(BestParameters(s)[0] == Approx(0.9));  // the nearest candidate: the bound
 }
@@ -88,7 +88,7 @@ TEST_CASE("calibration resumes from its journal without repeating finished runs"
   {
     EvaluationJournal journal;
     REQUIRE(journal.Open(path, "twin", &error));
-    CHECK(Run(first, RollingSpace(), measured, cut, &journal).termination == "budget");
+    CHECK(Run(first, RollingSpace(), measured, cut, &journal).termination == Termination::kBudget);
   }
   EvaluationJournal journal;
   REQUIRE(journal.Open(path, "twin", &error));
@@ -105,7 +105,7 @@ TEST_CASE("failed runs are a status: the bracket retreats from a bound that give
   SyntheticAngle angle;
   angle.fail_above_rolling = 0.6;  // the upper bound (0.9) never settles; 0.5 does
   const CalibrationSummary s = Run(angle, RollingSpace(), 42.0, {});  // truth mu_r = 0.45
-  CHECK(s.termination == "within_noise");
+  CHECK(s.termination == Termination::kWithinNoise);
   CHECK(s.message.find("probed nearer the start") != std::string::npos);
   bool saw_failure = false;
   for (const Candidate& c : s.candidates)
@@ -115,7 +115,7 @@ TEST_CASE("failed runs are a status: the bracket retreats from a bound that give
 
   angle.fail_above_rolling = 0.0;  // nothing ever settles
   const CalibrationSummary none = Run(angle, RollingSpace(), 42.0, {});
-  CHECK(none.termination == "failed");
+  CHECK(none.termination == Termination::kFailed);
   CHECK(none.best == -1);
 }
 
@@ -129,7 +129,7 @@ TEST_CASE("two parameters against one measurement: matched, but reported as a va
   options.optimiser_options.max_evaluations = 40;
   const CalibrationSummary s = Run(angle, space, 40.0, options);
   INFO(s.identifiability.summary);
-  CHECK(s.termination == "within_noise");
+  CHECK(s.termination == Termination::kWithinNoise);
   REQUIRE(s.estimates.size() == 2);
   for (size_t k = 0; k < 2; ++k) {
     CHECK_FALSE(s.estimates[k].identifiable);
@@ -142,7 +142,7 @@ TEST_CASE("calibration options are checked before anything runs", "[unit][calibr
   SyntheticAngle angle;
   CalibrationOptions options;
   options.optimiser = "simulated_annealing";
-  CHECK(Run(angle, RollingSpace(), 30.0, options).termination == "invalid");
+  CHECK(Run(angle, RollingSpace(), 30.0, options).termination == Termination::kInvalid);
   options.optimiser = "bracket";
   options.optimiser_options.max_evaluations = 0;
   CHECK(Run(angle, RollingSpace(), 30.0, options).message.find("max_evaluations") != std::string::npos);
@@ -159,7 +159,7 @@ TEST_CASE("the batch optimisers resume from the journal without repeating finish
     const double measured = 38.0;  // mu_r ≈ 0.383
     SyntheticAngle uninterrupted;
     const CalibrationSummary whole = Run(uninterrupted, RollingSpace(), measured, options);
-    REQUIRE(whole.termination == "within_noise");
+    REQUIRE(whole.termination == Termination::kWithinNoise);
     REQUIRE(whole.candidates.size() >= 3);
     CHECK(std::abs(BestParameters(whole)[0] - (measured - 15) / 60) <= 2 * Sigma(whole, 0));
 

@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "core/io/scratch_dir.h"
+#include "core/math/fnv1a.h"
 
 using demcal::calibrate::EvaluationJournal;
 using demcal::calibrate::ReplicateRecord;
@@ -84,9 +85,48 @@ TEST_CASE("journal of another study or a foreign file is refused", "[unit][calib
   CHECK(error.find(junk + ":1") != std::string::npos);
 }
 
+TEST_CASE("journal of an older format is refused with what to do", "[unit][calibrate]") {
+  demcal::testing::ScratchDir dir("journal_format");
+  const std::string path = dir.str("journal.jsonl");
+  for (const char* format : {"demcal-journal/1", "demcal-journal/2"}) {
+    std::ofstream(path, std::ios::trunc)
+        << R"({"format": ")" << format << R"(", "study": "f"})" << "\n"
+        << R"({"parameters": [0.5], "replicate": 0, "seed": 1, "status": "ok", "value": 3})" << "\n";
+    EvaluationJournal j;
+    std::string error;
+    CHECK_FALSE(j.Open(path, "f", &error));
+    CHECK(error == path + " was written by an older demcal (" + format +
+                       "); move it away or use a new --out to start afresh");
+  }
+  std::ofstream(path, std::ios::trunc) << R"({"format": "demcal-journal/9", "study": "f"})" << "\n";
+  EvaluationJournal newer;
+  std::string error;
+  CHECK_FALSE(newer.Open(path, "f", &error));
+  CHECK_THAT(error, Catch::Contains("written by a newer demcal (demcal-journal/9)"));
+}
+
+// The study fingerprint in a journal header is core::Fnv1a64Hex of the study's description
+// (workflow/calibration/study_runs.cc); the published FNV-1a 64 test vectors (Fowler, Noll, Vo,
+// http://www.isthe.com/chongo/tech/comp/fnv/) pin the offset basis a truncated constant got wrong.
+TEST_CASE("journal fingerprint is the FNV-1a 64 digest of the same bytes", "[unit][calibrate]") {
+  using demcal::core::Fnv1a64Hex;
+  using demcal::core::Fnv1a64Of;
+  CHECK(Fnv1a64Hex("") == "cbf29ce484222325");  // the offset basis 14695981039346656037
+  CHECK(Fnv1a64Hex("a") == "af63dc4c8601ec8c");
+  CHECK(Fnv1a64Hex("foobar") == "85944171f73967e8");
+  const std::string study = "{\"experiment\":\"aor\"}|seed=7|clumps=0";
+  char expected[17];
+  std::snprintf(expected, sizeof expected, "%016llx",
+                static_cast<unsigned long long>(Fnv1a64Of(study)));
+  CHECK(Fnv1a64Hex(study) == expected);
+  demcal::core::Fnv1a64 streamed;
+  streamed.Bytes(study.data(), study.size());
+  CHECK(streamed.digest() == Fnv1a64Of(study));
+}
+
 TEST_CASE("journal records are validated line by line on loading", "[unit][calibrate]") {
   demcal::testing::ScratchDir dir("journal_validation");
-  const std::string header = R"({"format": "demcal-journal/2", "study": "f"})";
+  const std::string header = R"({"format": "demcal-journal/3", "study": "f"})";
   const std::string good = R"({"parameters": [0.5], "replicate": 0, "seed": 1, "status": "ok", "value": 30.0})";
   auto load = [&](const std::string& body) {
     std::ofstream(dir.str("j.jsonl"), std::ios::trunc) << header << "\n" << body << "\n";

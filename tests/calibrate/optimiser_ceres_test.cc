@@ -36,7 +36,7 @@ TEST_CASE("ceres matches a linear two-target model within noise, asking for diff
   Recorder rec{[](const std::vector<double>& u) { return Linear(u, 3); }};
   const OptimiserResult r = CeresOptimise(rec.Function(), {0.1, 0.9}, {.max_evaluations = 40});
   INFO(r.message);
-  REQUIRE(r.termination == "within_noise");
+  REQUIRE(r.termination == Termination::kWithinNoise);
   CHECK(Linear(r.best_unit, 3).WithinNoise());
   CHECK(r.evaluations <= 40);
   CHECK(r.evaluations == static_cast<int>(rec.Points().size()));
@@ -58,7 +58,7 @@ TEST_CASE("ceres with more targets than parameters searches on past a match unti
   const OptimiserResult r = CeresOptimise(Recorder{model}.Function(), {0.3}, {.max_evaluations = 40});
   INFO(r.message);
   CHECK(model({0.3}).WithinNoise());  // the start (2 σ off) already matches: 6 · 0.64 + 1.5 = 5.34 ≤ 7.04
-  CHECK(r.termination == "within_noise");
+  CHECK(r.termination == Termination::kWithinNoise);
   REQUIRE(r.best_unit.size() == 1);
   CHECK(r.best_unit[0] == Approx(0.5).margin(0.01));  // 0.1 σ
 }
@@ -88,7 +88,7 @@ TEST_CASE("ceres solves a nonlinear model and stays inside the bounds", "[unit][
   Recorder rec{model};
   const OptimiserResult r = CeresOptimise(rec.Function(), {0.9, 0.1}, {.max_evaluations = 60});
   INFO(r.message);
-  REQUIRE(r.termination == "within_noise");
+  REQUIRE(r.termination == Termination::kWithinNoise);
   CHECK(model(r.best_unit).WithinNoise());
   CHECK(InCube(rec.Points()));
 }
@@ -102,7 +102,7 @@ TEST_CASE("ceres treats failed samples as infeasible and still finds the match",
   }};
   const OptimiserResult r = CeresOptimise(rec.Function(), {0.2, 0.2}, {.max_evaluations = 60});
   INFO(r.message);
-  CHECK(r.termination == "within_noise");
+  CHECK(r.termination == Termination::kWithinNoise);
   CHECK(r.best_unit[0] <= 0.75);
   CHECK(Linear(r.best_unit, 2).WithinNoise());
 }
@@ -119,7 +119,7 @@ TEST_CASE("ceres is deterministic: the same answers give the same candidates",
 TEST_CASE("ceres stops at the budget and reports it", "[unit][calibrate]") {
   Recorder rec{[](const std::vector<double>& u) { return Linear(u, 5); }};
   const OptimiserResult r = CeresOptimise(rec.Function(), {0.0, 1.0}, {.max_evaluations = 4});
-  CHECK(r.termination == "budget");
+  CHECK(r.termination == Termination::kBudget);
   CHECK(r.evaluations <= 4);
   CHECK(static_cast<int>(rec.Points().size()) == r.evaluations);
 }
@@ -144,7 +144,7 @@ TEST_CASE("ceres covariance: finite for two targets, refused on a valley", "[uni
     return {true, {10 * (u[0] - 0.5) + 5 * (u[1] - 0.5)}, {0.1}};
   };
   const OptimiserResult v = CeresOptimise(Batched(valley), {0.05, 0.05}, {.max_evaluations = 40});
-  CHECK(v.termination == "within_noise");
+  CHECK(v.termination == Termination::kWithinNoise);
   CHECK(v.covariance_unit.empty());
   CHECK(v.covariance_note.find("rank-deficient") != std::string::npos);
 }

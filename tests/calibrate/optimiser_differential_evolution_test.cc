@@ -27,14 +27,14 @@ TEST_CASE("differential_evolution finds the match of a two-basin problem a local
           "[unit][calibrate]") {
   const std::vector<double> start{0.25, 0.3};
   const OptimiserResult local = NloptBobyqa(Batched(TwoBasins), start, {.max_evaluations = 60});
-  CHECK(local.termination != "within_noise");  // the problem really is multi-modal
+  CHECK(local.termination != Termination::kWithinNoise);  // the problem really is multi-modal
   CHECK(local.best_unit[0] < 0.5);
 
   Recorder rec{TwoBasins};
   const OptimiserResult r = DifferentialEvolution(
       rec.Function(), start, {.max_evaluations = 200, .batch_size = 6, .seed = 11});
   INFO(r.message);
-  REQUIRE(r.termination == "within_noise");
+  REQUIRE(r.termination == Termination::kWithinNoise);
   CHECK(TwoBasins(r.best_unit).WithinNoise());
   CHECK(r.best_unit[0] > 0.6);
   CHECK(r.evaluations <= 200);
@@ -64,7 +64,7 @@ TEST_CASE("differential_evolution keeps to the budget and steps over failed samp
       DifferentialEvolution(rec.Function(), {0.3, 0.3}, {.max_evaluations = 150, .batch_size = 5});
   CHECK(static_cast<int>(rec.Points().size()) == r.evaluations);
   CHECK(r.evaluations <= 150);
-  CHECK(r.termination == "within_noise");
+  CHECK(r.termination == Termination::kWithinNoise);
   CHECK(r.best_unit[1] >= 0.5);
 
   Recorder cut{[](const std::vector<double>& u) {  // never within noise
@@ -76,7 +76,7 @@ TEST_CASE("differential_evolution keeps to the budget and steps over failed samp
       DifferentialEvolution(cut.Function(), {0.3, 0.3}, {.max_evaluations = 13, .batch_size = 5});
   CHECK(b.evaluations == 13);  // generations of 10, the second cut to the budget
   CHECK(cut.batches.back().size() == 3);
-  CHECK(b.termination == "budget");
+  CHECK(b.termination == Termination::kBudget);
 }
 
 TEST_CASE("differential_evolution with more targets than parameters searches on past a match",
@@ -93,7 +93,7 @@ TEST_CASE("differential_evolution with more targets than parameters searches on 
   const OptimiserResult r = DifferentialEvolution(Recorder{model}.Function(), {0.3},
                                                   {.max_evaluations = 300, .batch_size = 6, .seed = 5});
   INFO(r.message);
-  CHECK(r.termination == "within_noise");
+  CHECK(r.termination == Termination::kWithinNoise);
   REQUIRE(r.best_unit.size() == 1);
   CHECK(r.best_unit[0] == Approx(0.5).margin(0.01));  // 0.1 σ
   CHECK(r.evaluations > 6);                            // not stopped in the first generation
@@ -105,7 +105,7 @@ TEST_CASE("differential_evolution with more targets than parameters searches on 
   const OptimiserResult s = DifferentialEvolution(Recorder{settling}.Function(), {0.3},
                                                   {.max_evaluations = 300, .batch_size = 6, .seed = 5});
   INFO(s.message);
-  CHECK(s.termination == "within_noise");
+  CHECK(s.termination == Termination::kWithinNoise);
   CHECK(settling(s.best_unit).Settled(1));
   CHECK(std::fabs(s.best_unit[0] - 0.5) <= 0.1);
   CHECK(s.evaluations < 300);

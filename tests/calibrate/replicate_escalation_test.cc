@@ -53,7 +53,7 @@ TEST_CASE("a noisy candidate gets the replicates that make it as precise as the 
   const CalibrationSummary s =
       Calibrate(evaluator, space, {{"angle", "angle_deg", measured, 0.35, "synthetic"}}, options);
   INFO(s.BriefReport(space));
-  REQUIRE(s.termination == "within_noise");
+  REQUIRE(s.termination == Termination::kWithinNoise);
   const Candidate& best = s.candidates[s.best];
   CHECK(best.replicates_added > 0);
   CHECK(best.trial.noise[0] <= kMatchNoise);
@@ -72,7 +72,7 @@ TEST_CASE("a noisy candidate gets the replicates that make it as precise as the 
     once.optimiser_options.max_evaluations = 4;
     const CalibrationSummary f =
         Calibrate(fixed, space, {{"angle", "angle_deg", measured, 0.35, "synthetic"}}, once);
-    CHECK(f.termination != "within_noise");
+    CHECK(f.termination != Termination::kWithinNoise);
     CHECK(f.candidates[0].trial.Inconclusive());
   }
 }

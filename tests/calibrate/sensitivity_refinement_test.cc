@@ -75,10 +75,10 @@ TEST_CASE("a match at the start with noisy sensitivities is refined to a finite 
   for (uint64_t seed = 1; seed <= 5; ++seed) {
     INFO("seed " << seed);
     const CalibrationSummary plain = Run(0, seed);
-    REQUIRE(plain.termination == "within_noise");
+    REQUIRE(plain.termination == Termination::kWithinNoise);
     infinite_without += !std::isfinite(plain.estimates[0].sigma) || !std::isfinite(plain.estimates[1].sigma);
     const CalibrationSummary refined = Run(2, seed);
-    REQUIRE(refined.termination == "within_noise");
+    REQUIRE(refined.termination == Termination::kWithinNoise);
     CHECK(refined.candidates[refined.best].parameters == plain.candidates[plain.best].parameters);
     for (int k = 0; k < 2; ++k) {
       INFO("parameter " << k << " sigma " << refined.estimates[k].sigma << " analytic " << sigma_true[k]);
@@ -121,7 +121,7 @@ TEST_CASE("refinement re-runs its stencil at the most replicates, lowering the s
   for (uint64_t seed = 1; seed <= 5; ++seed) {
     INFO("seed " << seed);
     const CalibrationSummary plain = run(seed, false), deep = run(seed, true);
-    REQUIRE(deep.termination == "within_noise");
+    REQUIRE(deep.termination == Termination::kWithinNoise);
     CHECK(deep.candidates[deep.best].parameters == plain.candidates[plain.best].parameters);
     infinite_plain += !std::isfinite(plain.estimates[0].sigma) || !std::isfinite(plain.estimates[1].sigma);
     infinite_deep += !std::isfinite(deep.estimates[0].sigma) || !std::isfinite(deep.estimates[1].sigma);

@@ -1,4 +1,4 @@
-// The discrepancy workflow on the DEM (issue 14, proof): five datasets made by demcal with one
+// The discrepancy workflow on the DEM (proof): five datasets made by demcal with one
 // effect hidden from the base model (or none), in the tidy measurement-table format with
 // measurement-like noise (datasets/synthetic/diagnose_*, recipe scripts/make_diagnose_twins.py),
 // diagnosed through the same entry point as `demcal diagnose` from the study and its table

@@ -56,6 +56,17 @@ TEST_CASE("ranges are checked and described with open and closed ends", "[unit]"
   CHECK(Range::Closed(0, 1e3, "J/m2").Describe() == "[0, 1000] J/m2");
 }
 
+TEST_CASE("a range of the input-limits table reads as the table writes it", "[unit]") {
+  namespace limits = demcal::objectives::limits;
+  for (const limits::Limit& l : {limits::kSizeScale, limits::kStiffnessScale,
+                                 limits::kUnitTolerance, limits::kReplicates}) {
+    CHECK(Range::Of(l).Describe() == l.Text());
+    CHECK(Range::Of(l).Contains(l.hi) == l.Contains(l.hi));
+    CHECK(Range::Of(l).Contains(l.lo) == l.Contains(l.lo));
+  }
+  CHECK(Range::Of(limits::kSizeScale, "m").Describe() == "[1, 20] m");
+}
+
 TEST_CASE("integers accept integral floats (1e4) and reject fractions", "[unit]") {
   JsonStatus ok_status;
   const json good = json::parse(R"({"count": 1e4, "seed": 7})");

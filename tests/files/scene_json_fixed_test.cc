@@ -1,4 +1,4 @@
-// particles[].fixed in scene files (issue 11): a frozen base can be loaded from a file, the
+// particles[].fixed in scene files: a frozen base can be loaded from a file, the
 // spheres marked fixed stay where they are under gravity, and bad values are refused by name.
 #include <catch2/catch.hpp>
 #include <filesystem>

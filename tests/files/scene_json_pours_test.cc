@@ -1,4 +1,4 @@
-// Scene files for pours and discharges (issue 11): sinks, cylinder fills, walls removed at a
+// Scene files for pours and discharges: sinks, cylinder fills, walls removed at a
 // time, factory regions that move or follow the heap, the mass-vs-time output; bad values are
 // refused by name.
 #include <catch2/catch.hpp>

@@ -41,7 +41,7 @@ Json Provenance(const CalibrationRunInfo& info, const CalibrationSummary& s) {
   Json j{{"demcal_version", kVersion}, {"study_file", st.source}, {"experiments", experiments},
          {"targets", targets}, {"fidelity", FidelityJson(info.fidelity)}, {"seed", info.seed},
          {"replicates", info.replicates}, {"optimiser", st.options.optimiser},
-         {"termination", s.termination}};
+         {"termination", calibrate::TerminationName(s.termination)}};
   if (info.clump_count > 0)
     j["clump_count"] = {{"species", st.clump_count.species}, {"count", info.clump_count}};
   return j;
@@ -82,7 +82,9 @@ Json GainsJson(const std::vector<calibrate::TargetGain>& gains) {
 
 Json ResultJson(const CalibrationRunInfo& info, const CalibrationSummary& s) {
   const StudyFile& st = *info.study;
-  Json j{{"format", "demcal-calibration/2"}, {"termination", s.termination}, {"message", s.message}};
+  Json j{{"format", "demcal-calibration/2"},
+         {"termination", calibrate::TerminationName(s.termination)},
+         {"message", s.message}};
   j["provenance"] = Provenance(info, s);
   j["candidates"] = s.candidates.size();
   j["batches"] = s.batches;
@@ -168,7 +170,7 @@ bool WriteLiggghtsInclude(const std::string& path, const CalibrationRunInfo& inf
            << ", stiffness x" << info.fidelity.stiffness_scale
            << "); the values below are full scale (Young's moduli of the experiment file)";
   const std::vector<std::string> comments{
-      "study: " + st.source + " (termination: " + s.termination + ")",
+      "study: " + st.source + " (termination: " + calibrate::TerminationName(s.termination) + ")",
       "condition: " + calibrate::DescribeCondition(st.targets.front().condition), fidelity.str(),
       s.best >= 0 ? "calibrated: " + st.space.Describe(s.candidates[s.best].parameters)
                   : "no calibrated value: the experiment file's values"};

@@ -71,7 +71,7 @@ bool WriteClumpCountOutputs(const std::string& dir, const StudyFile& study, cons
                             const ClumpCountVerdict& verdict, std::string* error) {
   Json list = Json::array();
   for (const ClumpCountRow& r : rows)
-    list.push_back({{"count", r.count}, {"termination", r.termination}, {"cost", Finite(r.cost)},
+    list.push_back({{"count", r.count}, {"termination", calibrate::TerminationName(r.termination)}, {"cost", Finite(r.cost)},
                     {"within_noise", r.within_noise}, {"agrees", r.agrees},
                     {"agreeing_noise", Finite(r.agreeing_noise)}, {"replicate_runs", r.runs},
                     {"wall_per_run_s", r.wall_per_run_s}});
@@ -87,7 +87,7 @@ bool WriteClumpCountOutputs(const std::string& dir, const StudyFile& study, cons
       [&](std::ostream& out) {
         out << "count,termination,cost,within_noise,agrees,agreeing_noise,replicate_runs,wall_per_run_s\n";
         for (const ClumpCountRow& r : rows)
-          out << r.count << "," << r.termination << "," << r.cost << "," << (r.within_noise ? 1 : 0) << ","
+          out << r.count << "," << calibrate::TerminationName(r.termination) << "," << r.cost << "," << (r.within_noise ? 1 : 0) << ","
               << (r.agrees ? 1 : 0) << "," << r.agreeing_noise << "," << r.runs << "," << r.wall_per_run_s << "\n";
       },
       error);

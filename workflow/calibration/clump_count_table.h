@@ -13,7 +13,7 @@ struct StudyFile;
 
 struct ClumpCountRow {
   int count = 0;
-  std::string termination;
+  calibrate::Termination termination = calibrate::Termination::kFailed;
   double cost = 0;            // Σ standardised residual² at the best candidate (NaN: none)
   bool within_noise = false;  // the calibration at n ended with a match
   // Some candidate at n agrees with the data jointly within noise (TrialResult::WithinNoise or

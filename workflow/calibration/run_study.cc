@@ -51,7 +51,7 @@ class StudyEvaluator final : public calibrate::CandidateEvaluator {
   void Split(calibrate::CandidateResult* r, std::vector<calibrate::TargetValue>* extra) const {
     extra->assign(r->targets.begin() + targets_, r->targets.end());
     r->targets.resize(targets_);
-    if (r->status != "ok" && r->status.rfind("infeasible", 0) != 0) {
+    if (r->status != "ok" && !calibrate::IsInfeasibleStatus(r->status)) {
       r->status = "ok";
       for (const calibrate::TargetValue& t : r->targets)
         if (!t.ok()) r->status = t.status;
@@ -159,7 +159,7 @@ Outcome CalibrateInto(const StudyFile& st, const CalibrateOptions& o, int clumps
   const int budget = options.optimiser_options.max_evaluations;
   out.summary = calibrate::Calibrate(evaluator, st.space, targets, options,
                                      o.quiet ? calibrate::CandidateProgress{} : ProgressLine(st, budget, log));
-  if (out.summary.termination == "invalid") {
+  if (out.summary.termination == calibrate::Termination::kInvalid) {
     log << "error: " << st.source << ": " << out.summary.message << "\n";
     return {kExitInvalidInput, out.summary};
   }

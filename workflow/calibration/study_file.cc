@@ -5,9 +5,12 @@
 
 #include "experiments/experiment_registry.h"
 #include "files/json_document.h"
+#include "objectives/common/input_limits.h"
 #include "workflow/calibration/study_sections.h"
 
 namespace demcal::workflow {
+
+namespace limits = objectives::limits;
 namespace {
 
 namespace fs = std::filesystem;
@@ -20,11 +23,12 @@ void ParseOptimiser(const nlohmann::json& j, const std::string& path,
   JsonFields f(j, path, {"name", "max_evaluations", "unit_tolerance", "batch_size", "seed"}, status);
   f.String("name", &o->optimiser, kOptional, calibrate::OptimiserNames());
   int64_t budget = o->optimiser_options.max_evaluations, batch = o->optimiser_options.batch_size;
-  f.Integer("max_evaluations", &budget, kOptional, Range::Closed(1, 100000));
-  f.Integer("batch_size", &batch, kOptional, Range::Closed(1, 1024));
+  f.Integer("max_evaluations", &budget, kOptional, Range::Of(limits::kMaxEvaluations));
+  f.Integer("batch_size", &batch, kOptional, Range::Of(limits::kBatchSize));
   o->optimiser_options.max_evaluations = static_cast<int>(budget);
   o->optimiser_options.batch_size = static_cast<int>(batch);
-  f.Number("unit_tolerance", &o->optimiser_options.unit_tolerance, kOptional, Range::Open(0, 0.5));
+  f.Number("unit_tolerance", &o->optimiser_options.unit_tolerance, kOptional,
+           Range::Of(limits::kUnitTolerance));
   f.Unsigned("seed", &o->optimiser_options.seed, kOptional);
 }
 
@@ -129,7 +133,7 @@ bool LoadStudyFile(const std::string& path, StudyFile* out, std::string* error) 
   f.String("format", &out->format, kRequired, {kFormat1, kFormat2});
   f.String("description", &out->description, kOptional);
   int64_t replicates = 0;
-  f.Integer("replicates", &replicates, kOptional, Range::Closed(1, 1000));
+  f.Integer("replicates", &replicates, kOptional, Range::Of(limits::kReplicates));
   out->replicates = static_cast<int>(replicates);
   out->has_seed = f.Has("seed");
   f.Unsigned("seed", &out->seed, kOptional);

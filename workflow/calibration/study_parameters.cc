@@ -2,9 +2,12 @@
 // follow a curve over a covariate; constraints between them; the clump-count outer loop.
 #include <algorithm>
 
+#include "objectives/common/input_limits.h"
 #include "workflow/calibration/study_sections.h"
 
 namespace demcal::workflow {
+
+namespace limits = objectives::limits;
 namespace {
 
 int MaterialIndex(const core::Scene& model, const std::string& name) {
@@ -125,8 +128,9 @@ void ParseClumpCount(const nlohmann::json& j, const std::string& path, StudyFile
   if (!(c.semi_axes.x >= c.semi_axes.y && c.semi_axes.y >= c.semi_axes.z && c.semi_axes.z > 0))
     return f.Fail("semi_axes", "must be [a, b, c] with a >= b >= c > 0");
   for (const nlohmann::json& n : *counts) {
-    if (!n.is_number_integer() || n.get<int>() < 1 || n.get<int>() > 5)
-      return f.Fail("counts", "must be whole numbers in [1, 5] (clump sphere counts)");
+    if (!n.is_number_integer() || !limits::kClumpSpheres.Contains(n.get<int>()))
+      return f.Fail("counts", "must be whole numbers in " + limits::kClumpSpheres.Text() +
+                                  " (clump sphere counts)");
     c.counts.push_back(n.get<int>());
   }
   if (c.counts.empty() || !std::is_sorted(c.counts.begin(), c.counts.end()) ||

@@ -1,12 +1,12 @@
 #include "workflow/calibration/study_runs.h"
 
 #include <filesystem>
-#include <iomanip>
 #include <sstream>
 
 #include "core/bodies/clump_shapes.h"
-#include "experiments/experiment_registry.h"
+#include "core/math/fnv1a.h"
 #include "experiments/common/experiment_runner.h"
+#include "experiments/experiment_registry.h"
 #include "files/json_document.h"
 
 namespace demcal::workflow {
@@ -23,14 +23,6 @@ bool SetClumpCount(const ClumpCountSearch& search, int n, core::Scene* model, st
     for (const core::ClumpSphere& c : shape.spheres) s.clump_shape.push_back({c.centre_m, c.radius_m});
   }
   return true;
-}
-
-std::string Hex(const std::string& text) {
-  uint64_t hash = 1469598103934665603ull;  // FNV-1a, 64 bit
-  for (unsigned char c : text) hash = (hash ^ c) * 1099511628211ull;
-  std::ostringstream hex;
-  hex << std::hex << std::setw(16) << std::setfill('0') << hash;
-  return hex.str();
 }
 
 // Records are keyed by parameter values, group and replicate; they depend on the experiment
@@ -53,7 +45,7 @@ std::string Fingerprint(const StudyFile& study, const StudyRuns& runs, uint64_t 
   }
   for (const calibrate::ParameterCurve& c : study.space.curves)
     text << "|curve:" << c.covariate << ":" << calibrate::CurveFormKey(c.form);
-  return Hex(text.str());
+  return core::Fnv1a64Hex(text.str());
 }
 
 int GroupIndex(const StudyFile& study, int experiment, const calibrate::Condition& condition,

@@ -64,7 +64,10 @@ bool ReadOutcome(const CalibrationStep& step, CalibrationOutcome* o, std::string
   }
   nlohmann::json r;
   if (!ReadJsonFile(o->result_dir + "/result.json", "calibration result", &r, error)) return false;
-  o->termination = r.value("termination", "");
+  const nlohmann::json& termination = r.contains("termination") ? r["termination"] : nlohmann::json();
+  if (!termination.is_string() ||
+      !calibrate::ParseTermination(termination.get<std::string>(), &o->termination))
+    return *error = o->result_dir + "/result.json: no known termination", false;
   o->message = r.value("message", "");
   if (r.contains("parameters") && !r["parameters"].empty()) {
     o->value = Num(r["parameters"][0], "value");
@@ -88,7 +91,7 @@ nlohmann::json NumOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v)
 }  // namespace
 
 nlohmann::json CalibrationOutcome::ToJson() const {
-  return {{"exit_code", exit_code}, {"termination", termination}, {"message", message},
+  return {{"exit_code", exit_code}, {"termination", calibrate::TerminationName(termination)}, {"message", message},
           {"value", NumOrNull(value)}, {"sigma", NumOrNull(sigma)}, {"measured", NumOrNull(measured)},
           {"uncertainty", NumOrNull(uncertainty)}, {"simulated", NumOrNull(simulated)},
           {"sem", NumOrNull(sem)}, {"provenance", provenance}, {"clump_count", clump_count},

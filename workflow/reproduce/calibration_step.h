@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "calibrate/termination.h"
 #include "workflow/reproduce/reproduce_context.h"
 
 namespace demcal::workflow {
@@ -34,7 +35,8 @@ struct CalibrationStep {
 
 struct CalibrationOutcome {
   int exit_code = 0;             // RunCalibrate's: 0 matched, 3 not matched (see termination)
-  std::string termination, message;
+  calibrate::Termination termination = calibrate::Termination::kFailed;
+  std::string message;
   double value = 0, sigma = 0;   // the calibrated parameter (sigma NaN: not determined)
   double measured = 0, uncertainty = 0, simulated = 0, sem = 0;
   std::string provenance;        // of the measurement row: measured, inferred, synthetic

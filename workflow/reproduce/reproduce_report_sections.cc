@@ -68,9 +68,10 @@ bool SegregationSection(const ReportInputs& in, HtmlReport* r, std::string* erro
   const std::string m = in.workflow->coating.material;
   r->Paragraph("Ternary heap, " + std::to_string(At(seg, "replicates").get<int>()) +
                " replicate(s) per scenario (mean ± sem over replicates; no sem with one). The "
-               "segregation fidelity and replicate count are the workflow file's; issue 15's study "
-               "of what a fidelity can resolve sets their defaults. A coarse heap holds few " + m +
-               " grains, so CoV_r grows and S_n is pulled towards 1 (issue 15).");
+               "segregation fidelity and replicate count are the workflow file's; their defaults "
+               "come from a sweep of what each fidelity can resolve (docs/experiments.md). A "
+               "coarse heap holds few " + m + " grains, so CoV_r grows and S_n is pulled towards "
+               "1.");
   HtmlTable t{.caption = m + " (and TAED) indices per scenario",
               .header = {"scenario", "CoV 3D", "CoV_r 3D", "S_n 3D", "S_n front", "S_n back",
                          "TAED CoV 3D", "mixture angle [deg]", "discharge [s]", "replicates ok"}};

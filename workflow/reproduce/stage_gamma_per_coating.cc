@@ -95,7 +95,10 @@ bool RunGammaPerCoatingStage(ReproduceContext& ctx, nlohmann::json* result, std:
     std::snprintf(key, sizeof(key), "gamma_w%g_J_m2", level);
     const bool synthetic = o.provenance == "synthetic";
     values[key] = ValueJson(o.value, o.sigma,
-                            o.termination == "within_noise" ? "" : "not matched: " + o.termination,
+                            o.termination == calibrate::Termination::kWithinNoise
+                                ? ""
+                                : std::string("not matched: ") +
+                                      calibrate::TerminationName(o.termination),
                             synthetic);
     std::snprintf(key, sizeof(key), "angle_EP_w%g_deg", level);
     values[key] = ValueJson(o.simulated, o.sem, "the calibrated heap's angle", synthetic);

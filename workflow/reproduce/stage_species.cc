@@ -48,9 +48,11 @@ bool RunSpeciesStage(ReproduceContext& ctx, nlohmann::json* result, std::string*
     entry["calibrated_experiment"] = calibrated;
     species[s.name] = entry;
     values["angle_" + s.name + "_deg"] =
-        ValueJson(o.simulated, o.sem, o.termination == "within_noise"
-                                          ? "calibrated to it (" + s.property + ")"
-                                          : "not matched: " + o.termination + ": " + o.message);
+        ValueJson(o.simulated, o.sem,
+                  o.termination == calibrate::Termination::kWithinNoise
+                      ? "calibrated to it (" + s.property + ")"
+                      : std::string("not matched: ") + calibrate::TerminationName(o.termination) +
+                            ": " + o.message);
     values["clump_count_" + s.name] = ValueJson(
         o.clump_count > 0 ? o.clump_count : NAN, NAN,
         s.clump_counts.empty() ? "shape fixed by the workflow file: " + w.shape_assumption : "");

@@ -7,8 +7,11 @@
 
 #include "files/json_document.h"
 #include "files/json_fields.h"
+#include "objectives/common/input_limits.h"
 
 namespace demcal::workflow {
+
+namespace limits = objectives::limits;
 namespace {
 
 namespace fs = std::filesystem;
@@ -59,7 +62,7 @@ void ParseSpecies(const nlohmann::json& j, const std::string& path, const std::s
   if (f.ok() && !(s->min < s->max && s->start >= s->min && s->start <= s->max))
     f.Fail("start", "needs min < max and min <= start <= max");
   std::vector<double> counts;
-  NumberList(f, "clump_counts", kOptional, Range::Closed(1, 5), 1, &counts, status);
+  NumberList(f, "clump_counts", kOptional, Range::Of(limits::kClumpSpheres), 1, &counts, status);
   for (double c : counts) s->clump_counts.push_back(static_cast<int>(c));
   NumberList(f, "semi_axes", s->clump_counts.empty() ? kOptional : kRequired,
              Range::LeftOpen(0, 1e3), 3, &s->semi_axes, status);
@@ -114,8 +117,8 @@ void ParseSegregation(const nlohmann::json& j, const std::string& path, const st
   JsonFields f(j, path, {"experiment_file", "replicates", "quick_replicates", "coated_wt_pct",
                          "excessive_gamma_J_m2", "size_scale", "stiffness_scale", "enabled"},
                status);
-  f.Number("size_scale", &s->size_scale, kOptional, Range::Closed(1, 20));
-  f.Number("stiffness_scale", &s->stiffness_scale, kOptional, Range::LeftOpen(0, 1));
+  f.Number("size_scale", &s->size_scale, kOptional, Range::Of(limits::kSizeScale));
+  f.Number("stiffness_scale", &s->stiffness_scale, kOptional, Range::Of(limits::kStiffnessScale));
   if (status->ok() && (s->size_scale > 0) != (s->stiffness_scale > 0))
     f.Fail(s->size_scale > 0 ? "stiffness_scale" : "size_scale",
            "must be given together with " +
@@ -123,8 +126,8 @@ void ParseSegregation(const nlohmann::json& j, const std::string& path, const st
   f.String("experiment_file", &s->experiment_file, kRequired);
   s->experiment_file = Resolve(file, s->experiment_file);
   int64_t n = s->replicates, q = s->quick_replicates;
-  f.Integer("replicates", &n, kOptional, Range::Closed(1, 100));
-  f.Integer("quick_replicates", &q, kOptional, Range::Closed(1, 100));
+  f.Integer("replicates", &n, kOptional, Range::Of(limits::kWorkflowReplicates));
+  f.Integer("quick_replicates", &q, kOptional, Range::Of(limits::kWorkflowReplicates));
   s->replicates = static_cast<int>(n);
   s->quick_replicates = static_cast<int>(q);
   f.Number("coated_wt_pct", &s->coated_wt_pct, kOptional, Range::LeftOpen(0, 100));
@@ -138,10 +141,10 @@ void ParseFidelityCheck(const nlohmann::json& j, const std::string& path,
   JsonFields f(j, path, {"wt_pct", "size_scale", "stiffness_scale", "replicates", "enabled"},
                status);
   f.Number("wt_pct", &c->wt_pct, kOptional, Range::LeftOpen(0, 100));
-  f.Number("size_scale", &c->size_scale, kOptional, Range::Closed(1, 20));
-  f.Number("stiffness_scale", &c->stiffness_scale, kOptional, Range::LeftOpen(0, 1));
+  f.Number("size_scale", &c->size_scale, kOptional, Range::Of(limits::kSizeScale));
+  f.Number("stiffness_scale", &c->stiffness_scale, kOptional, Range::Of(limits::kStiffnessScale));
   int64_t n = c->replicates;
-  f.Integer("replicates", &n, kOptional, Range::Closed(1, 100));
+  f.Integer("replicates", &n, kOptional, Range::Of(limits::kWorkflowReplicates));
   c->replicates = static_cast<int>(n);
   f.Bool("enabled", &c->enabled, kOptional);
 }
@@ -189,7 +192,7 @@ bool LoadWorkflowFile(const std::string& path, WorkflowFile* out, std::string* e
            Range::LeftOpen(0, 20, "deg"));
   f.String("angle_uncertainty_note", &out->angle_uncertainty_note, kRequired);
   int64_t replicates = out->replicates;
-  f.Integer("replicates", &replicates, kOptional, Range::Closed(1, 100));
+  f.Integer("replicates", &replicates, kOptional, Range::Of(limits::kWorkflowReplicates));
   out->replicates = static_cast<int>(replicates);
   ForEach(f, "species", kRequired, [&](const nlohmann::json& j, const std::string& p) {
     out->species.emplace_back();

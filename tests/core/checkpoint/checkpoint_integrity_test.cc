@@ -1,4 +1,4 @@
-// Checkpoints verified on load (issue 12): another scene or time step, appended junk, truncation,
+// Checkpoints verified on load: another scene or time step, appended junk, truncation,
 // byte flips and hand edits are each refused with the check that failed, never a crash, a hang
 // or a run on NaN. "Reframed" edits recompute the checksum, so they reach the state checks
 // behind it (a deliberate edit, or damage the checksum would miss).

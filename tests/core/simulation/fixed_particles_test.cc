@@ -54,8 +54,8 @@ TEST_CASE("fixed clumps are refused with the field name", "[unit]") {
 namespace {
 
 // A glued base (a grid of fixed spheres lifted at random by up to half a radius, as
-// objectives/glued_base.cc builds it) under a lattice of moving spheres thrown at it. The moving
-// spheres are listed first, so without reordering both treatments keep the same slot order.
+// objectives/common/glued_base.cc builds it) under a lattice of moving spheres thrown at it. The
+// moving spheres are listed first, so without reordering both treatments keep the same slot order.
 Scene PileOnFixedBase() {
   Scene s;
   s.materials = {{"grain", 1e7, 0.25, 2500}};

@@ -32,7 +32,7 @@ TEST_CASE("diagnosis on analytic stand-ins names the hidden effect and closes th
       INFO(name << " noise seed " << seed);
       const Diagnosis d = Run({hidden}, seed);
       CHECK(d.gap_before.gap_detected);
-      CHECK(d.termination == "effect_found");
+      CHECK(d.termination == DiagnosisTermination::kEffectFound);
       CHECK(Named(d) == name);
       CHECK(d.gap_after.chi2_per_dof <= 1.5 + 1.0);  // within noise: not rejected at 1 %
       CHECK_FALSE(d.gap_after.gap_detected);
@@ -47,7 +47,7 @@ TEST_CASE("diagnosis says no missing effect when none is hidden", "[unit]") {
   for (uint64_t seed : {1, 2, 3, 4, 5}) {
     INFO("noise seed " << seed);
     const Diagnosis d = Run({}, seed);
-    CHECK(d.termination == "no_missing_effect");
+    CHECK(d.termination == DiagnosisTermination::kNoMissingEffect);
     CHECK(d.named.empty());
     CHECK(d.steps.empty());  // no signature was simulated
     CHECK(d.message.find("no missing effect found") != std::string::npos);
@@ -57,7 +57,7 @@ TEST_CASE("diagnosis says no missing effect when none is hidden", "[unit]") {
 TEST_CASE("diagnosis says the gap is not explained by the library for a foreign effect", "[unit]") {
   const Diagnosis d = Run({}, 1, 40.0);  // flow grows with the coating squared: no candidate does that alone
   CHECK(d.gap_before.gap_detected);
-  CHECK((d.termination == "gap_unexplained" || d.termination == "gap_remains"));
+  CHECK((d.termination == DiagnosisTermination::kGapUnexplained || d.termination == DiagnosisTermination::kGapRemains));
   CHECK(d.gap_after.gap_detected);
   CHECK(d.message.find("not explained by the library") != std::string::npos);
 }
@@ -67,10 +67,10 @@ TEST_CASE("diagnosis repeats while a gap remains, up to max_effects", "[unit]") 
   const Diagnosis d = Run(two, 2);
   REQUIRE(d.named.size() == 2);
   CHECK(((Named(d, 0) == "adhesion" && Named(d, 1) == "shape") || (Named(d, 0) == "shape" && Named(d, 1) == "adhesion")));
-  CHECK(d.termination == "effect_found");
+  CHECK(d.termination == DiagnosisTermination::kEffectFound);
   const Diagnosis one = Run(two, 2, 0, 1);
   CHECK(one.named.size() == 1);
-  CHECK(one.termination == "gap_remains");
+  CHECK(one.termination == DiagnosisTermination::kGapRemains);
   // Frugality: per step one signature run per candidate and, per shortlisted one (dem_refits 2),
   // two refit points plus at most extra_refits (4) re-centred ones of p + 3 = 4 points each.
   CHECK(d.steps[0].simulations <= (5 + 2 * (2 + 4 * 4)) * 3);

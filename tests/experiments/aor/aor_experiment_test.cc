@@ -120,7 +120,7 @@ TEST_CASE("the aor scene holds a glued base, a box and a feed factory", "[unit]"
 }
 
 TEST_CASE("aor: a clump feed species gets a glued base of spheres of its material", "[unit]") {
-  // Fixed particles are spheres; the clump-count calibration pours clumps (issue 10).
+  // Fixed particles are spheres; the clump-count calibration pours clumps.
   core::Scene model = Model(0.5, 0.1, 0);
   model.species[0].clump_shape = {{{-0.5, 0, 0}, 0.6}, {{0.5, 0, 0}, 0.6}};  // a 2-sphere rod
   int64_t fixed = 0;

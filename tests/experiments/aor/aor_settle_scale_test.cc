@@ -1,4 +1,4 @@
-// Settling robust to scale (issue 11, objectives/common/settled_run.h): a conical heap settles by
+// Settling robust to scale (objectives/common/settled_run.h): a conical heap settles by
 // its surface no longer changing whatever its energy scale, and then reports an angle. At coarse
 // fidelity (seconds, in ctest) with an absolute threshold no heap can meet; at full scale (the
 // 15,000-sphere heap of bench/compare_pours.sh: 2 mm glass, E = 5 MPa) as a [.][long] test with
@@ -54,7 +54,7 @@ TEST_CASE("a coarse conical heap settles by its surface when no energy threshold
 
 TEST_CASE("a full-scale conical heap (15,000 spheres) settles with the default criteria",
           "[.][long][physics]") {
-  // 0.159 kg of 1.8-2.2 mm glass = 15,000 spheres (bench/pours), 5 s as in issue 11.
+  // 0.159 kg of 1.8-2.2 mm glass = 15,000 spheres, poured for 5 s (bench/compare_pours.sh).
   const AorRun run = RunAor(Glass(0.0018, 0.0022), Conical(0.159, 0.2, 5.0), 1, {});
   INFO(run.settle.message);
   REQUIRE(run.settle.ok());

@@ -1,4 +1,4 @@
-// Validation of the funnel-discharge experiment against Beverloo's law (issue 4).
+// Validation of the funnel-discharge experiment against Beverloo's law.
 //
 // Beverloo, Leniger & van de Velde (1961), Chem. Eng. Sci. 15:260: the mass flow of coarse
 // cohesionless grains out of a flat-bottomed bin through a circular orifice of diameter D is

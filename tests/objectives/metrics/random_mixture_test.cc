@@ -30,7 +30,7 @@ TEST_CASE("CoV uses the sample standard deviation (Eq. 5)", "[unit]") {
 
 TEST_CASE("Monte Carlo CoV_r matches the analytic random-mixture CoV for equal bins", "[unit]") {
   // Eq. 6: σ_R = sqrt(P(1 − P)/N), so CoV_r = sqrt((1 − P)/(P N)); the mean sample-std CoV of
-  // 21 bins is c4(21) ≈ 0.988 of it. Within 5%, as issue 4 asks.
+  // 21 bins is c4(21) ≈ 0.988 of it. Asked: within 5%.
   const int bins = 21;
   for (double p : {0.02, 0.06, 0.3}) {
     for (RandomDraw draw : {RandomDraw::kNormal, RandomDraw::kBinomial}) {

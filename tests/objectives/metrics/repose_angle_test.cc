@@ -57,7 +57,7 @@ TEST_CASE("slot heap: a 30 and a 40 degree triangle give their angle exactly", "
     INFO(a.message);
     REQUIRE(a.ok);
     REQUIRE(a.flanks.size() == 2);
-    // Issue 4: exact within 0.2°; the constructed tops lie on the line, so far better.
+    // Asked: exact within 0.2°; the constructed tops lie on the line, so far better.
     CHECK(a.angle_deg == Approx(deg).margin(1e-6));
     CHECK(a.spread_deg == Approx(0).margin(1e-6));
     CHECK(a.heap_height_m == Approx(0.04).margin(1e-12));

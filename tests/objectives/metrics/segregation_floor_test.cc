@@ -93,7 +93,7 @@ TEST_CASE("a fully segregated heap lies far outside its noise floor", "[unit]") 
 }
 
 TEST_CASE("the noise floor widens as a species gets rarer", "[unit]") {
-  // The point: at coarse fidelity a handful of EP grains gives a wide random band.
+  // The point: at coarse fidelity a handful of EP grains gives a wide random band.
   const SyntheticHeap heap;
   const Measured many = Measure(MakeHeap(heap, 6000, 4, RandomSpecies(0.1, 0.1)), heap, 4);
   const Measured few = Measure(MakeHeap(heap, 6000, 4, RandomSpecies(0.1, 0.004)), heap, 4);

@@ -1,4 +1,4 @@
-// Calibration twins on the DEM (issue "Calibration II", proof): data made by demcal at known
+// Calibration twins on the DEM (proof of the calibration): data made by demcal at known
 // parameters plus measurement-like noise (datasets/synthetic/, recipes in scripts/), calibrated
 // back through the same entry point as `demcal calibrate`, scored against truth.json, which only
 // these tests read. Long ([.][long]: minutes each at quick fidelity); run them with
@@ -56,7 +56,7 @@ double ParameterSigma(const nlohmann::json& result, const std::string& name) {
 // (docs/calibration.md, "Which targets separate mu_s and mu_r"), so a finite, correct sigma
 // cannot be asked of this twin (the rig twin below is the identifiable one). What is asked: no
 // confident wrong answer — each parameter either reports sigma = +inf (undetermined) or lies
-// within 2 sigma of the truth. (The 2026-12-02 run that ended at mu_s = 1.00 +- 0.03 would fail.)
+// within 2 sigma of the truth. (A run that ended at mu_s = 1.00 +- 0.03 would fail.)
 TEST_CASE("two-target twin at mu_s 0.5 gives no confident wrong answer", "[.][long][calibrate]") {
   ScratchDir dir("twin_two_targets");
   const std::string study = (RepoRoot() / "examples/calibrate_bp_two_targets.json").string();
@@ -102,9 +102,8 @@ double SampleSd(const std::vector<double>& x) {
 // Twin (a), σ against the spread: the small-rig study (angle + discharge time, truth μs 0.25,
 // μr 0.10) on five noise draws, each with its own seed. Every draw must report a finite σ, at
 // most one of the five may miss the truth by more than 2σ (below), and the root-mean-square σ
-// must lie within a factor 3 of the
-// sample spread of the five recoveries (issue "Calibration II": "neither 3× too small nor 3×
-// too large"; five draws estimate a spread to about ±35 %, hence the wide factor).
+// must lie within a factor 3 of the sample spread of the five recoveries (asked: "neither 3× too
+// small nor 3× too large"; five draws estimate a spread to about ±35 %, hence the wide factor).
 TEST_CASE("rig twin: sigma agrees with the spread of recoveries over five noise draws", "[.][long][calibrate]") {
   ScratchDir dir("twin_rig");
   const nlohmann::json truth =

@@ -21,7 +21,8 @@ CalibrationSummary SummaryWith(double r1, double r2, double noise) {
   c.trial.noise = {noise, noise};
   s.candidates.push_back(c);
   s.best = 0;
-  s.termination = c.trial.WithinNoise() ? "within_noise" : "converged";
+  s.termination = c.trial.WithinNoise() ? demcal::calibrate::Termination::kWithinNoise
+                                         : demcal::calibrate::Termination::kConverged;
   return s;
 }
 

@@ -25,7 +25,7 @@
 namespace demcal::diagnose {
 
 struct GapOptions {
-  double significance = 0.01;  // in (0, 0.5)
+  double significance = 0.01;  // objectives::limits::kSignificance
   bool IsValid(std::string* error) const;
 };
 

@@ -1,4 +1,4 @@
-#include "diagnose/gap/gap_test.h"
+#include "diagnose/gap/gap_significance.h"
 
 #include <catch2/catch.hpp>
 

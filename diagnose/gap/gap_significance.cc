@@ -1,4 +1,4 @@
-#include "diagnose/gap/gap_test.h"
+#include "diagnose/gap/gap_significance.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "calibrate/chi_square.h"
+#include "objectives/common/input_limits.h"
 
 namespace demcal::diagnose {
 
@@ -14,8 +15,9 @@ using calibrate::ChiSquareQuantile;
 using calibrate::NormalTwoSidedQuantile;
 
 bool GapOptions::IsValid(std::string* error) const {
-  if (significance > 0 && significance < 0.5) return true;
-  *error = "significance must be in (0, 0.5), got " + std::to_string(significance);
+  if (objectives::limits::kSignificance.Contains(significance)) return true;
+  *error = "significance must be in " + objectives::limits::kSignificance.Text() + ", got " +
+           std::to_string(significance);
   return false;
 }
 

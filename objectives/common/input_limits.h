@@ -1,0 +1,64 @@
+#pragma once
+// Input limits: the allowed range of every user input that more than one place checks (a file
+// reader, a command-line option, an Options::IsValid), in one table, so a limit is changed once
+// and every message quotes the same bounds. Readers turn a Limit into their own range type
+// (files/json_fields.h: Range::Of; apps/cli_checks.h: CliRange).
+// The table lives in objectives/common, the lowest layer with an IsValid that uses it
+// (Fidelity::IsValid); calibrate, workflow, diagnose and apps include it from above.
+//
+//   if (!limits::kSizeScale.Contains(x))
+//     error = "size_scale = ... is outside the allowed range " + limits::kSizeScale.Text();
+#include <string>
+
+#include "core/bodies/clump_shapes.h"
+
+namespace demcal::objectives::limits {
+
+// An interval of allowed values; open ends exclude the bound.
+struct Limit {
+  double lo = 0, hi = 0;
+  bool lo_open = false, hi_open = false;
+  // False for NaN.
+  constexpr bool Contains(double v) const {
+    return (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
+  }
+  std::string Text() const;  // "[1, 20]", "(0, 1]" (numbers to 6 significant digits)
+};
+
+constexpr Limit Closed(double lo, double hi) { return {lo, hi, false, false}; }
+constexpr Limit LeftOpen(double lo, double hi) { return {lo, hi, true, false}; }
+constexpr Limit Open(double lo, double hi) { return {lo, hi, true, true}; }
+
+// A run's fidelity (objectives/common/fidelity.h): experiment files, reproduce workflow files,
+// Fidelity::IsValid. Never finer nor stiffer than the real particles.
+inline constexpr Limit kSizeScale = Closed(1, 20);
+inline constexpr Limit kStiffnessScale = LeftOpen(0, 1);
+inline constexpr Limit kRayleighFraction = LeftOpen(0, 1);
+
+// Replicates of an experiment or a calibration study (experiment and study files).
+inline constexpr Limit kReplicates = Closed(1, 1000);
+// Replicates per stage of `demcal reproduce` (workflow files: a stage runs many such heaps).
+inline constexpr Limit kWorkflowReplicates = Closed(1, 100);
+
+// The optimiser (calibrate/optimiser.h): study files, --max-evaluations of calibrate and
+// diagnose, OptimiserOptions::IsValid.
+inline constexpr Limit kMaxEvaluations = Closed(1, 100000);
+inline constexpr Limit kBatchSize = Closed(1, 1024);
+inline constexpr Limit kUnitTolerance = Open(0, 0.5);
+
+// Cores for runs side by side (--threads of calibrate, diagnose and reproduce; 0: all).
+inline constexpr Limit kThreads = Closed(0, 1024);
+
+// Spheres per clump of an ellipsoid shape (core/bodies/clump_shapes.h): scene files, study
+// files' clump_count.counts, workflow files' clump_counts.
+inline constexpr Limit kClumpSpheres = Closed(1, core::kMaxEllipsoidSpheres);
+
+// The discrepancy diagnosis (diagnose/loop/diagnosis.h): its command-line options and
+// DiagnoseOptions::IsValid.
+inline constexpr Limit kSignificance = Open(0, 0.5);
+inline constexpr Limit kDiscrepancyFloor = Closed(0, 10);  // single-run scatters
+inline constexpr Limit kDiagnoseRefits = Closed(1, 10);
+inline constexpr Limit kDiagnoseMaxEffects = Closed(1, 6);
+inline constexpr Limit kDiagnoseExtraRefits = Closed(0, 20);
+
+}  // namespace demcal::objectives::limits
