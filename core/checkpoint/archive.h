@@ -62,7 +62,7 @@ class Archive {
     }
   }
 
-  bool writing_;
+  bool writing_ = false;
   bool ok_ = true;
   std::string bytes_;
   size_t offset_ = 0;

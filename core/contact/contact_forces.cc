@@ -59,7 +59,7 @@ template <class Model>
 DEMCAL_HOT_INLINE bool ContactForces::EvaluatePair(const Particles& p, const InteractionTable& table,
                                  const Model& model, double dt, size_t i, uint32_t k, uint32_t j,
                                  ContactResult& out) {
-  ContactGeometry g;
+  ContactGeometry g{};
   const ResolvedPair& pair = table.Get(p.material[i], p.material[j]);
   const bool touching =
       PairGeometry<Model>(p, i, j, pair_active_[k], pair, periodic_.Any() ? &periodic_ : nullptr, g);
@@ -154,7 +154,7 @@ void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
         ti += pair_result_[k].torque_i;
         continue;
       }
-      ContactResult r;
+      ContactResult r{};
       const ResolvedPair& pair = table.Get(p.material[i], p.material[j]);
       if (!ResolveContact(k, in_contact[m], geometry[m], pair, model, dt, r)) continue;
       fi += r.force_i;

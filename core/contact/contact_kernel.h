@@ -39,7 +39,7 @@ struct ContactModel {
       if (jkr_rolling_load == JkrRollingLoad::kNet) n.rolling_load_N = std::max(0.0, n.elastic_N);
     }
     const Vec3 f_t = MindlinTangential::Compute(g, p, n, dt, h);
-    ContactResult r;
+    ContactResult r{};
     r.force_i = n.total_N * g.normal + f_t;
     // Contact point at −R_i n from i and +R_j n from j: τ = r × F gives −R (n × F_t) for both.
     const Vec3 n_cross_ft = Cross(g.normal, f_t);

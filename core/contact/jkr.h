@@ -62,8 +62,8 @@ struct JkrNormal {
   }
 
   struct Radius {
-    double a;       // contact radius, m
-    double sqrt_a;  // √a
+    double a = 0;       // contact radius, m
+    double sqrt_a = 0;  // √a
   };
 
   // Contact radius on the stable branch for overlap δ >= δ_min: Parteli et al. (2014) closed form
@@ -82,7 +82,7 @@ struct JkrNormal {
     const double c2 = -2.0 * m;
     const double omega = std::sqrt(std::max(0.0, c2 + 2.0 * s));
     const double lambda = omega > 0 ? -kr2 / (2.0 * omega) : 0.0;
-    Radius r;
+    Radius r{};
     r.a = 0.5 * (omega + std::sqrt(std::max(0.0, omega * omega - 4.0 * (c2 + s + lambda))));
     r.sqrt_a = std::sqrt(r.a);
     if (r.a > 0) {
@@ -142,7 +142,7 @@ struct JkrNormal {
     const double s_n = 2.0 * e_star * a;
     const double c_n = -kTwoSqrtFiveSixths * p.beta * std::sqrt(s_n * g.effective_mass_kg);
     const double v_n = Dot(g.relative_velocity_m_s, g.normal);
-    NormalForce n;
+    NormalForce n{};
     n.elastic_N = hertz - adhesion;
     n.total_N = n.elastic_N - c_n * v_n;
     n.stiffness_n = s_n;

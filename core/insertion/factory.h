@@ -94,7 +94,7 @@ class ParticleFactory {
   std::vector<SpeciesDraw> mixture_;
   Rng rng_;
   double interval_ = 0;
-  double next_batch_s_;
+  double next_batch_s_ = 0;
   double owed_kg_ = 0;  // requested but not yet inserted
   FactoryReport report_;
 };

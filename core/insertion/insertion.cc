@@ -53,8 +53,8 @@ class OccupancyGrid {
   size_t Index(int x, int y, int z) const { return (static_cast<size_t>(z) * dims_[1] + y) * dims_[0] + x; }
 
   Vec3 origin_;
-  double cell_;
-  int dims_[3];
+  double cell_ = 0;
+  int dims_[3] = {};
   std::vector<std::vector<uint32_t>> cells_;
 };
 

@@ -74,7 +74,7 @@ class BodyWriter {
   }
 
   std::ostream& out_;
-  bool binary_;
+  bool binary_ = false;
   int tokens_in_line_ = 0;
   static constexpr int kTokensPerLine = 9;
 };

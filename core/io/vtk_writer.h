@@ -42,7 +42,7 @@ class VtkSeries {
  public:
   struct Entry {
     std::string file_name;  // relative to the directory of the .series file
-    double time_s;
+    double time_s = 0;
   };
   // `directory` receives the snapshots "<prefix>_NNNNNN.vtk" and "<prefix>.vtk.series".
   VtkSeries(std::string directory, std::string prefix, VtkOptions options);

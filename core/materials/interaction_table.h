@@ -22,14 +22,14 @@ struct PairParameters {
 
 // What the contact loop uses for a pair of materials (docs/physics.md §1.1).
 struct ResolvedPair {
-  double effective_youngs_Pa;  // E*: 1/E* = (1-ν_i²)/E_i + (1-ν_j²)/E_j
-  double effective_shear_Pa;   // G*: 1/G* = 2(2-ν_i)(1+ν_i)/E_i + 2(2-ν_j)(1+ν_j)/E_j
-  double beta;                 // ln e / sqrt(ln² e + π²), <= 0
-  double sliding_friction;
-  double rolling_friction;
-  double interfacial_energy_J_m2;
-  double jkr_adhesion_length;  // k = sqrt(4πΓ/E*) (m^½), JKR's δ(a) = a²/R* − k√a; 0 without Γ
-  double tangential_damping_ratio;  // sqrt(S_t/S_n) = sqrt(4G*/E*): c_t = c_n × this
+  double effective_youngs_Pa = 0;  // E*: 1/E* = (1-ν_i²)/E_i + (1-ν_j²)/E_j
+  double effective_shear_Pa = 0;   // G*: 1/G* = 2(2-ν_i)(1+ν_i)/E_i + 2(2-ν_j)(1+ν_j)/E_j
+  double beta = 0;                 // ln e / sqrt(ln² e + π²), <= 0
+  double sliding_friction = 0;
+  double rolling_friction = 0;
+  double interfacial_energy_J_m2 = 0;
+  double jkr_adhesion_length = 0;  // k = sqrt(4πΓ/E*) (m^½), JKR's δ(a) = a²/R* − k√a; 0 without Γ
+  double tangential_damping_ratio = 0;  // sqrt(S_t/S_n) = sqrt(4G*/E*): c_t = c_n × this
 };
 
 // A resolved pair with its derived constants (the one way to build one).

@@ -102,8 +102,8 @@ class NeighbourList {
   struct Grid {
     Vec3 origin;
     Vec3 inv_cell;  // per axis: cells are at least the cut-off and tile the spanned box
-    int nx, ny, nz;
-    bool wrap[3];   // periodic axis: neighbour cells wrap around
+    int nx = 0, ny = 0, nz = 0;
+    bool wrap[3] = {};  // periodic axis: neighbour cells wrap around
     Vec3 reach_lo, reach_hi;  // moving particles' box grown by a cut-off: fixed partners inside
     int CellOf(const Vec3& x) const;
   };

@@ -38,8 +38,8 @@ namespace demcal::core {
 class SweepChunks {
  public:
   struct CrossPair {
-    uint32_t row;    // particle slot i (in an earlier chunk)
-    uint32_t entry;  // neighbour-list entry of (i, j)
+    uint32_t row = 0;    // particle slot i (in an earlier chunk)
+    uint32_t entry = 0;  // neighbour-list entry of (i, j)
   };
 
   // Splits `list`'s moving rows into `count` chunks of about equal work (rows + listed pairs)

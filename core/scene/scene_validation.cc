@@ -46,7 +46,7 @@ class Checker {
   static constexpr double kInf = std::numeric_limits<double>::infinity();
 
  private:
-  std::string* error_;
+  std::string* error_ = nullptr;
   bool ok_ = true;
 };
 
@@ -360,7 +360,7 @@ bool Scene::IsValid(std::string* error) const {
   if (c.ok() && !MakeRollingModel(rolling, &model))
     c.Fail("field 'contact_model.rolling' = '" + rolling.name + "' is not one of none|cdt|epsd|epsd2");
   if (c.ok()) c.Range("contact_model.epsd_damping_ratio", rolling.epsd_damping_ratio, 0, 1, false, false);
-  JkrRollingLoad load;
+  JkrRollingLoad load{};
   if (c.ok() && !ParseJkrRollingLoad(rolling.jkr_rolling_load, &load))
     c.Fail("field 'contact_model.jkr_rolling_load' = '" + rolling.jkr_rolling_load +
            "' is not one of net|repulsive");

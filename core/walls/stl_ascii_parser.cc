@@ -177,7 +177,7 @@ class Parser {
   }
 
   Cursor cursor_;
-  std::string* error_;
+  std::string* error_ = nullptr;
   MeshIoStatus status_ = MeshIoStatus::kOk;
 };
 

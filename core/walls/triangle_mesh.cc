@@ -202,7 +202,7 @@ void TriangleMesh::BuildTopology() {
   const auto nt = static_cast<int32_t>(tri_vertices_.size());
   // Every (triangle, local edge), sorted by its undirected vertex pair, groups shared edges.
   struct HalfEdge {
-    int32_t a, b, tri, local;
+    int32_t a = 0, b = 0, tri = 0, local = 0;
   };
   std::vector<HalfEdge> half(3 * static_cast<size_t>(nt));
   for (int32_t t = 0; t < nt; ++t) {

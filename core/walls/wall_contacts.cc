@@ -104,8 +104,8 @@ void WallContacts::ListRow(const Particles& p, size_t i, size_t o, const std::ve
         !WithinSkin(wall, p.position_m[i], p.radius_m[i], skin_m, adhesive_gap_m, triangles_))
       continue;
     const bool is_mesh = std::holds_alternative<MeshRef>(wall.shape);
-    ContactHistory h;
-    MeshHistory m;
+    ContactHistory h{};
+    MeshHistory m{};
     uint8_t on = 0;
     if (o != kNoOldSlot) {  // keep the history of a wall contact that persists
       for (uint32_t e = start_[o]; e < start_[o + 1]; ++e) {

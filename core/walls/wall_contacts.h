@@ -81,11 +81,14 @@ class WallContacts {
  private:
   struct MeshSlot {
     uint64_t key = 0;
-    ContactHistory history;
+    ContactHistory history{};
   };
   struct MeshHistory {
-    std::array<MeshSlot, kMaxMeshContacts> slot;
+    std::array<MeshSlot, kMaxMeshContacts> slot{};
     uint32_t count = 0;
+    // What would be padding, named and zeroed: checkpoints store this struct's bytes raw, and
+    // indeterminate padding would make two checkpoints of one state differ byte for byte.
+    uint32_t padding = 0;
   };
   // What candidate e exerted on its wall: the force, and the moment about the particle centre.
   struct Load {
@@ -144,7 +147,7 @@ class WallContacts {
 // with wall_velocity; normal points from the wall to the sphere centre.
 inline ContactGeometry WallGeometry(const Particles& p, size_t i, const Vec3& normal,
                                     const Vec3& wall_velocity, double overlap) {
-  ContactGeometry g;
+  ContactGeometry g{};
   const double ri = p.radius_m[i];
   g.normal = normal;
   g.overlap_m = overlap;
@@ -207,8 +210,8 @@ void WallContacts::SumMesh(const Particles& p, uint32_t i, uint32_t e, const Mes
     mesh.mesh->SphereContacts(p.position_m[i] - mesh.offset_m, radius + reach, near, scratch);
   }
   MeshHistory& old = mesh_history_[slot];
-  MeshHistory now;
-  Load load;
+  MeshHistory now{};
+  Load load{};
   uint32_t evaluated = 0;
   for (const MeshContact& c : scratch) {
     const uint64_t key = c.Key();

@@ -12,7 +12,7 @@
 namespace demcal::core {
 
 struct AxisInterval {
-  double lo_m, hi_m;  // ±infinity for an unbounded surface
+  double lo_m = 0, hi_m = 0;  // ±infinity for an unbounded surface
 };
 
 // The range of the surface along axis a (0, 1, 2) at rest plus its travel: |velocity| × the

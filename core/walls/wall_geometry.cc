@@ -17,8 +17,8 @@ bool IsUnit(const Vec3& v) { return IsFinite(v) && std::abs(Norm(v) - 1.0) <= kU
 
 // Axial height h of p, and the unit radial direction (arbitrary but fixed on the axis).
 struct AxialFrame {
-  double height;
-  double radius;
+  double height = 0;
+  double radius = 0;
   Vec3 radial;
 };
 

@@ -75,8 +75,8 @@ WallProximity ClosestOnCylinder(const CylinderSurface& cylinder, const Vec3& cen
 // Height of p along `axis` from `axis_point`, and its offset from the axis (unnormalised): the
 // axial coordinates every surface of revolution starts from (wall_geometry.cc's ToAxial).
 struct AxialOffset {
-  double height;
-  double radius;
+  double height = 0;
+  double radius = 0;
   Vec3 radial;  // p's offset from the axis, of length `radius`
 };
 inline AxialOffset ToAxialOffset(const Vec3& axis_point, const Vec3& axis, const Vec3& p) {
