@@ -21,7 +21,7 @@ std::unique_ptr<calibrate::ExperimentProbe> MakeAorProbe(const ExperimentFile& f
 }  // namespace
 
 extern const ExperimentKind kAorExperiment = {
-    "aor", "angle of repose", &RunAorExperiment, &MakeAorProbe,
+    "aor", "angle of repose", &RunTyped<AorResult, &RunAorExperiment>, &MakeAorProbe,
     &CheckSection<objectives::AorSettings, ParseAorSection>};
 
 }  // namespace demcal::workflow

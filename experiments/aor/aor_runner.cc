@@ -1,12 +1,12 @@
 // `demcal experiment aor`: replicated angle-of-repose runs → result.json, runs.csv, one heap
-// profile picture and one VTK file of the settled heap per replicate.
+// profile picture and one VTK file of the settled heap per replicate; the numbers returned as an
+// AorResult.
 #include "experiments/aor/aor_runner.h"
 
 #include <string>
 #include <vector>
 
 #include "experiments/aor/aor_section.h"
-#include "outputs/exit_codes.h"
 #include "experiments/common/experiment_setup.h"
 #include "files/json_document.h"
 #include "experiments/aor/aor_experiment.h"
@@ -81,16 +81,32 @@ objectives::SvgPlot ProfilePlot(const AorSettings& settings, const AorRun& run) 
   return objectives::ConicalHeapProfilePlot(run.heap, {0, 0, 0}, run.angle, run.angle_options);
 }
 
+nlohmann::ordered_json ResultJson(const ExperimentFile& file, const ExperimentContext& context,
+                                  const AorResult& out) {
+  nlohmann::ordered_json result = ResultHeader(file, context);
+  result["heap"] = out.heap;
+  nlohmann::ordered_json runs_json = nlohmann::ordered_json::array();
+  for (size_t r = 0; r < out.runs.size(); ++r)
+    runs_json.push_back(RunJson(static_cast<int>(r), out.runs[r]));
+  const objectives::Summary& s = out.angle_deg;
+  result["replicates_ok"] = s.n;
+  result["angle_deg"] = s.n > 0 ? nlohmann::ordered_json(s.mean) : nullptr;
+  result["angle_sem_deg"] = s.n > 1 ? nlohmann::ordered_json(s.sem) : nullptr;
+  result["angle_std_deg"] = s.n > 1 ? nlohmann::ordered_json(s.stddev) : nullptr;
+  result["runs"] = runs_json;
+  return result;
+}
+
 }  // namespace
 
-int RunAorExperiment(const ExperimentFile& file, const ExperimentContext& context,
-                     std::ostream& log) {
+AorResult RunAorExperiment(const ExperimentFile& file, const ExperimentContext& context,
+                           std::ostream& log) {
+  AorResult out;
   PreparedExperiment<AorSettings> prepared;
-  if (!PrepareExperiment(file, context, ParseAorSection, BuildScene, &prepared, log))
-    return kExitInvalidInput;
+  if (!PrepareExperiment(file, context, ParseAorSection, BuildScene, &prepared, log)) return out;
   const AorSettings& settings = prepared.settings;
   std::vector<std::string> output_errors;
-  const std::vector<AorRun> runs = RunPreparedReplicates(
+  out.runs = RunPreparedReplicates(
       file, context, prepared, "heap", objectives::RunAor,
       [&](int r, const AorRun& run, std::string* error) {
         if (run.angle.ok)
@@ -98,30 +114,26 @@ int RunAorExperiment(const ExperimentFile& file, const ExperimentContext& contex
                                ProfilePlot(settings, run), error);
       },
       &output_errors, log);
+  out.heap = settings.heap == AorSettings::Heap::kSlot ? "slot" : "conical";
   std::vector<double> angles;
-  nlohmann::ordered_json result = ResultHeader(file, context);
-  result["heap"] = settings.heap == AorSettings::Heap::kSlot ? "slot" : "conical";
-  nlohmann::ordered_json runs_json = nlohmann::ordered_json::array();
-  for (int r = 0; r < context.replicates; ++r) {
-    if (runs[r].ok()) angles.push_back(runs[r].angle.angle_deg);
-    runs_json.push_back(RunJson(r, runs[r]));
-  }
-  const objectives::Summary s = objectives::Summarise(angles);
-  result["replicates_ok"] = s.n;
-  result["angle_deg"] = s.n > 0 ? nlohmann::ordered_json(s.mean) : nullptr;
-  result["angle_sem_deg"] = s.n > 1 ? nlohmann::ordered_json(s.sem) : nullptr;
-  result["angle_std_deg"] = s.n > 1 ? nlohmann::ordered_json(s.stddev) : nullptr;
-  result["runs"] = runs_json;
+  for (const AorRun& run : out.runs)
+    if (run.ok()) angles.push_back(run.angle.angle_deg);
+  out.angle_deg = objectives::Summarise(angles);
+  out.replicates_ok = out.angle_deg.n;
   std::string error = FirstError(output_errors);
-  if (!error.empty() || !WriteJsonFile(context.out_dir + "/result.json", result, &error) ||
-      !WriteRunsCsv(context.out_dir + "/runs.csv", runs, &error)) {
+  if (!error.empty() ||
+      !WriteJsonFile(context.out_dir + "/result.json", ResultJson(file, context, out), &error) ||
+      !WriteRunsCsv(context.out_dir + "/runs.csv", out.runs, &error)) {
     log << "error: " << error << "\n";
-    return kExitOutputError;
+    out.status = ExperimentStatus::kOutputError;
+    return out;
   }
+  const objectives::Summary& s = out.angle_deg;
   log << "aor: angle of repose " << (s.n > 0 ? std::to_string(s.mean) : "n/a") << " deg ± "
       << s.sem << " (standard error, " << s.n << " of " << context.replicates
       << " replicates ok) -> " << context.out_dir << "/result.json\n";
-  return s.n > 0 ? kExitOk : kExitRunFailed;
+  out.status = s.n > 0 ? ExperimentStatus::kOk : ExperimentStatus::kRunFailed;
+  return out;
 }
 
 }  // namespace demcal::workflow

@@ -67,6 +67,7 @@ bool ParseExperimentJson(const json& document, const std::string& source, Experi
     if (const json* section = top.Object(file.experiment, kRequired)) file.section = *section;
   }
   ParseOutput(top, &file.output, &status);
+  file.document = document;
   if (!status.ok()) {
     if (error) *error = source + ": " + status.message();
     return false;

@@ -30,6 +30,9 @@ struct ExperimentFile {
   objectives::Fidelity quick_fidelity = objectives::QuickFidelity();
   nlohmann::json section;             // the experiment's own section
   OutputSettings output;
+  // The whole document as read: a calibration journal's records depend on it (study_runs.cc),
+  // so a parsed file carries it rather than its path being read again.
+  nlohmann::json document;
 };
 
 bool ParseExperimentJson(const nlohmann::json& document, const std::string& source,

@@ -1,8 +1,29 @@
-// Shared pieces of the experiment runners' result files.
-#include "experiments/common/experiment_runner.h"
+// Shared pieces of the experiment runners' results: the typed result and the header of the
+// result files.
+#include "experiments/common/experiment_result.h"
+
 #include "core/version.h"
+#include "experiments/common/experiment_runner.h"
+#include "outputs/exit_codes.h"
 
 namespace demcal::workflow {
+
+int ExitCodeOf(ExperimentStatus status) {
+  switch (status) {
+    case ExperimentStatus::kOk: return kExitOk;
+    case ExperimentStatus::kRunFailed: return kExitRunFailed;
+    case ExperimentStatus::kInvalidInput: return kExitInvalidInput;
+    case ExperimentStatus::kOutputUnavailable: return kExitInvalidInput;
+    case ExperimentStatus::kOutputError: return kExitOutputError;
+  }
+  return kExitInternalError;
+}
+
+const objectives::Summary* ExperimentResult::Value(const std::string& name) const {
+  for (const NamedEstimate& v : values)
+    if (v.name == name) return &v.value;
+  return nullptr;
+}
 
 nlohmann::ordered_json FidelityJson(const objectives::Fidelity& f) {
   return {{"name", f.name},

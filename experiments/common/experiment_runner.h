@@ -1,13 +1,14 @@
 #pragma once
 // The runners of `demcal experiment`: one per experiment, in its room
 // (experiments/<name>/<name>_runner.cc), found through the registry (experiment_registry.h).
-// A runner turns a parsed file into runs and writes DIR/result.json plus its tables and
-// pictures; it returns a process exit code (outputs/exit_codes.h).
+// A runner turns a parsed file into runs, writes DIR/result.json plus its tables and pictures
+// from its typed result, and returns that result (experiment_result.h).
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
 
 #include "experiments/common/experiment_file.h"
+#include "experiments/common/experiment_result.h"
 #include "objectives/common/fidelity.h"
 
 namespace demcal::workflow {
@@ -20,8 +21,8 @@ struct ExperimentContext {
   bool quiet = false;
 };
 
-using ExperimentRunner = int (*)(const ExperimentFile&, const ExperimentContext&, std::ostream&);
-
+using ExperimentRunner = ExperimentResult (*)(const ExperimentFile&, const ExperimentContext&,
+                                              std::ostream&);
 
 // The fields every result.json starts with: format, experiment, version, source, description,
 // fidelity, seed, replicates.

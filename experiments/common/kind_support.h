@@ -1,12 +1,31 @@
 #pragma once
-// What the rooms' registry entries (experiments/*/*_kind.cc) share: a section checker and a
-// probe maker built from the room's section parser, scene builder and probe class.
+// What the rooms' registry entries (experiments/*/*_kind.cc) share: the registry's runner built
+// from the room's typed runner, a section checker and a probe maker built from the room's section
+// parser, scene builder and probe class.
 #include <memory>
+#include <ostream>
 #include <string>
 
 #include "experiments/experiment_registry.h"
 
 namespace demcal::workflow {
+
+// The registry's runner over a room's typed runner: the common fields (status, replicates_ok,
+// Values()) copied out, the typed result kept as the detail.
+template <class Result, Result (*Run)(const ExperimentFile&, const ExperimentContext&,
+                                      std::ostream&)>
+ExperimentResult RunTyped(const ExperimentFile& file, const ExperimentContext& context,
+                          std::ostream& log) {
+  Result typed = Run(file, context, log);
+  ExperimentResult result;
+  result.status = typed.status;
+  result.experiment = file.experiment;
+  result.replicates = context.replicates;
+  result.replicates_ok = typed.replicates_ok;
+  result.values = typed.Values();
+  result.detail = std::move(typed);
+  return result;
+}
 
 // Parse(section, source, model, &settings, &error) -> bool: the room's section reader.
 template <class Settings, auto Parse>

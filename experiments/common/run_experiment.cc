@@ -48,6 +48,50 @@ int Reject(const ExperimentOptions& options, OutputLock* lock, const std::string
 
 }  // namespace
 
+ExperimentContext ExperimentContextFor(const ExperimentFile& file, const std::string& out_dir,
+                                       bool quick) {
+  ExperimentContext context;
+  context.out_dir = out_dir;
+  context.replicates = file.replicates;
+  context.fidelity = quick ? file.quick_fidelity : file.fidelity;
+  return context;
+}
+
+ExperimentResult RunExperimentFile(const ExperimentFile& file, const ExperimentContext& context,
+                                   std::ostream& log) {
+  ExperimentResult refused;
+  refused.experiment = file.experiment;
+  refused.replicates = context.replicates;
+  auto refuse = [&](ExperimentStatus status, const std::string& message) {
+    log << "error: " << message << "\n";
+    refused.status = status;
+    refused.message = message;
+    return refused;
+  };
+  const ExperimentKind* kind = FindExperimentKind(file.experiment);
+  if (!kind)
+    return refuse(ExperimentStatus::kInvalidInput,
+                  "unknown experiment '" + file.experiment + "' (" +
+                      JoinNames(ExperimentKindNames()) + ")");
+  std::string error;
+  if (!context.fidelity.IsValid(&error))
+    return refuse(ExperimentStatus::kInvalidInput, file.source + ": " + error);
+  // One process per output directory (this also creates it).
+  OutputLock lock;
+  if (!LockOutputDirectory(context.out_dir, "demcal experiment " + file.experiment, &lock,
+                           &error))
+    return refuse(ExperimentStatus::kOutputUnavailable, "--out: " + error);
+  // A fresh run: a rejection note of an earlier attempt no longer applies.
+  std::error_code ignored;
+  std::filesystem::remove(std::filesystem::path(context.out_dir) / "rejected.json", ignored);
+  ExperimentResult result = kind->run(file, context, log);
+  // The runner refused its section (e.g. aor.angle) and said why on the log.
+  if (result.status == ExperimentStatus::kInvalidInput)
+    result.message = file.source + ": the '" + file.experiment +
+                     "' section was refused (see the error printed before this file)";
+  return result;
+}
+
 int RunExperiment(const ExperimentOptions& options, std::ostream& log) {
   OutputLock lock;
   const ExperimentKind* kind = FindExperimentKind(options.kind);
@@ -64,30 +108,15 @@ int RunExperiment(const ExperimentOptions& options, std::ostream& log) {
                   options.params_path + ": field 'experiment' = '" + file.experiment +
                       "' but the command asks for '" + options.kind + "'",
                   log);
-  ExperimentContext context;
-  context.out_dir = options.out_dir;
-  context.replicates = options.replicates > 0 ? options.replicates : file.replicates;
-  context.fidelity = options.quick ? file.quick_fidelity : file.fidelity;
+  ExperimentContext context = ExperimentContextFor(file, options.out_dir, options.quick);
+  if (options.replicates > 0) context.replicates = options.replicates;
   context.threads = options.threads;
   context.quiet = options.quiet;
-  if (!context.fidelity.IsValid(&error))
-    return Reject(options, &lock, options.params_path + ": " + error, log);
-  // One process per output directory (this also creates it).
-  if (!LockOutputDirectory(options.out_dir, "demcal experiment " + options.kind, &lock, &error)) {
-    log << "error: --out: " << error << "\n";
-    return kExitInvalidInput;
-  }
-  // A fresh run: a rejection note of an earlier attempt no longer applies.
-  std::error_code ignored;
-  std::filesystem::remove(std::filesystem::path(options.out_dir) / "rejected.json", ignored);
-  const int code = kind->run(file, context, log);
-  // The runner refused its section (e.g. aor.angle): the same treatment as a refused file.
-  if (code == kExitInvalidInput)
-    return Reject(options, &lock,
-                  options.params_path + ": the '" + options.kind +
-                      "' section was refused (see the error printed before this file)",
-                  log, /*already_logged=*/true);
-  return code;
+  const ExperimentResult result = RunExperimentFile(file, context, log);
+  // A refused file or section: the refusal is on the log; rejected.json records it.
+  if (result.status == ExperimentStatus::kInvalidInput)
+    return Reject(options, &lock, result.message, log, /*already_logged=*/true);
+  return ExitCodeOf(result.status);
 }
 
 }  // namespace demcal::workflow

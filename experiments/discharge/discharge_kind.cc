@@ -17,7 +17,8 @@ std::unique_ptr<calibrate::ExperimentProbe> MakeDischargeProbe(const ExperimentF
 }  // namespace
 
 extern const ExperimentKind kDischargeExperiment = {
-    "discharge", "funnel discharge", &RunDischargeExperiment, &MakeDischargeProbe,
+    "discharge", "funnel discharge", &RunTyped<DischargeResult, &RunDischargeExperiment>,
+    &MakeDischargeProbe,
     &CheckSection<objectives::DischargeSettings, ParseDischargeSection>};
 
 }  // namespace demcal::workflow

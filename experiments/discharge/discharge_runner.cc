@@ -1,13 +1,13 @@
 // `demcal experiment discharge`: replicated funnel discharges → result.json (discharge time and
 // mass flow, mean ± standard error over replicates, and every run), per replicate the outflow
-// and composition CSVs and the final state as VTK, and the pictures of the first good run.
+// and composition CSVs and the final state as VTK, and the pictures of the first good run; the
+// numbers returned as a DischargeResult.
 #include "experiments/discharge/discharge_runner.h"
 
 #include <string>
 #include <vector>
 
 #include "experiments/discharge/discharge_section.h"
-#include "outputs/exit_codes.h"
 #include "experiments/common/experiment_setup.h"
 #include "files/json_document.h"
 #include "objectives/report/discharge_csv.h"
@@ -55,15 +55,35 @@ ordered_json HopperJson(const DischargeSettings& s) {
           {"feed_mass_kg", s.feed.mass_kg}};
 }
 
-// Mean ± standard error of `value` over the good runs, as `key` and `sem_key`.
-void AddSummary(const std::vector<DischargeRun>& runs, double (*value)(const DischargeRun&),
-                const std::string& key, const std::string& sem_key, ordered_json* result) {
+// Mean ± standard error of `value` over the good runs.
+objectives::Summary OverOkRuns(const std::vector<DischargeRun>& runs,
+                               double (*value)(const DischargeRun&)) {
   std::vector<double> values;
   for (const DischargeRun& run : runs)
     if (run.ok()) values.push_back(value(run));
-  const objectives::Summary s = objectives::Summarise(values);
+  return objectives::Summarise(values);
+}
+
+// `key` and `sem_key` of a summary: null without a value.
+void AddSummary(const objectives::Summary& s, const std::string& key, const std::string& sem_key,
+                ordered_json* result) {
   (*result)[key] = OrNull(s.n > 0, s.mean);
   (*result)[sem_key] = OrNull(s.n > 1, s.sem);
+}
+
+ordered_json ResultJson(const ExperimentFile& file, const ExperimentContext& context,
+                        const DischargeResult& out) {
+  ordered_json result = ResultHeader(file, context);
+  result["hopper"] = HopperJson(out.settings);
+  ordered_json runs_json = ordered_json::array();
+  for (size_t r = 0; r < out.runs.size(); ++r)
+    runs_json.push_back(RunJson(static_cast<int>(r), out.runs[r]));
+  result["replicates_ok"] = out.replicates_ok;
+  AddSummary(out.discharge_time_s, "discharge_time_s", "discharge_time_sem_s", &result);
+  AddSummary(out.mass_flow_kg_s, "mass_flow_kg_s", "mass_flow_sem_kg_s", &result);
+  AddSummary(out.bulk_density_kg_m3, "bulk_density_kg_m3", "bulk_density_sem_kg_m3", &result);
+  result["runs"] = runs_json;
+  return result;
 }
 
 // Per replicate: outflow and composition tables.
@@ -93,47 +113,42 @@ bool WritePictures(const std::string& dir, const std::vector<DischargeRun>& runs
 
 }  // namespace
 
-int RunDischargeExperiment(const ExperimentFile& file, const ExperimentContext& context,
-                           std::ostream& log) {
+DischargeResult RunDischargeExperiment(const ExperimentFile& file,
+                                       const ExperimentContext& context, std::ostream& log) {
+  DischargeResult out;
   PreparedExperiment<DischargeSettings> prepared;
   if (!PrepareExperiment(file, context, ParseDischargeSection, objectives::BuildDischargeScene,
                          &prepared, log))
-    return kExitInvalidInput;
-  const DischargeSettings& settings = prepared.settings;
+    return out;
+  out.settings = prepared.settings;
   const std::vector<std::string> names = SpeciesNames(prepared.model);
   std::vector<std::string> output_errors;
-  const std::vector<DischargeRun> runs = RunPreparedReplicates(
+  out.runs = RunPreparedReplicates(
       file, context, prepared, "hopper", objectives::RunDischarge,
       [&](int r, const DischargeRun& run, std::string* error) {
         WriteRunTables(context.out_dir, r, run, names, error);
       },
       &output_errors, log);
-  ordered_json result = ResultHeader(file, context);
-  result["hopper"] = HopperJson(settings);
-  int ok = 0;
-  ordered_json runs_json = ordered_json::array();
-  for (int r = 0; r < context.replicates; ++r) {
-    ok += runs[r].ok();
-    runs_json.push_back(RunJson(r, runs[r]));
-  }
-  result["replicates_ok"] = ok;
-  AddSummary(runs, [](const DischargeRun& x) { return x.metrics.discharge_time_s; },
-             "discharge_time_s", "discharge_time_sem_s", &result);
-  AddSummary(runs, [](const DischargeRun& x) { return x.metrics.mass_flow_kg_s; },
-             "mass_flow_kg_s", "mass_flow_sem_kg_s", &result);
-  AddSummary(runs, [](const DischargeRun& x) { return x.bulk_density_kg_m3; },
-             "bulk_density_kg_m3", "bulk_density_sem_kg_m3", &result);
-  result["runs"] = runs_json;
+  for (const DischargeRun& run : out.runs) out.replicates_ok += run.ok();
+  out.discharge_time_s =
+      OverOkRuns(out.runs, [](const DischargeRun& x) { return x.metrics.discharge_time_s; });
+  out.mass_flow_kg_s =
+      OverOkRuns(out.runs, [](const DischargeRun& x) { return x.metrics.mass_flow_kg_s; });
+  out.bulk_density_kg_m3 =
+      OverOkRuns(out.runs, [](const DischargeRun& x) { return x.bulk_density_kg_m3; });
+  const ordered_json result = ResultJson(file, context, out);
   std::string error = FirstError(output_errors);
-  if (!error.empty() || !WritePictures(context.out_dir, runs, names, &error) ||
+  if (!error.empty() || !WritePictures(context.out_dir, out.runs, names, &error) ||
       !WriteJsonFile(context.out_dir + "/result.json", result, &error)) {
     log << "error: " << error << "\n";
-    return kExitOutputError;
+    out.status = ExperimentStatus::kOutputError;
+    return out;
   }
   log << "discharge: mass flow " << result["mass_flow_kg_s"].dump() << " kg/s, discharge time "
-      << result["discharge_time_s"].dump() << " s (" << ok << " of " << context.replicates
-      << " replicates ok) -> " << context.out_dir << "/result.json\n";
-  return ok > 0 ? kExitOk : kExitRunFailed;
+      << result["discharge_time_s"].dump() << " s (" << out.replicates_ok << " of "
+      << context.replicates << " replicates ok) -> " << context.out_dir << "/result.json\n";
+  out.status = out.replicates_ok > 0 ? ExperimentStatus::kOk : ExperimentStatus::kRunFailed;
+  return out;
 }
 
 }  // namespace demcal::workflow

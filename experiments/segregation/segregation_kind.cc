@@ -7,7 +7,8 @@
 namespace demcal::workflow {
 
 extern const ExperimentKind kSegregationExperiment = {
-    "segregation", "segregation heap", &RunSegregationExperiment, nullptr,
+    "segregation", "segregation heap", &RunTyped<SegregationResult, &RunSegregationExperiment>,
+    nullptr,
     &CheckSection<objectives::SegregationSettings, ParseSegregationSection>};
 
 }  // namespace demcal::workflow

@@ -16,30 +16,34 @@ using objectives::SegregationRun;
 // One index of one species, from a run's analysis; nullptr when the run has none.
 using IndexOf = std::function<const SegregationIndex*(const HeapSegregation&, int species)>;
 
-ordered_json Stat(const std::vector<double>& values) {
-  const objectives::Summary s = objectives::Summarise(values);
+ordered_json StatJson(const objectives::Summary& s) {
   return {{"mean", s.n > 0 ? ordered_json(s.mean) : ordered_json(nullptr)},
           {"sem", s.n > 1 ? ordered_json(s.sem) : ordered_json(nullptr)},
           {"n", s.n}};
 }
 
+ordered_json FloorJson(const FloorEstimate& f) {
+  auto value = [&f](double v) { return f.n > 0 ? ordered_json(v) : ordered_json(nullptr); };
+  return {{"mean", value(f.mean)}, {"low", value(f.low)}, {"high", value(f.high)}, {"n", f.n}};
+}
+
 // Mean ± sem over the ok runs of value(index) for the defined indices.
-ordered_json IndexStat(const std::vector<SegregationRun>& runs, int species, const IndexOf& of,
-                       double SegregationIndex::*value) {
+objectives::Summary IndexStat(const std::vector<SegregationRun>& runs, int species,
+                              const IndexOf& of, double SegregationIndex::*value) {
   std::vector<double> values;
   for (const SegregationRun& run : runs) {
     if (!run.ok()) continue;
     const SegregationIndex* index = of(run.analysis->indices, species);
     if (index && index->defined) values.push_back(index->*value);
   }
-  return Stat(values);
+  return objectives::Summarise(values);
 }
 
 // The random-mixture floor of one index of one species, from a run's floor; nullptr without.
 using FloorOf = std::function<const objectives::IndexFloor*(const objectives::HeapFloor&, int)>;
 
 // Mean over the ok runs of the floor's mean, low and high band edge (of CoV or of S_n).
-ordered_json FloorStat(const std::vector<SegregationRun>& runs, int species, const FloorOf& of,
+FloorEstimate FloorStat(const std::vector<SegregationRun>& runs, int species, const FloorOf& of,
                        bool s_n) {
   std::vector<double> mean, low, high;
   for (const SegregationRun& run : runs) {
@@ -51,10 +55,9 @@ ordered_json FloorStat(const std::vector<SegregationRun>& runs, int species, con
     high.push_back(s_n ? f->s_n_high : f->cov_high);
   }
   auto average = [](const std::vector<double>& v) {
-    return v.empty() ? ordered_json(nullptr) : ordered_json(objectives::Summarise(v).mean);
+    return v.empty() ? 0.0 : objectives::Summarise(v).mean;
   };
-  return {
-      {"mean", average(mean)}, {"low", average(low)}, {"high", average(high)}, {"n", mean.size()}};
+  return {average(mean), average(low), average(high), mean.size()};
 }
 
 const objectives::IndexFloor* FloorNumber(const objectives::RegionFloor& region, int species) {
@@ -66,11 +69,11 @@ const objectives::IndexFloor* FloorMass(const objectives::RegionFloor& region, i
                                                            : nullptr;
 }
 
-// The floor keys beside the indices of one region: cov_<region>_floor, s_n_<region>_floor.
+// The floors beside the indices of one region: cov_<region>_floor, s_n_<region>_floor.
 void AddFloor(const std::vector<SegregationRun>& runs, int k, const std::string& region,
-              const FloorOf& of, ordered_json* j) {
-  (*j)["cov_" + region + "_floor"] = FloorStat(runs, k, of, false);
-  (*j)["s_n_" + region + "_floor"] = FloorStat(runs, k, of, true);
+              const FloorOf& of, SegregationSpeciesResult* out) {
+  out->floors.emplace_back("cov_" + region + "_floor", FloorStat(runs, k, of, false));
+  out->floors.emplace_back("s_n_" + region + "_floor", FloorStat(runs, k, of, true));
 }
 
 const SegregationIndex* Number(const objectives::RegionSegregation& region, int species) {
@@ -82,49 +85,66 @@ const SegregationIndex* Mass(const objectives::RegionSegregation& region, int sp
                                                            : nullptr;
 }
 
-ordered_json SpeciesJson(const std::vector<SegregationRun>& runs, int k, const std::string& name,
-                         int layers) {
+SegregationSpeciesResult SpeciesResult(const std::vector<SegregationRun>& runs, int k,
+                                       const std::string& name, int layers) {
   const IndexOf front = [](const HeapSegregation& h, int s) { return Number(h.front, s); };
   const IndexOf back = [](const HeapSegregation& h, int s) { return Number(h.back, s); };
   const IndexOf whole = [](const HeapSegregation& h, int s) { return Mass(h.whole, s); };
-  ordered_json j;
-  j["species"] = name;
-  j["cov_2d_front"] = IndexStat(runs, k, front, &SegregationIndex::cov_m);
-  j["cov_r_2d_front"] = IndexStat(runs, k, front, &SegregationIndex::cov_r);
-  j["s_n_2d_front"] = IndexStat(runs, k, front, &SegregationIndex::s_n);
-  j["cov_2d_back"] = IndexStat(runs, k, back, &SegregationIndex::cov_m);
-  j["cov_r_2d_back"] = IndexStat(runs, k, back, &SegregationIndex::cov_r);
-  j["s_n_2d_back"] = IndexStat(runs, k, back, &SegregationIndex::s_n);
-  j["cov_3d"] = IndexStat(runs, k, whole, &SegregationIndex::cov_m);
-  j["cov_r_3d"] = IndexStat(runs, k, whole, &SegregationIndex::cov_r);
-  j["s_n_3d"] = IndexStat(runs, k, whole, &SegregationIndex::s_n);
-  j["mean_mass_fraction_3d"] = IndexStat(runs, k, whole, &SegregationIndex::mean_fraction);
+  SegregationSpeciesResult out;
+  out.species = name;
+  auto add = [&](const char* index, const IndexOf& of, double SegregationIndex::*value) {
+    out.indices.push_back({index, IndexStat(runs, k, of, value)});
+  };
+  add("cov_2d_front", front, &SegregationIndex::cov_m);
+  add("cov_r_2d_front", front, &SegregationIndex::cov_r);
+  add("s_n_2d_front", front, &SegregationIndex::s_n);
+  add("cov_2d_back", back, &SegregationIndex::cov_m);
+  add("cov_r_2d_back", back, &SegregationIndex::cov_r);
+  add("s_n_2d_back", back, &SegregationIndex::s_n);
+  add("cov_3d", whole, &SegregationIndex::cov_m);
+  add("cov_r_3d", whole, &SegregationIndex::cov_r);
+  add("s_n_3d", whole, &SegregationIndex::s_n);
+  add("mean_mass_fraction_3d", whole, &SegregationIndex::mean_fraction);
   std::vector<double> outflow;  // of all that left the funnel (Fig. 16's average level)
   for (const SegregationRun& run : runs)
     if (run.ok() && k < static_cast<int>(run.outflow_mass_fraction.size()))
       outflow.push_back(run.outflow_mass_fraction[k]);
-  j["outflow_mass_fraction"] = Stat(outflow);
+  out.indices.push_back({"outflow_mass_fraction", objectives::Summarise(outflow)});
   using objectives::HeapFloor;
   AddFloor(
-      runs, k, "2d_front", [](const HeapFloor& f, int s) { return FloorNumber(f.front, s); }, &j);
+      runs, k, "2d_front", [](const HeapFloor& f, int s) { return FloorNumber(f.front, s); }, &out);
   AddFloor(
-      runs, k, "2d_back", [](const HeapFloor& f, int s) { return FloorNumber(f.back, s); }, &j);
+      runs, k, "2d_back", [](const HeapFloor& f, int s) { return FloorNumber(f.back, s); }, &out);
   AddFloor(
-      runs, k, "3d", [](const HeapFloor& f, int s) { return FloorMass(f.whole, s); }, &j);
-  ordered_json per_layer = ordered_json::array();
+      runs, k, "3d", [](const HeapFloor& f, int s) { return FloorMass(f.whole, s); }, &out);
   for (int layer = 0; layer < layers; ++layer) {
     const IndexOf of = [layer](const HeapSegregation& h, int s) -> const SegregationIndex* {
       return layer < static_cast<int>(h.layers.size()) ? Mass(h.layers[layer], s) : nullptr;
     };
-    ordered_json l = IndexStat(runs, k, of, &SegregationIndex::cov_m);
-    l["layer"] = layer + 1;
-    l["floor"] = FloorStat(
+    LayerEstimate l;
+    l.cov = IndexStat(runs, k, of, &SegregationIndex::cov_m);
+    l.floor = FloorStat(
         runs, k,
         [layer](const objectives::HeapFloor& f, int s) -> const objectives::IndexFloor* {
           return layer < static_cast<int>(f.layers.size()) ? FloorMass(f.layers[layer], s)
                                                            : nullptr;
         },
         false);
+    out.cov_per_layer_3d.push_back(l);
+  }
+  return out;
+}
+
+ordered_json SpeciesJson(const SegregationSpeciesResult& s) {
+  ordered_json j;
+  j["species"] = s.species;
+  for (const NamedEstimate& index : s.indices) j[index.name] = StatJson(index.value);
+  for (const auto& [name, floor] : s.floors) j[name] = FloorJson(floor);
+  ordered_json per_layer = ordered_json::array();
+  for (size_t layer = 0; layer < s.cov_per_layer_3d.size(); ++layer) {
+    ordered_json l = StatJson(s.cov_per_layer_3d[layer].cov);
+    l["layer"] = layer + 1;
+    l["floor"] = FloorJson(s.cov_per_layer_3d[layer].floor);
     per_layer.push_back(l);
   }
   j["cov_per_layer_3d"] = per_layer;
@@ -187,9 +207,56 @@ ordered_json RunJson(int replicate, const SegregationRun& run) {
 
 }  // namespace
 
-ordered_json SegregationResultJson(const objectives::SegregationSettings& settings,
-                                   const std::vector<std::string>& species_names,
-                                   const std::vector<SegregationRun>& runs) {
+const objectives::Summary* SegregationSpeciesResult::Index(const std::string& name) const {
+  for (const NamedEstimate& index : indices)
+    if (index.name == name) return &index.value;
+  return nullptr;
+}
+
+const FloorEstimate* SegregationSpeciesResult::Floor(const std::string& name) const {
+  for (const auto& [floor_name, floor] : floors)
+    if (floor_name == name) return &floor;
+  return nullptr;
+}
+
+std::vector<NamedEstimate> SegregationResult::Values() const {
+  std::vector<NamedEstimate> values = {
+      {"mixture_angle_deg", mixture_angle_deg},
+      {"discharge_time_s", discharge_time_s},
+      {"penetration_depth_diameters", penetration_depth_diameters}};
+  for (const SegregationSpeciesResult& s : species)
+    for (const NamedEstimate& index : s.indices)
+      values.push_back({s.species + "." + index.name, index.value});
+  return values;
+}
+
+SegregationResult SummariseSegregation(const objectives::SegregationSettings& settings,
+                                       const std::vector<std::string>& species_names,
+                                       std::vector<SegregationRun> runs) {
+  SegregationResult out;
+  out.settings = settings;
+  std::vector<double> angles, discharge, depths;
+  for (const SegregationRun& run : runs) {
+    if (!run.ok()) continue;
+    ++out.replicates_ok;
+    if (run.angle.ok) angles.push_back(run.angle.angle_deg);
+    discharge.push_back(run.discharge_time_s);
+    for (const objectives::TrackedGranule& g : run.tracked)
+      if (g.penetration) depths.push_back(g.penetration->depth_diameters);
+  }
+  for (size_t k = 0; k < species_names.size(); ++k)
+    out.species.push_back(
+        SpeciesResult(runs, static_cast<int>(k), species_names[k], settings.bins.layers));
+  out.mixture_angle_deg = objectives::Summarise(angles);
+  out.discharge_time_s = objectives::Summarise(discharge);
+  out.tracked_species = species_names.at(settings.TrackedSpecies());
+  out.penetration_depth_diameters = objectives::Summarise(depths);
+  out.runs = std::move(runs);
+  return out;
+}
+
+ordered_json SegregationResultJson(const SegregationResult& r) {
+  const objectives::SegregationSettings& settings = r.settings;
   ordered_json result;
   result["basis"] = {{"2d", "number fraction"}, {"3d", "mass fraction"}};
   result["noise_floor"] = {
@@ -200,29 +267,17 @@ ordered_json SegregationResultJson(const objectives::SegregationSettings& settin
       {"band", settings.floor.band}};
   result["funnel"] = settings.funnel.enabled;
   result["heap_feed_mass_kg"] = settings.feed.mass_kg;
-  std::vector<double> angles, discharge, depths;
-  int ok = 0;
-  for (const SegregationRun& run : runs) {
-    if (!run.ok()) continue;
-    ++ok;
-    if (run.angle.ok) angles.push_back(run.angle.angle_deg);
-    discharge.push_back(run.discharge_time_s);
-    for (const objectives::TrackedGranule& g : run.tracked)
-      if (g.penetration) depths.push_back(g.penetration->depth_diameters);
-  }
-  result["replicates_ok"] = ok;
+  result["replicates_ok"] = r.replicates_ok;
   ordered_json species = ordered_json::array();
-  for (size_t k = 0; k < species_names.size(); ++k)
-    species.push_back(
-        SpeciesJson(runs, static_cast<int>(k), species_names[k], settings.bins.layers));
+  for (const SegregationSpeciesResult& s : r.species) species.push_back(SpeciesJson(s));
   result["species"] = species;
-  result["mixture_angle_deg"] = Stat(angles);
-  result["discharge_time_s"] = Stat(discharge);
-  result["tracked_species"] = species_names.at(settings.TrackedSpecies());
-  result["penetration_depth_diameters"] = Stat(depths);
+  result["mixture_angle_deg"] = StatJson(r.mixture_angle_deg);
+  result["discharge_time_s"] = StatJson(r.discharge_time_s);
+  result["tracked_species"] = r.tracked_species;
+  result["penetration_depth_diameters"] = StatJson(r.penetration_depth_diameters);
   ordered_json runs_json = ordered_json::array();
-  for (size_t r = 0; r < runs.size(); ++r)
-    runs_json.push_back(RunJson(static_cast<int>(r), runs[r]));
+  for (size_t k = 0; k < r.runs.size(); ++k)
+    runs_json.push_back(RunJson(static_cast<int>(k), r.runs[k]));
   result["runs"] = runs_json;
   return result;
 }

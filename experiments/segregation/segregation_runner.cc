@@ -6,7 +6,6 @@
 #include <string>
 #include <vector>
 
-#include "outputs/exit_codes.h"
 #include "experiments/common/experiment_setup.h"
 #include "files/json_document.h"
 #include "experiments/segregation/segregation_section.h"
@@ -67,33 +66,35 @@ core::Scene BuildScene(const core::Scene& model, const SegregationSettings& sett
 
 }  // namespace
 
-int RunSegregationExperiment(const ExperimentFile& file, const ExperimentContext& context,
-                             std::ostream& log) {
+SegregationResult RunSegregationExperiment(const ExperimentFile& file,
+                                           const ExperimentContext& context, std::ostream& log) {
   PreparedExperiment<SegregationSettings> prepared;
   if (!PrepareExperiment(file, context, ParseSegregationSection, BuildScene, &prepared, log))
-    return kExitInvalidInput;
+    return {};
   const SegregationSettings& settings = prepared.settings;
   const std::vector<std::string> names = SpeciesNames(prepared.model);
   std::vector<std::string> output_errors;
-  const std::vector<SegregationRun> runs = RunPreparedReplicates(
+  std::vector<SegregationRun> runs = RunPreparedReplicates(
       file, context, prepared, "heap", objectives::RunSegregation,
       [&](int r, const SegregationRun& run, std::string* error) {
         if (error->empty()) WriteRunFiles(context.out_dir, r, run, names, error);
       },
       &output_errors, log);
+  SegregationResult out = SummariseSegregation(settings, names, std::move(runs));
   nlohmann::ordered_json result = ResultHeader(file, context);
-  result.update(SegregationResultJson(settings, names, runs));
+  result.update(SegregationResultJson(out));
   std::string error = FirstError(output_errors);
   if (!error.empty() || !WriteJsonFile(context.out_dir + "/result.json", result, &error)) {
     log << "error: " << error << "\n";
-    return kExitOutputError;
+    out.status = ExperimentStatus::kOutputError;
+    return out;
   }
-  const int ok = result["replicates_ok"].get<int>();
-  log << "segregation: " << ok << " of " << context.replicates << " replicates ok";
-  for (const SegregationRun& run : runs)
+  log << "segregation: " << out.replicates_ok << " of " << context.replicates << " replicates ok";
+  for (const SegregationRun& run : out.runs)
     if (!run.ok()) log << "; seed " << run.seed << ": " << run.Status();
   log << " -> " << context.out_dir << "/result.json\n";
-  return ok > 0 ? kExitOk : kExitRunFailed;
+  out.status = out.replicates_ok > 0 ? ExperimentStatus::kOk : ExperimentStatus::kRunFailed;
+  return out;
 }
 
 }  // namespace demcal::workflow

@@ -1,13 +1,15 @@
 #pragma once
-// The `demcal experiment segregation` runner (segregation_runner.cc): replicates of the file's run, their
-// tables and pictures, DIR/result.json; a process exit code (outputs/exit_codes.h).
+// The `demcal experiment segregation` runner (segregation_runner.cc): replicates of the file's
+// run, their tables and pictures, DIR/result.json written from the returned SegregationResult
+// (segregation_result.h).
 #include <ostream>
 
 #include "experiments/common/experiment_runner.h"
+#include "experiments/segregation/segregation_result.h"
 
 namespace demcal::workflow {
 
-int RunSegregationExperiment(const ExperimentFile& file, const ExperimentContext& context,
-                     std::ostream& log);
+SegregationResult RunSegregationExperiment(const ExperimentFile& file,
+                                           const ExperimentContext& context, std::ostream& log);
 
 }  // namespace demcal::workflow

@@ -108,10 +108,16 @@ std::vector<calibrate::TargetGain> CandidateGains(const StudyFile& st, const cal
 }
 
 struct Outcome {
-  int exit_code = kExitOk;
-  calibrate::CalibrationSummary summary;
+  CalibrationResult result;
   double wall_per_run_s = 0;  // mean wall time of the replicate runs made now (cost per heap)
 };
+
+Outcome Failed(CalibrationStatus status, const calibrate::CalibrationSummary& summary = {}) {
+  Outcome out;
+  out.result.status = status;
+  out.result.summary = summary;
+  return out;
+}
 
 double WallPerRun(const calibrate::TargetEvaluator& evaluator) {
   double wall = 0;
@@ -124,25 +130,24 @@ double WallPerRun(const calibrate::TargetEvaluator& evaluator) {
 }
 
 // One calibration of the study's continuous parameters into dir (with its own journal).
-Outcome CalibrateInto(const StudyFile& st, const CalibrateOptions& o, int clumps, const std::string& dir,
-                      std::ostream& log) {
-  Outcome out;
+Outcome CalibrateInto(const StudyFile& st, const CalibrateSettings& o, int clumps,
+                      const std::string& dir, std::ostream& log) {
   std::string error;
   StudyRuns runs;
   if (!BuildStudyRuns(st, o.quick, clumps, &runs, &error)) {
     log << "error: " << error << "\n";
-    return {kExitInvalidInput, {}};
+    return Failed(CalibrationStatus::kInvalidInput);
   }
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) {
     log << "error: --out: cannot create '" << dir << "': " << ec.message() << "\n";
-    return {kExitOutputError, {}};
+    return Failed(CalibrationStatus::kOutputError);
   }
   calibrate::EvaluationJournal journal;
   if (!journal.Open(dir + "/journal.jsonl", runs.fingerprint, &error, st.space.Size())) {
     log << "error: " << error << "\n";
-    return {kExitInvalidInput, {}};
+    return Failed(CalibrationStatus::kInvalidInput);
   }
   if (!o.quiet && journal.LoadedRecords() > 0)
     log << "calibrate: resuming: " << journal.LoadedRecords() << " replicate runs in " << journal.path() << "\n";
@@ -157,48 +162,81 @@ Outcome CalibrateInto(const StudyFile& st, const CalibrateOptions& o, int clumps
   for (const StudyTarget& t : st.targets) targets.push_back(t.target);
   const auto start = std::chrono::steady_clock::now();
   const int budget = options.optimiser_options.max_evaluations;
-  out.summary = calibrate::Calibrate(evaluator, st.space, targets, options,
-                                     o.quiet ? calibrate::CandidateProgress{} : ProgressLine(st, budget, log));
-  if (out.summary.termination == calibrate::Termination::kInvalid) {
-    log << "error: " << st.source << ": " << out.summary.message << "\n";
-    return {kExitInvalidInput, out.summary};
+  const calibrate::CalibrationSummary summary = calibrate::Calibrate(
+      evaluator, st.space, targets, options,
+      o.quiet ? calibrate::CandidateProgress{} : ProgressLine(st, budget, log));
+  if (summary.termination == calibrate::Termination::kInvalid) {
+    log << "error: " << st.source << ": " << summary.message << "\n";
+    return Failed(CalibrationStatus::kInvalidInput, summary);
   }
   CalibrationRunInfo info{&st, runs.fidelities.front(), replicates, seed,
                           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
-                          clumps, &inner, CandidateGains(st, out.summary, evaluator)};
-  if (!o.quiet) log << out.summary.BriefReport(st.space);
-  if (!WriteCalibrationOutputs(dir, info, out.summary, &error)) {
+                          clumps, &inner, CandidateGains(st, summary, evaluator)};
+  if (!o.quiet) log << summary.BriefReport(st.space);
+  if (!WriteCalibrationOutputs(dir, info, summary, &error)) {
     log << "error: " << error << "\n";
-    return {kExitOutputError, out.summary};
+    return Failed(CalibrationStatus::kOutputError, summary);
   }
-  if (!out.summary.journal_error.empty()) log << "warning: " << out.summary.journal_error << "\n";
-  out.exit_code = out.summary.ok() ? kExitOk : kExitRunFailed;
+  if (!summary.journal_error.empty()) log << "warning: " << summary.journal_error << "\n";
+  Outcome out;
+  out.result = CalibrationResultOf(st, summary);
+  out.result.status = summary.ok() ? CalibrationStatus::kMatched : CalibrationStatus::kNotMatched;
+  out.result.out_dir = dir;
+  out.result.clump_count = clumps;
   out.wall_per_run_s = WallPerRun(inner);
   return out;
 }
 
 // The paper's section 2.4: calibrate at each clump count, then judge the table: the smallest
 // count that matches is chosen, and the counts the data do not exclude are named as not told
-// apart (JudgeClumpCounts).
-int RunClumpCountLoop(const StudyFile& st, const CalibrateOptions& o, std::ostream& log) {
+// apart (JudgeClumpCounts). The result is the chosen count's (the largest count's when none
+// matched) with the table.
+CalibrationResult RunClumpCountLoop(const StudyFile& st, const CalibrateSettings& o,
+                                    std::ostream& log) {
   std::vector<ClumpCountRow> rows;
+  std::vector<CalibrationResult> per_count;
   for (int n : st.clump_count.counts) {
     if (!o.quiet) log << "calibrate: clump count " << n << " (" << st.clump_count.species << ")\n";
-    const Outcome r = CalibrateInto(st, o, n, o.out_dir + "/clumps_" + std::to_string(n), log);
-    if (r.exit_code == kExitInvalidInput || r.exit_code == kExitOutputError) return r.exit_code;
-    rows.push_back(ClumpCountRowOf(n, r.summary, r.wall_per_run_s));
+    Outcome r = CalibrateInto(st, o, n, o.out_dir + "/clumps_" + std::to_string(n), log);
+    if (r.result.status == CalibrationStatus::kInvalidInput ||
+        r.result.status == CalibrationStatus::kOutputError)
+      return r.result;
+    rows.push_back(ClumpCountRowOf(n, r.result.summary, r.wall_per_run_s));
+    per_count.push_back(std::move(r.result));
   }
   const ClumpCountVerdict verdict = JudgeClumpCounts(rows);
   std::string error;
   if (!WriteClumpCountOutputs(o.out_dir, st, rows, verdict, &error)) {
     log << "error: " << error << "\n";
-    return kExitOutputError;
+    return Failed(CalibrationStatus::kOutputError).result;
   }
   if (!o.quiet) log << "calibrate: clump count: " << verdict.note << " (clump_count.csv)\n";
-  return verdict.chosen > 0 ? kExitOk : kExitRunFailed;
+  size_t shown = per_count.size() - 1;
+  for (size_t k = 0; k < per_count.size(); ++k)
+    if (per_count[k].clump_count == verdict.chosen) shown = k;
+  CalibrationResult result = std::move(per_count[shown]);
+  result.status = verdict.chosen > 0 ? CalibrationStatus::kMatched : CalibrationStatus::kNotMatched;
+  result.clump_count = verdict.chosen > 0 ? verdict.chosen : 0;
+  result.clump_counts = std::move(rows);
+  return result;
 }
 
 }  // namespace
+
+CalibrationResult CalibrateStudy(const StudyFile& study, const CalibrateSettings& settings,
+                                 std::ostream& log) {
+  OutputLock lock;  // one process per output directory (this also creates it)
+  std::string error;
+  if (!LockOutputDirectory(settings.out_dir, "demcal calibrate " + study.source, &lock, &error)) {
+    log << "error: --out: " << error << "\n";
+    CalibrationResult refused;
+    refused.status = CalibrationStatus::kOutputUnavailable;
+    refused.message = "--out: " + error;
+    return refused;
+  }
+  if (study.clump_count.enabled()) return RunClumpCountLoop(study, settings, log);
+  return CalibrateInto(study, settings, 0, settings.out_dir, log).result;
+}
 
 int RunCalibrate(const CalibrateOptions& options, std::ostream& log) {
   StudyFile study;
@@ -207,13 +245,12 @@ int RunCalibrate(const CalibrateOptions& options, std::ostream& log) {
     log << "error: " << error << "\n";
     return kExitInvalidInput;
   }
-  OutputLock lock;  // one process per output directory (this also creates it)
-  if (!LockOutputDirectory(options.out_dir, "demcal calibrate " + options.study_path, &lock, &error)) {
-    log << "error: --out: " << error << "\n";
-    return kExitInvalidInput;
-  }
-  if (study.clump_count.enabled()) return RunClumpCountLoop(study, options, log);
-  return CalibrateInto(study, options, 0, options.out_dir, log).exit_code;
+  const CalibrateSettings settings{.out_dir = options.out_dir,
+                                   .quick = options.quick,
+                                   .max_evaluations = options.max_evaluations,
+                                   .threads = options.threads,
+                                   .quiet = options.quiet};
+  return ExitCodeOf(CalibrateStudy(study, settings, log).status);
 }
 
 }  // namespace demcal::workflow

@@ -121,9 +121,8 @@ bool ResolveSpaceFor(const StudyFile& study, const core::Scene& model, calibrate
   return true;
 }
 
-bool LoadStudyFile(const std::string& path, StudyFile* out, std::string* error) {
-  nlohmann::json doc;
-  if (!ReadJsonFile(path, "study file", &doc, error)) return false;
+bool ParseStudyJson(const nlohmann::json& doc, const std::string& path, StudyFile* out,
+                    std::string* error) {
   *out = StudyFile{};
   out->source = path;
   JsonStatus status;
@@ -159,6 +158,11 @@ bool LoadStudyFile(const std::string& path, StudyFile* out, std::string* error) 
     return *error = path + ": optimiser.name: 'bracket' fits exactly one parameter; use ceres, "
                            "differential_evolution or an nlopt_* optimiser", false;
   return true;
+}
+
+bool LoadStudyFile(const std::string& path, StudyFile* out, std::string* error) {
+  nlohmann::json doc;
+  return ReadJsonFile(path, "study file", &doc, error) && ParseStudyJson(doc, path, out, error);
 }
 
 }  // namespace demcal::workflow

@@ -8,6 +8,9 @@
 //  - "demcal-study/1" (one experiment file, one measurement): read as a study with one target.
 // Paths are relative to the study file's folder.
 //
+// The parsed study holds every experiment file and measurement it names, read once: it is a
+// self-contained value (CalibrateStudy, run_study.h, reads no path of it again).
+//
 //   StudyFile study;  std::string error;
 //   if (!LoadStudyFile(path, &study, &error)) { std::cerr << error; }
 #include <cstdint>
@@ -75,6 +78,10 @@ struct StudyFile {
 };
 
 bool LoadStudyFile(const std::string& path, StudyFile* out, std::string* error);
+// A study document already in memory; `path` is where it lives or would live: its relative
+// paths resolve against that folder, and messages and result.json name it.
+bool ParseStudyJson(const nlohmann::json& document, const std::string& path, StudyFile* out,
+                    std::string* error);
 
 // The study's parameter space with material indices of `model` (materials found by name).
 bool ResolveSpaceFor(const StudyFile& study, const core::Scene& model,

@@ -30,12 +30,9 @@ bool SetClumpCount(const ClumpCountSearch& search, int n, core::Scene* model, st
 // bounds or budgets).
 std::string Fingerprint(const StudyFile& study, const StudyRuns& runs, uint64_t seed, int clumps) {
   std::ostringstream text;
-  for (size_t k = 0; k < study.experiments.size(); ++k) {
-    nlohmann::json doc;
-    std::string ignored;
-    ReadJsonFile(study.experiments[k].path, "experiment file", &doc, &ignored);
-    text << doc.dump() << "|" << FidelityJson(runs.fidelities[k]).dump() << "|";
-  }
+  for (size_t k = 0; k < study.experiments.size(); ++k)
+    text << study.experiments[k].file.document.dump() << "|"
+         << FidelityJson(runs.fidelities[k]).dump() << "|";
   text << "seed=" << seed << "|clumps=" << clumps;
   for (size_t k = 0; k < study.space.parameters.size(); ++k) {
     const calibrate::Parameter& p = study.space.parameters[k];

@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <limits>
 
 #include "workflow/calibration/run_study.h"
 #include "outputs/exit_codes.h"
@@ -12,11 +11,6 @@ namespace demcal::workflow {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-double Num(const nlohmann::json& j, const char* key) {
-  return j.contains(key) && j[key].is_number() ? j[key].get<double>() : kNaN;
-}
 
 // " at coating_PEG_wt_pct 0.5" (empty for no condition).
 std::string ConditionText(const nlohmann::json& conditions) {
@@ -51,39 +45,24 @@ nlohmann::ordered_json StudyJson(const CalibrationStep& s) {
   return study;
 }
 
-// result.json of the run (of the chosen count with a clump loop).
-bool ReadOutcome(const CalibrationStep& step, CalibrationOutcome* o, std::string* error) {
-  o->result_dir = step.dir;
-  if (!step.clump_counts.empty()) {
-    nlohmann::json table;
-    if (!ReadJsonFile(step.dir + "/clump_count.json", "clump count table", &table, error))
-      return false;
-    o->clump_count = table["chosen"].is_number() ? table["chosen"].get<int>() : 0;
-    int shown = o->clump_count > 0 ? o->clump_count : step.clump_counts.back();
-    o->result_dir = step.dir + "/clumps_" + std::to_string(shown);
+// The outcome of a step from the typed result (of the chosen count with a clump loop).
+void FillOutcome(const StudyFile& study, const CalibrationResult& r, CalibrationOutcome* o) {
+  o->termination = r.termination;
+  o->message = r.message;
+  o->clump_count = r.clump_count;
+  o->result_dir = r.out_dir;
+  if (!r.parameters.empty()) {
+    o->value = r.parameters[0].value;
+    o->sigma = r.parameters[0].sigma;
   }
-  nlohmann::json r;
-  if (!ReadJsonFile(o->result_dir + "/result.json", "calibration result", &r, error)) return false;
-  const nlohmann::json& termination = r.contains("termination") ? r["termination"] : nlohmann::json();
-  if (!termination.is_string() ||
-      !calibrate::ParseTermination(termination.get<std::string>(), &o->termination))
-    return *error = o->result_dir + "/result.json: no known termination", false;
-  o->message = r.value("message", "");
-  if (r.contains("parameters") && !r["parameters"].empty()) {
-    o->value = Num(r["parameters"][0], "value");
-    o->sigma = Num(r["parameters"][0], "sigma");
+  if (!r.targets.empty()) {
+    const CalibratedTarget& t = r.targets[0];
+    o->measured = t.measured;
+    o->uncertainty = t.uncertainty;
+    o->simulated = t.simulated;
+    o->sem = t.sem;
   }
-  if (r.contains("targets") && !r["targets"].empty()) {
-    const auto& t = r["targets"][0];
-    o->measured = Num(t, "measured");
-    o->uncertainty = Num(t, "uncertainty");
-    o->simulated = Num(t, "simulated");
-    o->sem = Num(t, "sem");
-  }
-  if (r.contains("provenance") && r["provenance"].contains("targets") &&
-      !r["provenance"]["targets"].empty())
-    o->provenance = r["provenance"]["targets"][0].value("provenance", "");
-  return true;
+  if (!study.targets.empty()) o->provenance = study.targets[0].provenance;
 }
 
 nlohmann::json NumOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
@@ -104,21 +83,27 @@ bool RunCalibrationStep(const ReproduceContext& ctx, const CalibrationStep& step
   fs::create_directories(step.dir, ec);
   if (ec) return *error = "cannot create '" + step.dir + "': " + ec.message(), false;
   const std::string study_path = step.dir + "/study.json";
-  if (!WriteJsonFile(study_path, StudyJson(step), error)) return false;
-  CalibrateOptions options;
-  options.study_path = study_path;
-  options.out_dir = step.dir;
-  options.quick = ctx.quick;
-  options.threads = ctx.threads;
-  options.quiet = ctx.quiet;
+  const nlohmann::ordered_json document = StudyJson(step);
+  if (!WriteJsonFile(study_path, document, error)) return false;  // the record of what ran
   *out = CalibrationOutcome{};
-  out->exit_code = RunCalibrate(options, *ctx.log);
+  StudyFile study;
+  std::string refused;
+  if (!ParseStudyJson(nlohmann::json::parse(document.dump()), study_path, &study, &refused)) {
+    *ctx.log << "error: " << refused << "\n";
+    out->exit_code = kExitInvalidInput;
+  } else {
+    const CalibrateSettings settings{
+        .out_dir = step.dir, .quick = ctx.quick, .threads = ctx.threads, .quiet = ctx.quiet};
+    const CalibrationResult result = CalibrateStudy(study, settings, *ctx.log);
+    out->exit_code = ExitCodeOf(result.status);
+    FillOutcome(study, result, out);
+  }
   if (out->exit_code != kExitOk && out->exit_code != kExitRunFailed) {
     *error = "calibration in '" + step.dir + "' failed with exit code " +
              std::to_string(out->exit_code) + " (its message is above)";
     return false;
   }
-  return ReadOutcome(step, out, error);
+  return true;
 }
 
 }  // namespace demcal::workflow

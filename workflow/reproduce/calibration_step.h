@@ -1,10 +1,12 @@
 #pragma once
-// One calibration of `demcal reproduce` (a species' friction, Γ at one coating level): written
-// as a demcal-study/2 file into its own folder and run by the calibration layer (RunCalibrate,
-// workflow/calibration/run_study.h) with that folder as its --out, so its evaluation journal,
+// One calibration of `demcal reproduce` (a species' friction, Γ at one coating level): built
+// as a demcal-study/2 document, written into its own folder as the record of what ran, parsed
+// into a StudyFile and run by the calibration layer's front door (CalibrateStudy,
+// workflow/calibration/run_study.h) with that folder as its output, so its evaluation journal,
 // result.json, calibrated_params.json/.liggghts and plots land there, and a rerun after a kill
-// resumes inside it. One parameter, one angle target, the `bracket` optimiser (regula falsi that
-// stops when the angle is matched within noise; docs/calibration.md).
+// resumes inside it; the outcome comes from the returned CalibrationResult. One parameter, one
+// angle target, the `bracket` optimiser (regula falsi that stops when the angle is matched
+// within noise; docs/calibration.md).
 //
 //   CalibrationStep step{.dir = ctx.StageDir("species") + "/BP", ...};
 //   CalibrationOutcome o;
@@ -34,7 +36,7 @@ struct CalibrationStep {
 };
 
 struct CalibrationOutcome {
-  int exit_code = 0;             // RunCalibrate's: 0 matched, 3 not matched (see termination)
+  int exit_code = 0;             // `demcal calibrate`'s: 0 matched, 3 not matched (see termination)
   calibrate::Termination termination = calibrate::Termination::kFailed;
   std::string message;
   double value = 0, sigma = 0;   // the calibrated parameter (sigma NaN: not determined)

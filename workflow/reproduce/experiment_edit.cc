@@ -23,6 +23,13 @@ bool ReadExperimentJson(const std::string& path, nlohmann::ordered_json* out, st
   return true;
 }
 
+bool ParseEditedExperiment(const nlohmann::ordered_json& experiment, const std::string& source,
+                           ExperimentFile* out, std::string* error) {
+  // Through its text, so numbers take the types a reader of the written copy sees (an edited
+  // integer is signed in memory, unsigned once read back) and the run is the copy's run.
+  return ParseExperimentJson(nlohmann::json::parse(experiment.dump()), source, out, error);
+}
+
 void SetPairProperty(nlohmann::ordered_json* experiment, const std::string& a, const std::string& b,
                      const std::string& key, double value) {
   nlohmann::ordered_json& interactions = (*experiment)["interactions"];

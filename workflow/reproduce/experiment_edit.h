@@ -1,20 +1,29 @@
 #pragma once
 // Editing a demcal-experiment/1 file as JSON for the stages of `demcal reproduce`: a stage takes
 // a bundled or user experiment file, puts the values calibrated so far into it (pair properties
-// of interactions.pairs), and writes the edited copy into its own output folder, where it is
-// both the input of the run and the record of what was run. Only keys of the file format are
-// written, so the copy is validated by the ordinary reader when it is run.
+// of interactions.pairs), parses the edited copy with the ordinary reader into the
+// ExperimentFile it runs, and writes the copy into its own output folder as the record of what
+// was run. Only keys of the file format are written, so the reader validates the copy.
 //
 //   nlohmann::json e;
 //   if (!ReadExperimentJson(path, &e, &error)) ...;
 //   SetPairProperty(&e, "EP", "EP", "interfacial_energy_J_m2", 0.046);
 //   WriteJsonFile(dir + "/experiment.json", e, &error);
+//   ExperimentFile file;
+//   if (!ParseEditedExperiment(e, dir + "/experiment.json", &file, &error)) ...;
 #include <nlohmann/json.hpp>
 #include <string>
+
+#include "experiments/common/experiment_file.h"
 
 namespace demcal::workflow {
 
 bool ReadExperimentJson(const std::string& path, nlohmann::ordered_json* out, std::string* error);
+
+// The edited document as the experiment file it describes; `source` names it in messages and in
+// result.json (the path of its written copy).
+bool ParseEditedExperiment(const nlohmann::ordered_json& experiment, const std::string& source,
+                           ExperimentFile* out, std::string* error);
 
 // Sets `key` of the (a, b) pair in interactions.pairs (either order), adding the pair (with only
 // this key; the file's default fills the rest) if it is not listed.

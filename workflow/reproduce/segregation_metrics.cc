@@ -14,9 +14,12 @@ const char* const kIndices[] = {"cov_2d_front", "cov_r_2d_front", "s_n_2d_front"
                                 "s_n_2d_back",  "cov_3d",         "cov_r_3d",     "s_n_3d",
                                 "outflow_mass_fraction"};
 
-nlohmann::json MeanOf(const nlohmann::json& stat) {
-  return stat.is_object() && stat.contains("mean") ? stat["mean"] : nlohmann::json();
+nlohmann::json MeanOf(const objectives::Summary* s) {
+  return s && s->n > 0 ? nlohmann::json(s->mean) : nlohmann::json();
 }
+
+// A run's number as its result.json holds it: null where it is not finite.
+nlohmann::json Finite(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
 
 // mean and sem of a summarised metric; NaN when absent.
 std::pair<double, double> Get(const nlohmann::json& scenario, const std::string& metric) {
@@ -43,33 +46,32 @@ void MarkFeedLimited(const nlohmann::json& scenario, nlohmann::json* value) {
 
 }  // namespace
 
-nlohmann::json ExtractSegregationMetrics(const nlohmann::json& r) {
+nlohmann::json ExtractSegregationMetrics(const SegregationResult& r) {
   nlohmann::json m = nlohmann::json::object();
-  const nlohmann::json run = r.contains("runs") && !r["runs"].empty() ? r["runs"][0] : nlohmann::json();
-  m["status"] = run.is_object() ? run.value("status", "missing") : "missing";
+  const objectives::SegregationRun* run = r.runs.empty() ? nullptr : &r.runs.front();
+  m["status"] = run ? run->Status() : "missing";
   m["ok"] = m["status"] == "ok";
-  m["wall_time_s"] = run.is_object() && run.contains("wall_time_s") ? run["wall_time_s"] : nlohmann::json();
-  m["particles"] = run.is_object() && run.contains("particles") ? run["particles"] : nlohmann::json();
-  if (r.contains("species"))
-    for (const nlohmann::json& s : r["species"])
-      for (const char* index : kIndices) {
-        const std::string key = s["species"].get<std::string>() + "." + index;
-        m[key] = MeanOf(s[index]);
-        // The random-mixture noise floor of the same heap, where the run has one.
-        const std::string floor = std::string(index) + "_floor";
-        if (s.contains(floor)) m[key + "_floor"] = MeanOf(s[floor]);
-      }
-  m["mixture_angle_deg"] = r.contains("mixture_angle_deg") ? MeanOf(r["mixture_angle_deg"]) : nlohmann::json();
-  m["discharge_time_s"] = r.contains("discharge_time_s") ? MeanOf(r["discharge_time_s"]) : nlohmann::json();
-  if (run.is_object() && run.contains("funnel_feed_limited")) {  // 1/0: its mean is the fraction
-    m["funnel_feed_limited"] = run["funnel_feed_limited"].get<bool>() ? 1 : 0;
-    m["feed_duration_s"] = run["feed_duration_s"];
+  m["wall_time_s"] = run ? Finite(run->wall_time_s) : nlohmann::json();
+  m["particles"] = run ? nlohmann::json(run->particles) : nlohmann::json();
+  for (const SegregationSpeciesResult& s : r.species)
+    for (const char* index : kIndices) {
+      const std::string key = s.species + "." + index;
+      m[key] = MeanOf(s.Index(index));
+      // The random-mixture noise floor of the same heap, where the run has one.
+      if (const FloorEstimate* floor = s.Floor(std::string(index) + "_floor"))
+        m[key + "_floor"] = floor->n > 0 ? Finite(floor->mean) : nlohmann::json();
+    }
+  m["mixture_angle_deg"] = MeanOf(&r.mixture_angle_deg);
+  m["discharge_time_s"] = MeanOf(&r.discharge_time_s);
+  if (run) {  // 1/0: its mean is the fraction
+    m["funnel_feed_limited"] = run->funnel_feed_limited ? 1 : 0;
+    m["feed_duration_s"] = Finite(run->feed_duration_s);
   }
   std::vector<double> peaks;
-  if (run.is_object() && run.contains("tracked_granules"))
-    for (const nlohmann::json& g : run["tracked_granules"])
-      if (g["peak_specific_kinetic_J_kg"].is_number())
-        peaks.push_back(g["peak_specific_kinetic_J_kg"].get<double>());
+  if (run)
+    for (const objectives::TrackedGranule& g : run->tracked)
+      if (g.impact_sample && std::isfinite(g.peak_specific_kinetic_J_kg))
+        peaks.push_back(g.peak_specific_kinetic_J_kg);
   const objectives::Summary s = objectives::Summarise(peaks);
   m["impact_specific_kinetic_J_kg"] = s.n > 0 ? nlohmann::json(s.mean) : nlohmann::json();
   return m;

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "experiments/common/run_experiment.h"
+#include "experiments/common/experiment_file.h"
 #include "files/json_document.h"
 #include "workflow/reproduce/experiment_edit.h"
 #include "workflow/reproduce/stages.h"
@@ -43,18 +44,28 @@ bool RunFidelityCheckStage(ReproduceContext& ctx, nlohmann::json* result, std::s
   file["replicates"] = fc.replicates;
   const std::string dir = ctx.StageDir("fidelity_check");
   std::filesystem::create_directories(dir);
-  if (!WriteJsonFile(dir + "/experiment.json", file, error)) return false;
+  const std::string path = dir + "/experiment.json";
+  ExperimentFile experiment;
+  if (!WriteJsonFile(path, file, error) || !ParseEditedExperiment(file, path, &experiment, error))
+    return false;
+  if (experiment.experiment != "aor")
+    return *error = path + ": field 'experiment' = '" + experiment.experiment +
+                    "' but the fidelity check runs 'aor'", false;
   *ctx.log << "reproduce: fidelity check: " << c.material << " at " << fc.wt_pct << " wt%, size x"
            << fine["size_scale"] << ", stiffness x" << fine["stiffness_scale"] << "\n";
+  ExperimentContext context = ExperimentContextFor(experiment, dir, /*quick=*/false);
+  context.replicates = fc.replicates;
+  context.threads = ctx.threads;
+  context.quiet = ctx.quiet;
   std::ostringstream log;
-  ExperimentOptions options{.kind = "aor", .params_path = dir + "/experiment.json", .out_dir = dir,
-                            .replicates = fc.replicates, .quick = false, .threads = ctx.threads,
-                            .quiet = ctx.quiet};
-  const int code = RunExperiment(options, ctx.quiet ? log : *ctx.log);
-  nlohmann::json r;
-  if (!ReadJsonFile(dir + "/result.json", "fidelity check result", &r, error)) return false;
-  const double fine_angle = r["angle_deg"].is_number() ? r["angle_deg"].get<double>() : NAN;
-  const double fine_sem = r["angle_sem_deg"].is_number() ? r["angle_sem_deg"].get<double>() : NAN;
+  const ExperimentResult run = RunExperimentFile(experiment, context, ctx.quiet ? log : *ctx.log);
+  const int code = ExitCodeOf(run.status);
+  if (run.status != ExperimentStatus::kOk && run.status != ExperimentStatus::kRunFailed)
+    return *error = "fidelity check in '" + dir + "' ended with exit code " +
+                    std::to_string(code) + (ctx.quiet ? ": " + log.str() : ""), false;
+  const objectives::Summary& angle = *run.Value("angle_deg");
+  const double fine_angle = angle.n > 0 ? angle.mean : NAN;
+  const double fine_sem = angle.n > 1 ? angle.sem : NAN;
   const double base = level["simulated"].is_number() ? level["simulated"].get<double>() : NAN;
   const double base_sem = level["sem"].is_number() ? level["sem"].get<double>() : NAN;
   const double shift = fine_angle - base;

@@ -5,10 +5,10 @@
 //   coated     Γ(coated_wt_pct) of the curve (stage 4) on the coated pair, the dissimilar pairs
 //              of stage 5 on the coated–uncoated pairs;
 //   excessive  excessive_gamma_J_m2 on every contact of the coated species (paper section 3.5).
-// Each scenario runs its replicates as separate `demcal experiment segregation` runs (replicate r:
-// the file's seed replaced by ReplicateSeed(seed, r), one replicate each) side by side, each
-// journalled when it finishes, so a kill loses only the runs in flight. Means ± sem over the
-// replicates of each scenario feed summary.json.
+// Each scenario runs its replicates as separate segregation experiments (RunExperimentFile;
+// replicate r: the file's seed replaced by ReplicateSeed(seed, r), one replicate each) side by
+// side, each journalled when it finishes, so a kill loses only the runs in flight. Means ± sem
+// over the replicates of each scenario feed summary.json.
 #include <atomic>
 #include <cmath>
 #include <filesystem>
@@ -18,6 +18,8 @@
 
 #include "objectives/common/replicates.h"
 #include "experiments/common/run_experiment.h"
+#include "experiments/common/experiment_file.h"
+#include "experiments/segregation/segregation_result.h"
 #include "files/json_document.h"
 #include "workflow/reproduce/experiment_edit.h"
 #include "workflow/reproduce/segregation_metrics.h"
@@ -71,27 +73,34 @@ bool BuildScenarios(const ReproduceContext& ctx, std::vector<Scenario>* out, std
   return true;
 }
 
-// One replicate: its own experiment file (seed replaced) and output folder.
+// One replicate: its own experiment file (seed replaced; written as the record) and output folder.
 bool RunReplicate(const ReproduceContext& ctx, const Scenario& s, int r, int threads, const std::string& dir,
                   nlohmann::json* metrics, std::string* error) {
-  nlohmann::ordered_json file = s.experiment;
-  const uint64_t seed = objectives::ReplicateSeed(file.value("seed", uint64_t{1}), r);
-  file["seed"] = seed;
-  file["replicates"] = 1;
+  nlohmann::ordered_json document = s.experiment;
+  const uint64_t seed = objectives::ReplicateSeed(document.value("seed", uint64_t{1}), r);
+  document["seed"] = seed;
+  document["replicates"] = 1;
   std::error_code ec;
   fs::create_directories(dir, ec);
   const std::string path = dir + "/experiment.json";
-  if (!WriteJsonFile(path, file, error)) return false;
+  ExperimentFile file;
+  if (!WriteJsonFile(path, document, error) || !ParseEditedExperiment(document, path, &file, error))
+    return false;
+  ExperimentContext context = ExperimentContextFor(file, dir, ctx.quick);
+  context.replicates = 1;
+  context.threads = threads;
+  context.quiet = true;
   std::ostringstream log;
-  ExperimentOptions options{.kind = "segregation", .params_path = path, .out_dir = dir,
-                            .replicates = 1, .quick = ctx.quick, .threads = threads, .quiet = true};
-  const int code = RunExperiment(options, log);
-  nlohmann::json result;
-  if (!ReadJsonFile(dir + "/result.json", "segregation result", &result, error)) {
-    *error += " (exit code " + std::to_string(code) + ": " + log.str() + ")";
+  const ExperimentResult result = RunExperimentFile(file, context, log);
+  const SegregationResult* segregation = result.Detail<SegregationResult>();
+  const int code = ExitCodeOf(result.status);
+  if (!segregation || (result.status != ExperimentStatus::kOk &&
+                       result.status != ExperimentStatus::kRunFailed)) {
+    *error = "segregation run in '" + dir + "' ended with exit code " + std::to_string(code) +
+             ": " + log.str();
     return false;
   }
-  *metrics = ExtractSegregationMetrics(result);
+  *metrics = ExtractSegregationMetrics(*segregation);
   (*metrics)["seed"] = seed;
   (*metrics)["exit_code"] = code;
   return true;

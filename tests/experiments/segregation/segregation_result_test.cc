@@ -38,7 +38,9 @@ TEST_CASE("segregation result.json puts the noise floor beside every S_n", "[uni
   objectives::SegregationSettings settings;
   settings.feed.components = {{2, 1.0}};
   const std::vector<objectives::SegregationRun> runs = {SyntheticRun(1), SyntheticRun(2)};
-  const auto json = workflow::SegregationResultJson(settings, {"BP", "TAED", "EP"}, runs);
+  const workflow::SegregationResult result =
+      workflow::SummariseSegregation(settings, {"BP", "TAED", "EP"}, runs);
+  const auto json = workflow::SegregationResultJson(result);
   REQUIRE(json["replicates_ok"] == 2);
   CHECK(json["noise_floor"]["shuffles"] == 200);  // the settings' default, not the test's 40
   const auto& ep = json["species"][2];
@@ -57,4 +59,31 @@ TEST_CASE("segregation result.json puts the noise floor beside every S_n", "[uni
   CHECK(ep["s_n_3d_floor"]["high"].get<double>() == Approx(mean));
   CHECK(ep["cov_per_layer_3d"][0]["floor"]["n"] == 2);
   CHECK(json["runs"][0]["heap_grains_per_species"].size() == 3);
+}
+
+TEST_CASE("the typed segregation result holds what result.json is written from", "[unit]") {
+  objectives::SegregationSettings settings;
+  settings.feed.components = {{2, 1.0}};
+  const std::vector<objectives::SegregationRun> runs = {SyntheticRun(1), SyntheticRun(2)};
+  const workflow::SegregationResult result =
+      workflow::SummariseSegregation(settings, {"BP", "TAED", "EP"}, runs);
+  const auto json = workflow::SegregationResultJson(result);
+  CHECK(result.replicates_ok == 2);
+  CHECK(result.runs.size() == 2);
+  REQUIRE(result.species.size() == 3);
+  const workflow::SegregationSpeciesResult& ep = result.species[2];
+  CHECK(ep.species == "EP");
+  REQUIRE(ep.Index("s_n_3d"));
+  CHECK(ep.Index("s_n_3d")->n == 2);
+  CHECK(ep.Index("s_n_3d")->mean == json["species"][2]["s_n_3d"]["mean"].get<double>());
+  CHECK(ep.Index("s_n_3d")->sem == json["species"][2]["s_n_3d"]["sem"].get<double>());
+  CHECK(ep.Index("no_such_index") == nullptr);
+  REQUIRE(ep.Floor("s_n_3d_floor"));
+  CHECK(ep.Floor("s_n_3d_floor")->high == json["species"][2]["s_n_3d_floor"]["high"].get<double>());
+  CHECK(ep.Floor("cov_r_3d_floor") == nullptr);  // CoV_r has no floor of its own
+  // The headline values name each species' indices.
+  bool found = false;
+  for (const workflow::NamedEstimate& v : result.Values())
+    if (v.name == "EP.s_n_3d") found = v.value.mean == ep.Index("s_n_3d")->mean;
+  CHECK(found);
 }

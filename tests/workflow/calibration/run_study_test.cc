@@ -1,6 +1,7 @@
 // `demcal calibrate` end to end on real poured heaps at the quick fidelity, with a budget of a
 // few candidates: the outputs exist and agree with the journal, and a second run with a larger
-// budget resumes from the journal instead of repeating the finished heaps.
+// budget resumes from the journal instead of repeating the finished heaps; the typed front door
+// (CalibrateStudy) returns what result.json holds.
 #include "workflow/calibration/run_study.h"
 
 #include <catch2/catch.hpp>
@@ -59,6 +60,28 @@ TEST_CASE("calibrate writes its outputs and resumes from the journal", "[dem][ca
   const std::string deck = ReadFile(dir.str("out/calibrated_params.liggghts"));
   CHECK(deck.find("coefficientRollingFriction peratomtypepair 2") != std::string::npos);
   CHECK(deck.find("rolling_friction cdt") != std::string::npos);
+
+  // The typed front door on the same study, into the same folder: every heap comes from the
+  // journal, and the result carries what result.json holds.
+  StudyFile parsed;
+  std::string error;
+  REQUIRE(LoadStudyFile(dir.str("study.json"), &parsed, &error));
+  const CalibrationResult typed = CalibrateStudy(
+      parsed, {.out_dir = dir.str("out"), .quick = true, .max_evaluations = 2, .quiet = true}, log);
+  CHECK(typed.status == CalibrationStatus::kNotMatched);
+  CHECK(ExitCodeOf(typed.status) == kExitRunFailed);
+  CHECK(typed.summary.replicates_run == 0);
+  CHECK(typed.summary.replicates_reused == 2);
+  CHECK(demcal::calibrate::TerminationName(typed.termination) == first["termination"].get<std::string>());
+  CHECK(typed.out_dir == dir.str("out"));
+  REQUIRE(typed.parameters.size() == 1);
+  CHECK(typed.parameters[0].name == "mu_r_BP_BP");
+  CHECK(typed.parameters[0].value == first["parameters"][0]["value"].get<double>());
+  REQUIRE(typed.targets.size() == 1);
+  CHECK(typed.targets[0].measured == 40.0);
+  CHECK(typed.targets[0].simulated == first["targets"][0]["simulated"].get<double>());
+  CHECK(typed.targets[0].sem == first["targets"][0]["sem"].get<double>());
+  CHECK(typed.targets[0].provenance == first["provenance"]["targets"][0]["provenance"]);
 
   o.max_evaluations = 3;
   RunCalibrate(o, log);

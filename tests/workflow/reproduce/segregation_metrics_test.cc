@@ -1,5 +1,6 @@
-// The reproduce workflow's segregation rows: per-run indices pulled from an experiment's
-// result.json, summarised over replicates, with the random-mixture floor quoted beside S_n.
+// The reproduce workflow's segregation rows: per-run indices taken from a segregation
+// experiment's typed result, summarised over replicates, with the random-mixture floor quoted
+// beside S_n.
 #include "workflow/reproduce/segregation_metrics.h"
 
 #include <catch2/catch.hpp>
@@ -8,23 +9,33 @@
 
 using namespace demcal::workflow;
 using nlohmann::json;
+namespace objectives = demcal::objectives;
 
 namespace {
-// A one-run segregation result.json of the experiment's shape, EP only.
-json Run(double s_n, double floor) {
-  return {{"runs", {{{"status", "ok"}, {"wall_time_s", 1.0}, {"particles", 10}}}},
-          {"species",
-           {{{"species", "EP"},
-             {"s_n_3d", {{"mean", s_n}}},
-             {"s_n_3d_floor", {{"mean", floor}, {"low", 0.9 * floor}, {"high", 1.2 * floor}}},
-             {"cov_3d", {{"mean", 0.5}}},
-             {"outflow_mass_fraction", {{"mean", 0.02}}}}}}};
+// A one-run segregation result, EP only: its indices and the floor of S_n (3D).
+SegregationResult Result(double s_n, double floor) {
+  SegregationResult r;
+  objectives::SegregationRun& run = r.runs.emplace_back();
+  run.funnel_emptied = true;  // with a settled heap and its analysis: "ok"
+  run.analysis.emplace();
+  run.wall_time_s = 1.0;
+  run.particles = 10;
+  auto one = [](double v) { return objectives::Summarise({v}); };
+  SegregationSpeciesResult ep;
+  ep.species = "EP";
+  ep.indices = {{"s_n_3d", one(s_n)}, {"cov_3d", one(0.5)}, {"outflow_mass_fraction", one(0.02)}};
+  ep.floors = {{"s_n_3d_floor", FloorEstimate{floor, 0.9 * floor, 1.2 * floor, 1}}};
+  r.species = {ep};
+  return r;
 }
+json Run(double s_n, double floor) { return ExtractSegregationMetrics(Result(s_n, floor)); }
 }  // namespace
 
 TEST_CASE("segregation rows carry the replicates' mean and sem and the noise floor", "[unit]") {
   std::vector<json> runs;
-  for (double s_n : {1.0, 2.0, 3.0}) runs.push_back(ExtractSegregationMetrics(Run(s_n, 1.5)));
+  for (double s_n : {1.0, 2.0, 3.0}) runs.push_back(Run(s_n, 1.5));
+  CHECK(runs[0]["status"] == "ok");
+  CHECK(runs[0]["EP.cov_r_3d"].is_null());  // an index the run does not have: no value
   CHECK(runs[0]["EP.s_n_3d_floor"].get<double>() == Approx(1.5));
   const json uncoated = SummariseSegregationRuns(runs);
   CHECK(uncoated["EP.s_n_3d"]["mean"].get<double>() == Approx(2.0));
@@ -41,10 +52,10 @@ TEST_CASE("segregation rows carry the replicates' mean and sem and the noise flo
 
 TEST_CASE("a discharge time from a feed-limited funnel is reported but not compared", "[unit]") {
   auto run = [](double discharge_s, bool feed_limited) {
-    json r = Run(1.0, 1.5);
-    r["runs"][0]["funnel_feed_limited"] = feed_limited;
-    r["runs"][0]["feed_duration_s"] = 1.54;
-    r["discharge_time_s"] = {{"mean", discharge_s}};
+    SegregationResult r = Result(1.0, 1.5);
+    r.runs[0].funnel_feed_limited = feed_limited;
+    r.runs[0].feed_duration_s = 1.54;
+    r.discharge_time_s = objectives::Summarise({discharge_s});
     return ExtractSegregationMetrics(r);
   };
   const json limited = SummariseSegregationRuns({run(1.60, true), run(1.58, true)});
