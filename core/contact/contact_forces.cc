@@ -192,9 +192,8 @@ void ContactForces::PlanChunks(const NeighbourList& list) {
 
 void ContactForces::Compute(Particles& p, const NeighbourList& list,
                             const std::vector<Wall>& walls, double time_s,
-                            const InteractionTable& table, const RollingModel& rolling,
-                            bool adhesive, JkrRollingLoad jkr_rolling_load, const Vec3& gravity,
-                            double dt) {
+                            const InteractionTable& table, const NormalModel& normal,
+                            const RollingModel& rolling, const Vec3& gravity, double dt) {
   if (pair_history_.size() != list.PairCount()) {
     pair_history_.resize(list.PairCount());
     pair_active_.resize(list.PairCount(), 0);
@@ -216,13 +215,14 @@ void ContactForces::Compute(Particles& p, const NeighbourList& list,
       chunks_.AddTime(c, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     });
   };
+  // The one dispatch point of the contact laws: one instantiation of the loop per combination.
   std::visit(
-      [&](const auto& rolling_model) {
+      [&](const auto& normal_law, const auto& rolling_model) {
+        using N = std::decay_t<decltype(normal_law)>;
         using R = std::decay_t<decltype(rolling_model)>;
-        if (adhesive) run(ContactModel<JkrNormal, R>{rolling_model, jkr_rolling_load});
-        else run(ContactModel<HertzMindlinNormal, R>{rolling_model});
+        run(ContactModel<N, R>{normal_law, rolling_model});
       },
-      rolling);
+      normal, rolling);
 }
 
 void ContactForces::Rebuild(const Particles& p, const NeighbourList& old_list,

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/contact/contact_state.h"
+#include "core/contact/normal_model.h"
 #include "core/contact/rolling_model.h"
 #include "core/materials/interaction_table.h"
 #include "core/neighbours/neighbour_list.h"
@@ -27,20 +28,19 @@ namespace demcal::core {
 
 class ContactForces {
  public:
-  // Sets all forces and torques of `p` (gravity included). `adhesive` selects the JKR normal
-  // model (needed when any pair has Γ > 0; pairs with Γ = 0 still get plain Hertz–Mindlin) and
-  // `jkr_rolling_load` the load its rolling limit multiplies.
+  // Sets all forces and torques of `p` (gravity included), with the normal law `normal`
+  // (MakeNormalModel) and the rolling model `rolling`: the loop is instantiated per pair of them.
   // `walls` are placed where they are at time_s (the time of the positions in `p`), which also
   // selects their velocities.
   void Compute(Particles& p, const NeighbourList& list, const std::vector<Wall>& walls,
-               double time_s, const InteractionTable& table, const RollingModel& rolling,
-               bool adhesive, JkrRollingLoad jkr_rolling_load, const Vec3& gravity, double dt);
+               double time_s, const InteractionTable& table, const NormalModel& normal,
+               const RollingModel& rolling, const Vec3& gravity, double dt);
 
   // Called after every neighbour-list rebuild: carries pair histories over to the new list and
   // lists, per moving particle, the walls within its radius + skin (moving walls always), keeping
   // their histories. `order[new_slot] = old_slot` describes a particle permutation applied together
-  // with the rebuild (identity if empty). adhesive_gap_m: the largest JKR break gap of the scene
-  // (an adhesive contact reaches that far beyond touching; WallContacts::Rebuild).
+  // with the rebuild (identity if empty). adhesive_gap_m: the largest break gap of the scene's
+  // normal law (an adhesive contact reaches that far beyond touching; WallContacts::Rebuild).
   void Rebuild(const Particles& p, const NeighbourList& old_list, const NeighbourList& new_list,
                const std::vector<uint32_t>& order, const std::vector<Wall>& walls,
                double skin_m, double adhesive_gap_m = 0);

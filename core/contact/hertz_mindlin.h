@@ -6,13 +6,39 @@
 #include <cmath>
 
 #include "core/contact/contact_state.h"
+#include "core/contact/rolling_model.h"
 
 namespace demcal::core {
 
+// The law every normal_model.h entry offers, with what this one does for each.
 struct HertzMindlinNormal {
+  static constexpr const char* kName = "hertz_mindlin";
+  // A contact exists while the bodies are pressed together (δ > 0), never beyond touching.
   static constexpr bool kAdhesive = false;
-  static double BreakGap(double, double, double) { return 0; }
-  static bool Holds(double, double, double, double) { return false; }
+
+  // Pair properties that call for this law: none (it is the default; it reads E* and β, which
+  // every pair has).
+  static bool CalledFor(const PairParameters&) { return false; }
+  // Options of the scene's contact_model section: none.
+  static bool Make(const RollingModelSpec&, HertzMindlinNormal* law) {
+    *law = {};
+    return true;
+  }
+  // Pair constants derived once at setup: none.
+  static void Resolve(ResolvedPair&) {}
+  // How far beyond touching (a gap, m) an existing contact survives: not at all.
+  static double BreakGap(double, const ResolvedPair&) { return 0; }
+  // Whether a stretched contact (gap = −δ > 0) holds: never.
+  static bool Holds(double, double, const ResolvedPair&) { return false; }
+  // Upper bound of the energy `contacts` contacts of a sphere of radius r can release by
+  // attraction (the blow-up check's budget): none.
+  static double AttractionEnergyBound(double, const ResolvedPair&, int) { return 0; }
+
+  // The normal force of one contact (the contact loop's entry; Compute with this law's options).
+  DEMCAL_HOT_INLINE NormalForce Force(const ContactGeometry& g, const ResolvedPair& p,
+                                      ContactHistory& h) const {
+    return Compute(g, p, h);
+  }
 
   DEMCAL_HOT_INLINE static NormalForce Compute(const ContactGeometry& g, const ResolvedPair& p,
                                                ContactHistory&) {

@@ -11,8 +11,8 @@
 //  * normal damping as Hertz–Mindlin with S_n = 2 E* a (equal to HM's when a² = R* δ);
 //  * the Coulomb limit uses the repulsive (Hertz) part 4E*a³/(3R*) of the force (EDEM: friction
 //    "depends on the positive repulsive part of the JKR normal force"); so does rolling_load_N
-//    here, which ContactModel replaces by the transmitted load max(0, F) unless the scene asks
-//    for "repulsive" (JkrRollingLoad, rolling_model.h, explains why "net" is the default).
+//    here, which Force() replaces by the transmitted load max(0, F) unless the scene asks for
+//    "repulsive" (JkrRollingLoad, rolling_model.h, explains why "net" is the default).
 // With Γ = 0 it is exactly Hertz–Mindlin (the same function is called).
 #include <algorithm>
 #include <bit>
@@ -22,6 +22,7 @@
 
 #include "core/contact/contact_state.h"
 #include "core/contact/hertz_mindlin.h"
+#include "core/contact/rolling_model.h"
 
 namespace demcal::core {
 
@@ -39,8 +40,60 @@ DEMCAL_HOT_INLINE double FastCbrt(double x) {
   return x < 0 ? -y : y;
 }
 
+// The law every normal_model.h entry offers (HertzMindlinNormal lists them), with its option:
+// the load its rolling limit multiplies (JkrRollingLoad, rolling_model.h, explains the choice).
 struct JkrNormal {
+  static constexpr const char* kName = "jkr";
+  // An existing contact survives stretching up to the break gap (the neck of the hysteresis).
   static constexpr bool kAdhesive = true;
+
+  JkrRollingLoad rolling_load = JkrRollingLoad::kNet;
+
+  // Called for by a pair with interfacial energy Γ > 0; reads Γ and E* (pairs with Γ = 0 get
+  // Hertz–Mindlin from it, exactly).
+  static bool CalledFor(const PairParameters& p) { return p.interfacial_energy_J_m2 > 0; }
+  // Its option from the scene's contact_model section: jkr_rolling_load (false if unknown).
+  static bool Make(const RollingModelSpec& spec, JkrNormal* law) {
+    JkrNormal made;
+    if (!ParseJkrRollingLoad(spec.jkr_rolling_load, &made.rolling_load)) return false;
+    *law = made;
+    return true;
+  }
+  // The pair constant the force loop reads: the adhesion length k (0 without Γ).
+  static void Resolve(ResolvedPair& p) {
+    const double gamma = p.interfacial_energy_J_m2;
+    p.jkr_adhesion_length = gamma > 0 ? AdhesionLength(p.effective_youngs_Pa, gamma) : 0.0;
+  }
+  // |δ_min| of the pair (0 without Γ): how far beyond touching an existing contact survives.
+  DEMCAL_HOT_INLINE static double BreakGap(double r_eff, const ResolvedPair& p) {
+    const double gamma = p.interfacial_energy_J_m2;
+    return gamma > 0 ? BreakGap(r_eff, p.effective_youngs_Pa, gamma) : 0.0;
+  }
+  // Whether a stretched contact of the pair (gap = −δ > 0) holds.
+  DEMCAL_HOT_INLINE static bool Holds(double gap, double r_eff, const ResolvedPair& p) {
+    return p.interfacial_energy_J_m2 > 0 &&
+           Holds(gap, r_eff, p.effective_youngs_Pa, p.interfacial_energy_J_m2);
+  }
+  // Upper bound of the energy `contacts` contacts of a sphere of radius r can release by
+  // attraction: per contact at most F_c (3|δ_min|) (the attractive force never exceeds
+  // F_c = 3πΓR over a travel of δ_eq − δ_min).
+  static double AttractionEnergyBound(double r, const ResolvedPair& p, int contacts) {
+    const double gamma = p.interfacial_energy_J_m2;
+    if (gamma <= 0) return 0;
+    const double f_c = 3 * std::numbers::pi * gamma * r;
+    const double gap = BreakGap(r, p.effective_youngs_Pa, gamma);
+    return contacts * f_c * 3 * gap;
+  }
+
+  // The normal force of one contact (the contact loop's entry): Compute, with the rolling load
+  // this law was made with.
+  DEMCAL_HOT_INLINE NormalForce Force(const ContactGeometry& g, const ResolvedPair& p,
+                                      ContactHistory& h) const {
+    NormalForce n = Compute(g, p, h);
+    // Γ = 0 pairs: Hertz's elastic force, which is the rolling load already (δ > 0).
+    if (rolling_load == JkrRollingLoad::kNet) n.rolling_load_N = std::max(0.0, n.elastic_N);
+    return n;
+  }
 
   // |δ_min|: the largest separation (as a positive gap) an existing contact survives.
   DEMCAL_HOT_INLINE static double BreakGap(double r_eff, double e_star, double gamma) {

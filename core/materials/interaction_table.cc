@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/contact/jkr.h"
+#include "core/contact/normal_model.h"
 
 namespace demcal::core {
 
@@ -15,8 +15,9 @@ double BetaFromRestitution(double e) {
 
 ResolvedPair MakeResolvedPair(double e_star, double g_star, double beta, double mu_s, double mu_r,
                               double gamma) {
-  const double k = gamma > 0 ? JkrNormal::AdhesionLength(e_star, gamma) : 0.0;
-  return {e_star, g_star, beta, mu_s, mu_r, gamma, k, std::sqrt(4.0 * g_star / e_star)};
+  ResolvedPair pair{e_star, g_star, beta, mu_s, mu_r, gamma, 0.0, std::sqrt(4.0 * g_star / e_star)};
+  ResolveNormalModelConstants(pair);  // what the normal laws derive from the pair
+  return pair;
 }
 
 InteractionTable::InteractionTable(const std::vector<Material>& materials,

@@ -1,11 +1,12 @@
 #include "core/scene/scene.h"
 
-#include "core/contact/jkr.h"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <variant>
+
+#include "core/contact/normal_model.h"
 
 namespace demcal::core {
 
@@ -41,14 +42,14 @@ double MaxAdhesiveBreakGap(const Scene& scene) {
   if (scene.pair_parameters.size() != n * n) return 0;
   const InteractionTable table(scene.materials, scene.pair_parameters);
   const double r_max = 0.5 * scene.MaxDiameter();
-  double gap = 0;
-  for (size_t i = 0; i < n; ++i)
-    for (size_t j = 0; j < n; ++j) {
-      const ResolvedPair& p = table.Get(i, j);
-      if (p.interfacial_energy_J_m2 > 0)
-        gap = std::max(gap, JkrNormal::BreakGap(r_max, p.effective_youngs_Pa, p.interfacial_energy_J_m2));
-    }
-  return gap;
+  return std::visit(
+      [&](const auto& law) {
+        double gap = 0;
+        for (size_t i = 0; i < n; ++i)
+          for (size_t j = 0; j < n; ++j) gap = std::max(gap, law.BreakGap(r_max, table.Get(i, j)));
+        return gap;
+      },
+      SelectNormalModel(scene.pair_parameters));
 }
 
 double NeighbourSkin(const Scene& scene) {

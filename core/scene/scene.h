@@ -87,12 +87,12 @@ struct Scene {
 // Δt_R = π R sqrt(ρ/G) / (0.1631 ν + 0.8766), minimised over species.
 double RayleighTime(const Scene& scene);
 
-// Largest separation an adhesive (JKR) contact survives, over all material pairs, for the
-// scene's largest spheres (m); 0 without adhesion.
+// Largest separation a contact of the scene's normal law (SelectNormalModel) survives, over all
+// material pairs, for the scene's largest spheres (m); 0 without adhesion.
 double MaxAdhesiveBreakGap(const Scene& scene);
 
 // The Verlet skin used: scene.skin_m if set, else a quarter of the smallest diameter, and in
-// any case more than twice the JKR break gap so that stretched adhesive contacts stay listed.
+// any case more than twice that break gap so that stretched adhesive contacts stay listed.
 double NeighbourSkin(const Scene& scene);
 
 }  // namespace demcal::core

@@ -8,10 +8,9 @@
 #include <chrono>
 #include <numeric>
 #include <cmath>
-#include <numbers>
 #include <sstream>
 
-#include "core/contact/jkr.h"
+#include "core/contact/normal_model.h"
 #include "core/insertion/insertion.h"
 #include "core/math/random.h"
 #include "core/math/seed_streams.h"
@@ -22,21 +21,20 @@ int ArenaConcurrency(int threads) {
   return threads > 0 ? threads : static_cast<int>(tbb::task_arena::automatic);
 }
 
-// Upper bound of the energy a particle can gain from JKR attraction: per contact at most
-// F_c (3|δ_min|) (the attractive force never exceeds F_c over a travel of δ_eq − δ_min), for at
-// most 12 contacts.
-double AdhesiveEnergyBoundPerParticle(const Scene& scene, const InteractionTable& table) {
+// Upper bound of the energy a particle can gain from the normal law's attraction, for at most
+// 12 contacts of the scene's largest spheres (the law's AttractionEnergyBound).
+double AdhesiveEnergyBoundPerParticle(const Scene& scene, const InteractionTable& table,
+                                      const NormalModel& normal) {
   const double r = 0.5 * scene.MaxDiameter();
-  double bound = 0;
-  for (int i = 0; i < table.MaterialCount(); ++i)
-    for (int j = 0; j < table.MaterialCount(); ++j) {
-      const ResolvedPair& p = table.Get(i, j);
-      if (p.interfacial_energy_J_m2 <= 0) continue;
-      const double f_c = 3 * std::numbers::pi * p.interfacial_energy_J_m2 * r;
-      const double gap = JkrNormal::BreakGap(r, p.effective_youngs_Pa, p.interfacial_energy_J_m2);
-      bound = std::max(bound, 12 * f_c * 3 * gap);
-    }
-  return bound;
+  return std::visit(
+      [&](const auto& law) {
+        double bound = 0;
+        for (int i = 0; i < table.MaterialCount(); ++i)
+          for (int j = 0; j < table.MaterialCount(); ++j)
+            bound = std::max(bound, law.AttractionEnergyBound(r, table.Get(i, j), 12));
+        return bound;
+      },
+      normal);
 }
 }  // namespace
 
@@ -58,7 +56,7 @@ bool Simulation::Initialize(std::string* error) {
   if (!scene_.IsValid(error)) return false;
   table_ = InteractionTable(scene_.materials, scene_.pair_parameters);
   MakeRollingModel(scene_.rolling, &rolling_);
-  ParseJkrRollingLoad(scene_.rolling.jkr_rolling_load, &jkr_rolling_load_);
+  MakeNormalModel(scene_.pair_parameters, scene_.rolling, &normal_);
   dt_ = scene_.time.timestep_s > 0 ? scene_.time.timestep_s
                                    : scene_.time.rayleigh_fraction * RayleighTime(scene_);
   if (!system_.SetSpecies(scene_.species, error)) return false;
@@ -68,9 +66,6 @@ bool Simulation::Initialize(std::string* error) {
     if (error) *error = placement_error;
     return false;
   }
-  adhesive_ = false;
-  for (const PairParameters& pair : scene_.pair_parameters)
-    adhesive_ = adhesive_ || pair.interfacial_energy_J_m2 > 0;
   adhesive_gap_m_ = MaxAdhesiveBreakGap(scene_);
   PeriodicBox box{scene_.domain_min_m, {}};
   for (int a = 0; a < 3; ++a)
@@ -105,7 +100,8 @@ bool Simulation::Initialize(std::string* error) {
                    g.y > 0 ? scene_.domain_max_m.y : scene_.domain_min_m.y,
                    g.z > 0 ? scene_.domain_max_m.z : scene_.domain_min_m.z};
   energy_scale_J_ = system_.KineticEnergy() + elastic +
-                    system_.spheres.Size() * AdhesiveEnergyBoundPerParticle(scene_, table_) +
+                    system_.spheres.Size() *
+                        AdhesiveEnergyBoundPerParticle(scene_, table_, normal_) +
                     system_.ReleasableGravitationalEnergy(g, lowest_point_);
   initialized_ = true;
   return true;
@@ -167,7 +163,8 @@ bool Simulation::InsertFromFactories() {
   energy_budget_J_ +=
       kinetic + system_.ReleasableGravitationalEnergy(g, {}, first_sphere, first_clump);
   energy_scale_J_ += kinetic +
-                     (system_.spheres.Size() - first_sphere) * AdhesiveEnergyBoundPerParticle(scene_, table_) +
+                     (system_.spheres.Size() - first_sphere) *
+                         AdhesiveEnergyBoundPerParticle(scene_, table_, normal_) +
                      system_.ReleasableGravitationalEnergy(g, lowest_point_, first_sphere, first_clump);
   return true;
 }
@@ -259,8 +256,8 @@ void Simulation::AddWallWork(double time_s) {
 }
 
 void Simulation::ComputeForces(double time_s) {
-  forces_.Compute(system_.spheres, list_, walls_, time_s, table_, rolling_, adhesive_,
-                  jkr_rolling_load_, scene_.gravity_m_s2, dt_);
+  forces_.Compute(system_.spheres, list_, walls_, time_s, table_, normal_, rolling_,
+                  scene_.gravity_m_s2, dt_);
 }
 
 void Simulation::Step() {

@@ -145,6 +145,7 @@ class Simulation {
   Options options_;
   std::unique_ptr<tbb::task_arena> arena_;
   InteractionTable table_;
+  NormalModel normal_;  // the normal law the pair table calls for (MakeNormalModel)
   RollingModel rolling_;
   ParticleSystem system_;
   NeighbourList list_;
@@ -168,9 +169,7 @@ class Simulation {
   double energy_budget_J_ = 0;   // initial KE + PE (+ inserted energy)
   double energy_scale_J_ = 0;    // energy that gravity and the initial state can release
   Vec3 lowest_point_;            // of the domain along gravity
-  bool adhesive_ = false;  // some pair has Γ > 0: use the JKR normal model
-  double adhesive_gap_m_ = 0;  // the largest JKR break gap (MaxAdhesiveBreakGap)
-  JkrRollingLoad jkr_rolling_load_ = JkrRollingLoad::kNet;
+  double adhesive_gap_m_ = 0;  // the normal law's largest break gap (MaxAdhesiveBreakGap)
   bool initialized_ = false;
 };
 

@@ -195,12 +195,7 @@ void WallContacts::SumMesh(const Particles& p, uint32_t i, uint32_t e, const Mes
                            Vec3& fi, Vec3& ti) {
   const double radius = p.radius_m[i];
   // An adhesive contact survives stretching up to the break gap: query that much further.
-  double reach = 0;
-  if constexpr (Model::Normal::kAdhesive) {
-    if (pair.interfacial_energy_J_m2 > 0)
-      reach = Model::Normal::BreakGap(radius, pair.effective_youngs_Pa,
-                                      pair.interfacial_energy_J_m2);
-  }
+  const double reach = Model::Normal::BreakGap(radius, pair);
   const uint32_t slot = mesh_slots_[e];
   if (moving) {
     mesh.mesh->SphereContacts(p.position_m[i] - mesh.offset_m, radius + reach, scratch);
