@@ -16,6 +16,7 @@
 #include "core/checkpoint/checkpoint_file.h"
 #include "core/simulation/simulation.h"
 #include "core/walls/triangle_mesh.h"
+#include "tests/core/checkpoint/checkpoint_scene.h"
 
 using namespace demcal::core;
 
@@ -24,17 +25,13 @@ namespace {
 // Spheres and 2-sphere clumps poured into a box of planes, onto a mesh plate, beside a rising
 // post (cylinder) and under a funnel (cone): every kind of state a checkpoint holds.
 Scene FuzzScene() {
-  Scene s;
-  s.materials = {{"m", 5e6, 0.25, 1500}};
-  s.species = {{"balls", 0, {}, {}}, {"pairs", 0, {}, {{{-0.5, 0, 0}, 0.6}, {{0.5, 0, 0}, 0.6}}}};
-  s.species[0].size = {SizeDistribution::Kind::kUniform, 0, 0.0018, 0.0022, {}, {}};
-  s.species[1].size.diameter_m = 0.0025;
-  PairParameters pair;
-  pair.rolling_friction = 0.1;
-  pair.interfacial_energy_J_m2 = 0.01;
-  s.pair_parameters = {pair};
-  s.rolling.name = "epsd";
-  s.walls = BoxInnerFaces("box", {0, 0, 0}, {0.02, 0.02, 0.05}, 0, true);
+  Scene s = checkpoint_test::PourScene({.box_max_m = {0.02, 0.02, 0.05},
+                                        .interfacial_energy_J_m2 = 0.01,
+                                        .feed_radius_m = 0.007,
+                                        .feed_z_lo_m = 0.006,
+                                        .feed_z_hi_m = 0.02,
+                                        .feed_rate_kg_s = 0.002,
+                                        .seed = 3});
   std::string error;
   const std::array<int32_t, 3> triangles[] = {{0, 1, 2}, {0, 2, 3}};
   auto plate = TriangleMesh::FromIndexed(
@@ -49,16 +46,6 @@ Scene FuzzScene() {
   s.walls.push_back(Wall("funnel", 0, ConeFrustumSurface{.axis_point_m = {0.01, 0.01, 0},
                                                          .height0_m = 0.03, .radius0_m = 0.004,
                                                          .height1_m = 0.045, .radius1_m = 0.009}));
-  s.domain_min_m = {0, 0, 0};
-  s.domain_max_m = {0.02, 0.02, 0.05};
-  FactorySpec f;
-  f.name = "feed";
-  f.region = InsertionRegion::Cylinder({0.01, 0.01, 0}, 0.007, 0.006, 0.02);
-  f.species = {0, 1};
-  f.mass_fractions = {0.5, 0.5};
-  f.mass_rate_kg_s = 0.002;
-  s.factories = {f};
-  s.seed = 3;
   return s;
 }
 

@@ -1,11 +1,13 @@
 #pragma once
-// Test helpers for the simulate command: a tiny scene that runs in a fraction of a second, and
-// small file utilities.
+// Test helpers for the simulate command: a tiny scene that runs in a fraction of a second, a
+// quiet run of a scene, and small file utilities.
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 
 #include "core/io/scratch_dir.h"
+#include "workflow/simulation/simulate.h"
 
 namespace demcal::testing {
 
@@ -33,6 +35,21 @@ inline std::string WriteScene(const ScratchDir& dir, const nlohmann::json& scene
   const std::string path = dir.str(name);
   std::ofstream(path) << scene.dump(2);
   return path;
+}
+
+// Writes `scene` to DIR/scene.json and runs `demcal simulate` on it quietly into DIR/out with
+// `threads` (0: all cores); the exit code, and what the run printed into *log when given.
+inline int SimulateQuietly(const ScratchDir& dir, const nlohmann::json& scene, int threads = 0,
+                           std::string* log = nullptr) {
+  workflow::SimulateOptions o;
+  o.scene_path = WriteScene(dir, scene);
+  o.out_dir = dir.str("out");
+  o.threads = threads;
+  o.quiet = true;
+  std::ostringstream text;
+  const int code = workflow::RunSimulate(o, text);
+  if (log) *log = text.str();
+  return code;
 }
 
 inline nlohmann::json ReadJson(const std::string& path) {

@@ -8,6 +8,7 @@
 
 #include <unistd.h>
 
+#include "core/checkpoint/checkpoint_scene.h"
 #include "core/simulation/simulation.h"
 #include "core/walls/wall_test_support.h"
 
@@ -22,32 +23,18 @@ std::string TempPath(const std::string& tag) {
       .string();
 }
 
-// Everything with state: a factory pouring spheres and 2-sphere clumps, friction, EPSD rolling
-// springs, JKR adhesion (hysteresis), walls.
+// Everything with state (checkpoint_scene.h), fed from 60–90 mm up, with friction and
+// restitution other than the defaults.
 Scene RichScene() {
-  Scene s;
-  s.materials = {{"m", 5e6, 0.25, 1500}};
-  s.species = {{"balls", 0, {}, {}}, {"pairs", 0, {}, {{{-0.5, 0, 0}, 0.6}, {{0.5, 0, 0}, 0.6}}}};
-  s.species[0].size = {SizeDistribution::Kind::kUniform, 0, 0.0018, 0.0022, {}, {}};
-  s.species[1].size.diameter_m = 0.0025;
-  PairParameters pair;
-  pair.sliding_friction = 0.5;
-  pair.rolling_friction = 0.1;
-  pair.restitution = 0.4;
-  pair.interfacial_energy_J_m2 = 0.02;
-  s.pair_parameters = {pair};
-  s.rolling.name = "epsd";
-  s.walls = BoxInnerFaces("box", {0, 0, 0}, {0.03, 0.03, 0.1}, 0, true);
-  s.domain_min_m = {0, 0, 0};
-  s.domain_max_m = {0.03, 0.03, 0.1};
-  FactorySpec f;
-  f.name = "feed";
-  f.region = InsertionRegion::Cylinder({0.015, 0.015, 0}, 0.012, 0.06, 0.09);
-  f.species = {0, 1};
-  f.mass_fractions = {0.5, 0.5};
-  f.mass_rate_kg_s = 0.01;
-  s.factories = {f};
-  s.seed = 11;
+  Scene s = checkpoint_test::PourScene({.box_max_m = {0.03, 0.03, 0.1},
+                                        .interfacial_energy_J_m2 = 0.02,
+                                        .feed_radius_m = 0.012,
+                                        .feed_z_lo_m = 0.06,
+                                        .feed_z_hi_m = 0.09,
+                                        .feed_rate_kg_s = 0.01,
+                                        .seed = 11});
+  s.pair_parameters[0].sliding_friction = 0.5;
+  s.pair_parameters[0].restitution = 0.4;
   return s;
 }
 

@@ -6,14 +6,13 @@
 #include <sstream>
 
 #include "outputs/exit_codes.h"
-#include "workflow/simulation/simulate.h"
 #include "workflow/test_paths.h"
 #include "workflow/tiny_scene.h"
 
 using namespace demcal::workflow;
 using demcal::testing::ReadJson;
 using demcal::testing::ScratchDir;
-using demcal::testing::WriteScene;
+using demcal::testing::SimulateQuietly;
 using nlohmann::json;
 
 namespace {
@@ -42,13 +41,7 @@ TEST_CASE("simulate writes the discharged mass over time of a silo with a sink",
   d["time"] = {{"duration_s", 0.25}, {"timestep_s", 2e-5}};  // rows exactly every 500 steps
   d["output"]["vtk_interval_s"] = 0.25;
   ScratchDir dir("simulate_mass_flow");
-  SimulateOptions o;
-  o.scene_path = WriteScene(dir, d);
-  o.out_dir = dir.str("out");
-  o.threads = 1;
-  o.quiet = true;
-  std::ostringstream log;
-  REQUIRE(RunSimulate(o, log) == kExitOk);
+  REQUIRE(SimulateQuietly(dir, d, /*threads=*/1) == kExitOk);
 
   const json s = ReadJson(dir.str("out/summary.json"));
   CHECK(s["outputs"]["mass_flow_csv"] == "mass_flow.csv");

@@ -17,6 +17,7 @@ using demcal::testing::ReadLegacyVtk;
 using demcal::testing::RepoRoot;
 using demcal::testing::ReadJson;
 using demcal::testing::ScratchDir;
+using demcal::testing::SimulateQuietly;
 using demcal::testing::TinyScene;
 using demcal::testing::WriteScene;
 using nlohmann::json;
@@ -106,18 +107,14 @@ TEST_CASE("simulate reports a failed run with exit code 3 and its reason in summ
   scene.erase("walls");
   scene["time"]["duration_s"] = 0.2;
   ScratchDir dir("simulate_failed");
-  SimulateOptions o;
-  o.scene_path = WriteScene(dir, scene);
-  o.out_dir = dir.str("out");
-  o.quiet = true;
-  std::ostringstream log;
-  CHECK(RunSimulate(o, log) == kExitRunFailed);
+  std::string log;
+  CHECK(SimulateQuietly(dir, scene, /*threads=*/0, &log) == kExitRunFailed);
   const json s = ReadJson(dir.str("out/summary.json"));
   CHECK(s["termination"] == "particles_lost");
   CHECK_THAT(s["message"].get<std::string>(), Catch::Contains("left the domain"));
   CHECK(s["simulated_time_s"].get<double>() < 0.2);
   CHECK(std::filesystem::exists(dir.str("out/final_particles.csv")));  // where it went wrong
-  CHECK_THAT(log.str(), Catch::Contains("run failed (particles_lost)"));
+  CHECK_THAT(log, Catch::Contains("run failed (particles_lost)"));
 }
 
 TEST_CASE("simulate options are validated before anything runs", "[unit]") {
@@ -139,12 +136,7 @@ TEST_CASE("the pour_box example places its 3000 spheres and steps without failur
   json scene = json::parse(std::ifstream(RepoRoot() / "examples/pour_box.json"));
   scene["time"]["duration_s"] = 0.002;
   ScratchDir dir("simulate_pour_box");
-  SimulateOptions o;
-  o.scene_path = WriteScene(dir, scene);
-  o.out_dir = dir.str("out");
-  o.quiet = true;
-  std::ostringstream log;
-  REQUIRE(RunSimulate(o, log) == kExitOk);
+  REQUIRE(SimulateQuietly(dir, scene) == kExitOk);
   const json s = ReadJson(dir.str("out/summary.json"));
   CHECK(s["particles"] == 3000);
   CHECK(s["termination"] == "ok");
@@ -162,12 +154,7 @@ TEST_CASE("simulate runs clumps fed by a factory and reports the factory", "[uni
       "region": {"min_m": [0.002, 0.002, 0.025], "max_m": [0.018, 0.018, 0.038]}}])");
   scene["time"]["duration_s"] = 0.05;
   ScratchDir dir("simulate_factory");
-  SimulateOptions o;
-  o.scene_path = WriteScene(dir, scene);
-  o.out_dir = dir.str("out");
-  o.quiet = true;
-  std::ostringstream log;
-  REQUIRE(RunSimulate(o, log) == kExitOk);
+  REQUIRE(SimulateQuietly(dir, scene) == kExitOk);
   const json s = ReadJson(dir.str("out/summary.json"));
   CHECK(s["termination"] == "ok");
   REQUIRE(s["factories"].size() == 1);
