@@ -55,7 +55,7 @@ nlohmann::json ExtractSegregationMetrics(const nlohmann::json& r) {
       for (const char* index : kIndices) {
         const std::string key = s["species"].get<std::string>() + "." + index;
         m[key] = MeanOf(s[index]);
-        // The random-mixture noise floor of the same heap (issue 15), where the run has one.
+        // The random-mixture noise floor of the same heap, where the run has one.
         const std::string floor = std::string(index) + "_floor";
         if (s.contains(floor)) m[key + "_floor"] = MeanOf(s[floor]);
       }
@@ -132,8 +132,8 @@ nlohmann::json SegregationSummaryValues(const nlohmann::json& scenarios, const s
   for (const char* s : {"uncoated", "coated"}) MarkFeedLimited(scenario(s), &v["discharge_time_" + std::string(s) + "_s"]);
   put("s_n_EP_3d_excessive", "excessive", ep + ".s_n_3d");
   put("cov_EP_3d_excessive", "excessive", ep + ".cov_3d");
-  put("cov_r_EP_3d", "uncoated", ep + ".cov_r_3d", "random-mixture CoV: grows with coarse-graining (issue 15)");
-  put("cov_r_EP_front", "uncoated", ep + ".cov_r_2d_front", "random-mixture CoV: grows with coarse-graining (issue 15)");
+  put("cov_r_EP_3d", "uncoated", ep + ".cov_r_3d", "random-mixture CoV: grows with coarse-graining");
+  put("cov_r_EP_front", "uncoated", ep + ".cov_r_2d_front", "random-mixture CoV: grows with coarse-graining");
   put("ep_impact_specific_kinetic_J_kg", "uncoated", "impact_specific_kinetic_J_kg",
       "mean peak over the tracked granules");
   // CoV reduction by coating, 100 (1 − CoV_coated / CoV_uncoated), σ by first-order propagation.
