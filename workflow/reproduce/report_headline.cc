@@ -22,9 +22,15 @@ std::string ShortName(const SummaryRow& row) {
   return row.synthetic ? name + " (synthetic)" : name;
 }
 
+// The rows' names; past kMaxNames, a count of the rest: a headline line stays a line, the table
+// lists them all.
+constexpr size_t kMaxNames = 8;
+
 std::string Names(const std::vector<const SummaryRow*>& rows) {
   std::string out;
-  for (size_t k = 0; k < rows.size(); ++k) out += (k > 0 ? "; " : "") + ShortName(*rows[k]);
+  const size_t shown = rows.size() > kMaxNames ? kMaxNames - 1 : rows.size();
+  for (size_t k = 0; k < shown; ++k) out += (k > 0 ? "; " : "") + ShortName(*rows[k]);
+  if (shown < rows.size()) out += "; and " + std::to_string(rows.size() - shown) + " more";
   return out;
 }
 

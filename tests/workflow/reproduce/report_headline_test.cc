@@ -120,3 +120,13 @@ TEST_CASE("report headline: nothing compared and nothing missed say so without e
   CHECK(empty[0].label == "Compared with the paper:");
   CHECK(empty[1].label == "Not run:");
 }
+
+TEST_CASE("report headline: a long list of rows is cut to a few names and a count", "[unit]") {
+  std::vector<ReferenceValue> refs;
+  for (int k = 0; k < 12; ++k) refs.push_back(Ref("q" + std::to_string(k), "q" + std::to_string(k), 1));
+  const std::vector<SummaryRow> rows = BuildSummaryRows(refs, {});
+  const std::vector<HeadlineItem> lines = VerdictHeadline(rows, NumberRowNotes(rows));
+  const HeadlineItem* not_run = Line(lines, "Not run:");
+  REQUIRE(not_run != nullptr);
+  CHECK(not_run->text == "q0; q1; q2; q3; q4; q5; q6; and 5 more (no value at this fidelity)");
+}
