@@ -26,7 +26,7 @@ td.tone-good{color:#11632c;font-weight:600}td.tone-bad{color:#a3111a;font-weight
 td.tone-muted{color:#666}
 sup.note{font-size:.75em;margin-left:.15em}sup.note a{text-decoration:none}
 figure{margin:1.5em 0}figure svg{max-width:100%;height:auto;border:1px solid #ddd}
-.figure-row{display:grid;grid-template-columns:repeat(auto-fit,minmax(min(100%,26em),1fr));
+.figure-row{display:grid;grid-template-columns:repeat(auto-fit,minmax(min(100%,36em),1fr));
 gap:1em 1.5em;margin:1em 0}
 .figure-row figure{margin:0}.figure-row figure svg{width:100%}
 figcaption{font-size:.9em;color:#444}pre{background:#f4f4f4;padding:.6em;overflow-x:auto}
