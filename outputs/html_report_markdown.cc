@@ -72,7 +72,9 @@ std::string HtmlReport::Markdown(const std::string& figure_dir) const {
     switch (b.kind) {
       case Kind::kSection: out += "## " + b.text + tag + "\n\n"; break;
       case Kind::kSubheading: out += "### " + b.text + "\n\n"; break;
-      case Kind::kParagraph: out += (b.synthetic ? "**[synthetic]** " : "") + b.text + "\n\n"; break;
+      case Kind::kParagraph:
+        out += (b.synthetic ? "**[synthetic]** " : "") + b.text + "\n\n";
+        break;
       case Kind::kList:
         for (const auto& item : b.items) out += "- " + item + "\n";
         out += "\n";

@@ -45,12 +45,14 @@ std::string Duration(double seconds) {
 // when the plot was not drawn.
 void SeeFigure(int number, const std::string& what, HtmlReport* r) {
   if (number > 0)
-    r->Paragraph("Figure " + std::to_string(number) + " (at the top, with the verdict) " + what + ".");
+    r->Paragraph("Figure " + std::to_string(number) + " (at the top, with the verdict) " + what +
+                 ".");
 }
 
 bool AnySynthetic(const nlohmann::json& items) {
   bool synthetic = false;
-  for (const auto& [key, item] : items.items()) synthetic = synthetic || item.value("synthetic", false);
+  for (const auto& [key, item] : items.items())
+    synthetic = synthetic || item.value("synthetic", false);
   return synthetic;
 }
 

@@ -83,8 +83,8 @@ bool SegregationSection(const ReportInputs& in, int bars_figure, HtmlReport* r,
   }
   if (!r->Table(t, error)) return false;
   if (bars_figure > 0)
-    r->Paragraph("Figure " + std::to_string(bars_figure) + " (at the top, with the verdict) plots " +
-                 m + "'s CoV and S_n per scenario ± sem.");
+    r->Paragraph("Figure " + std::to_string(bars_figure) +
+                 " (at the top, with the verdict) plots " + m + "'s CoV and S_n per scenario ± sem.");
   r->Subheading("Heap front faces (replicate 0 of each scenario)");
   if (!ScenarioFigures(seg, "heap_front_r0.svg", "front face of the %s heap, coloured by species", r, error))
     return false;

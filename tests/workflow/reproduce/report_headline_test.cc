@@ -123,7 +123,10 @@ TEST_CASE("report headline: nothing compared and nothing missed say so without e
 
 TEST_CASE("report headline: a long list of rows is cut to a few names and a count", "[unit]") {
   std::vector<ReferenceValue> refs;
-  for (int k = 0; k < 12; ++k) refs.push_back(Ref("q" + std::to_string(k), "q" + std::to_string(k), 1));
+  for (int k = 0; k < 12; ++k) {
+    const std::string name = "q" + std::to_string(k);
+    refs.push_back(Ref(name, name, 1));
+  }
   const std::vector<SummaryRow> rows = BuildSummaryRows(refs, {});
   const std::vector<HeadlineItem> lines = VerdictHeadline(rows, NumberRowNotes(rows));
   const HeadlineItem* not_run = Line(lines, "Not run:");

@@ -60,7 +60,8 @@ TEST_CASE("reproduce report: verdict first, short verdicts, each note once", "[u
   const std::string shape_note = "shape fixed by the workflow file: " + w.shape_assumption;
   DemcalValues v;
   v["angle_EP_deg"] = {.mean = 31.4, .sem = 0.3, .note = "calibrated to it (rolling_friction)"};
-  for (const char* s : {"BP", "TAED", "EP"}) v[std::string("clump_count_") + s] = {.note = shape_note};
+  for (const char* s : {"BP", "TAED", "EP"})
+    v[std::string("clump_count_") + s] = {.note = shape_note};
   v["coh_coated_EP"] = {.mean = 1.64e-3};
   v["gamma_sim_J_m2"] = {.mean = 0.0409, .note = "Γ ∝ E^(2/5) at constant Coh"};
   v["gamma_w2.5_J_m2"] = {.mean = 0.24, .sem = 0.03, .synthetic = true};

@@ -76,7 +76,7 @@ TEST_CASE("summary rows: a number that does not measure the paper's quantity is 
   CHECK(rows[0].demcal_mean == Approx(1.6));  // the number is still shown
 }
 
-TEST_CASE("summary rows: the verdict kind is decided with the text; the short verdict drops the note",
+TEST_CASE("summary rows: the verdict kind comes with the text; the short verdict drops the note",
           "[unit]") {
   const std::string long_note(400, 'x');
   DemcalValues v;
