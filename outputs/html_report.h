@@ -10,6 +10,11 @@
 // WriteFile is atomic (temporary file, fsync, rename: core/io/atomic_file.h), so a kill leaves
 // the previous report or the new one, never half of one.
 //
+// A report that leads with its verdict uses Headline() (a few labelled lines in a box), FigureRow()
+// (figures side by side where the screen is wide) and tables whose long notes are numbered
+// footnotes (HtmlTable::row_notes, then Footnotes() below the table). The page fills the width of
+// the window; wide tables scroll sideways on a narrow one.
+//
 // Thread-safety: a plain value; build it on one thread.
 //
 //   HtmlReport report("demcal reproduce alizadeh2018");
@@ -23,11 +28,32 @@
 
 namespace demcal::workflow {
 
+// How a verdict reads at a glance: the colour of a headline line or of a table's tone cell.
+enum class Tone { kNeutral, kGood, kBad, kMuted };
+
 struct HtmlTable {
   std::string caption;                          // may be empty
   std::vector<std::string> header;              // column titles, units in brackets
   std::vector<std::vector<std::string>> rows;   // each as wide as header
   std::vector<bool> synthetic_rows;             // empty, or one flag per row (badge on the row)
+  std::vector<Tone> row_tones;                  // empty, or one per row: colours cell tone_column
+  int tone_column = 0;
+  std::vector<std::vector<int>> row_notes;      // empty, or per row the footnote numbers (1-based)
+  int note_column = 0;                          // marked after the text of this column
+};
+
+// One line of a headline: a bold label, then plain text, then footnote marks.
+struct HeadlineItem {
+  std::string label;       // "Matched the paper"
+  std::string text;        // "6 of 14 compared: ..."
+  std::vector<int> notes;  // footnote numbers (1-based), linked to Footnotes()
+  Tone tone = Tone::kNeutral;
+};
+
+struct HtmlFigure {
+  std::string svg_document;  // as for HtmlReport::Figure
+  std::string caption;
+  bool synthetic = false;
 };
 
 class HtmlReport {
@@ -44,13 +70,21 @@ class HtmlReport {
   void List(const std::vector<std::string>& items);
   // Monospaced text kept as is (commands, file listings).
   void Code(const std::string& text);
-  // A table; false (and nothing added) if a row is not as wide as the header or synthetic_rows
-  // has the wrong length, with the reason in *error.
+  // A table; false (and nothing added) if a row is not as wide as the header, a per-row list has
+  // the wrong length, or a column index or footnote number is out of range, with the reason in
+  // *error.
   bool Table(const HtmlTable& table, std::string* error);
+  // The verdict lines a reader sees first (a boxed list; in Markdown "- **label** text [k]").
+  void Headline(const std::vector<HeadlineItem>& items);
+  // Numbered notes (1, 2, ... in order; note k is the target of the marks [k]).
+  void Footnotes(const std::vector<std::string>& notes);
   // An inline SVG figure with a caption; false (nothing added) if `svg_document` is not one
   // <svg ...>...</svg> element (after an optional <?xml ...?> prologue).
   bool Figure(const std::string& svg_document, const std::string& caption, bool synthetic,
               std::string* error);
+  // Figures side by side where the window is wide enough, one under the other where not; each is
+  // numbered as Figure() numbers it. False (nothing added) if any is malformed.
+  bool FigureRow(const std::vector<HtmlFigure>& figures, std::string* error);
 
   // The whole page.
   std::string Document() const;
@@ -70,14 +104,19 @@ class HtmlReport {
   int table_count() const { return table_count_; }
 
  private:
-  enum class Kind { kSection, kSubheading, kParagraph, kList, kCode, kTable, kFigure };
+  enum class Kind {
+    kSection, kSubheading, kParagraph, kList, kCode, kTable, kFigure, kFigureRow, kHeadline,
+    kFootnotes
+  };
   struct Block {
     Kind kind;
     std::string text;                 // heading, paragraph, code, figure caption
-    std::vector<std::string> items;   // list
+    std::vector<std::string> items;   // list, footnotes
     HtmlTable table;
     std::string svg;                  // figure, without prologue
     bool synthetic = false;
+    std::vector<HtmlFigure> figures;  // figure row, each svg without prologue
+    std::vector<HeadlineItem> headline;
   };
   std::string title_;
   std::vector<Block> blocks_;

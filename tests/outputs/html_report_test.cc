@@ -99,3 +99,78 @@ TEST_CASE("html report writes the page and the markdown with its figure files", 
   CHECK(error.find("cannot write") != std::string::npos);
   fs::remove_all(dir);
 }
+
+TEST_CASE("html report leads with a headline, marks footnotes and lists each note once",
+          "[unit]") {
+  HtmlReport report("t");
+  report.Section("Verdict");
+  report.Headline({{.label = "Matched:", .text = "a <b>", .tone = Tone::kGood},
+                   {.label = "Not run:", .text = "c", .notes = {1}, .tone = Tone::kMuted}});
+  demcal::objectives::SvgPlot plot{.title = "p"};
+  plot.series.push_back({.x = {0, 1}, .y = {0, 1}});
+  const std::string svg = demcal::objectives::RenderSvg(plot);
+  std::string error;
+  REQUIRE(report.FigureRow({{.svg_document = svg, .caption = "one"},
+                            {.svg_document = svg, .caption = "two", .synthetic = true}},
+                           &error));
+  REQUIRE(report.Table({.header = {"q", "verdict"},
+                        .rows = {{"a", "within noise"}, {"b", "not run"}, {"c", "not run"}},
+                        .row_tones = {Tone::kGood, Tone::kMuted, Tone::kMuted},
+                        .tone_column = 1,
+                        .row_notes = {{}, {1}, {1}},
+                        .note_column = 1},
+                       &error));
+  report.Footnotes({"the shared note"});
+  const std::string html = report.Document();
+  CHECK(html.find("<strong>Matched:</strong> a &lt;b&gt;") != std::string::npos);
+  CHECK(Count(html, "<li class=\"tone-good\">") == 1);
+  CHECK(Count(html, "<td class=\"tone-muted\">not run<sup class=\"note\"><a href=\"#note-1\">1</a>"
+                    "</sup></td>") == 2);
+  CHECK(Count(html, "<td class=\"tone-good\">within noise</td>") == 1);
+  CHECK(Count(html, "the shared note") == 1);
+  CHECK(Count(html, "<li id=\"note-1\">") == 1);
+  CHECK(Count(html, "<div class=\"figure-row\">") == 1);
+  CHECK(report.figure_count() == 2);
+  // The verdict reads first: headline, then the figures, then the table, then its notes.
+  const size_t headline = html.find("class=\"headline\""), figures = html.find("figure-row\">");
+  const size_t table = html.find("<table>"), notes = html.find("<ol class=\"notes\">");
+  CHECK(headline < figures);
+  CHECK(figures < table);
+  CHECK(table < notes);
+  // The Markdown twin keeps the same order, with "[k]" marks and a numbered list.
+  const std::string md = report.Markdown("figures");
+  CHECK(md.find("- **Not run:** c [1]") != std::string::npos);
+  CHECK(Count(md, "| not run [1] |") == 2);
+  CHECK(Count(md, "the shared note") == 1);
+  CHECK(md.find("- **Matched:**") < md.find("![Figure 1](figures/figure_01.svg)"));
+  CHECK(md.find("![Figure 2](figures/figure_02.svg)") < md.find("| q | verdict |"));
+  CHECK(md.find("| q | verdict |") < md.find("1. the shared note"));
+}
+
+TEST_CASE("html report page fills the window: no fixed narrow column", "[unit]") {
+  const std::string html = HtmlReport("t").Document();
+  const size_t from = html.find("<style>"), to = html.find("</style>");
+  REQUIRE(to != std::string::npos);
+  const std::string style = html.substr(from, to - from);
+  const size_t body_at = style.find("body{");
+  REQUIRE(body_at != std::string::npos);
+  const std::string body = style.substr(body_at, style.find('}', body_at) - body_at);
+  CHECK(body.find("max-width") == std::string::npos);
+  CHECK(style.find("table{border-collapse:collapse;width:100%}") != std::string::npos);
+  CHECK(style.find("overflow-x:auto") != std::string::npos);  // wide tables scroll in their box
+}
+
+TEST_CASE("html report refuses footnote and tone lists that do not fit the table", "[unit]") {
+  HtmlReport report("t");
+  std::string error;
+  CHECK_FALSE(report.Table({.header = {"a"}, .rows = {{"1"}}, .row_notes = {{1}, {2}}}, &error));
+  CHECK(error.find("row_notes has 2 entries for 1 rows") != std::string::npos);
+  CHECK_FALSE(report.Table({.header = {"a"}, .rows = {{"1"}}, .row_notes = {{0}}}, &error));
+  CHECK(error.find("footnote number 0") != std::string::npos);
+  CHECK_FALSE(report.Table(
+      {.header = {"a"}, .rows = {{"1"}}, .row_tones = {Tone::kGood}, .tone_column = 1}, &error));
+  CHECK(error.find("tone_column") != std::string::npos);
+  CHECK_FALSE(report.FigureRow({{.svg_document = "<p>no</p>", .caption = "bad"}}, &error));
+  CHECK(report.table_count() == 0);
+  CHECK(report.figure_count() == 0);
+}

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "outputs/html_report.h"
+#include "workflow/reproduce/report_headline.h"
 #include "workflow/reproduce/reproduce_plots.h"
 
 namespace demcal::workflow {
@@ -31,30 +32,99 @@ std::string PlusMinus(const nlohmann::json& mean, const nlohmann::json& sem, con
   return Fmt(mean, f) + (sem.is_number() ? " ± " + Fmt(sem, f) : "");
 }
 
-bool AddFigure(HtmlReport* r, const std::string& svg, const std::string& caption, bool synthetic,
-               std::string* error) {
-  return svg.empty() || r->Figure(svg, caption, synthetic, error);
+// The numbers of the figures that lead the report (0: not drawn), for the sections they belong to.
+struct KeyFigures {
+  int gamma_curve = 0, angle = 0, bars = 0;
+};
+
+std::string Duration(double seconds) {
+  return seconds < 120 ? Fmt(seconds, "%.0f") + " s" : Fmt(seconds / 60, "%.0f") + " min";
 }
 
-bool SummarySection(const ReportInputs& in, HtmlReport* r, std::string* error) {
+// "Figure 2 (in the verdict, at the top) ..." for a section whose plot leads the report; nothing
+// when the plot was not drawn.
+void SeeFigure(int number, const std::string& what, HtmlReport* r) {
+  if (number > 0)
+    r->Paragraph("Figure " + std::to_string(number) + " (at the top, with the verdict) " + what +
+                 ".");
+}
+
+bool AnySynthetic(const nlohmann::json& items) {
+  bool synthetic = false;
+  for (const auto& [key, item] : items.items())
+    synthetic = synthetic || item.value("synthetic", false);
+  return synthetic;
+}
+
+// The run itself: which workflow, at which fidelity, how long its stages took.
+HeadlineItem RunLine(const ReportInputs& in) {
+  double seconds = 0;
+  for (const auto& [stage, s] : in.timings->items())
+    if (s.is_number()) seconds += s.get<double>();
+  return {.label = "Run:",
+          .text = in.workflow->name + " at the " +
+                  (in.quick ? "--quick fidelity (coarser heaps, fewer replicates: a first look)"
+                            : "default fidelity") +
+                  ", " + std::to_string(in.timings->size()) + " stages in " + Duration(seconds) +
+                  " of wall time"};
+}
+
+// The verdict first: the headline lines, then the key figures side by side (Γ(w), the angle
+// against the coating, the segregation indices); their numbers go to *key for the sections.
+bool VerdictSection(const ReportInputs& in, const RowNotes& notes, HtmlReport* r,
+                    KeyFigures* key, std::string* error) {
+  r->Section("Verdict");
+  std::vector<HeadlineItem> lines = {RunLine(in)};
+  for (HeadlineItem& line : VerdictHeadline(*in.rows, notes)) lines.push_back(std::move(line));
+  r->Headline(lines);
+  const std::string m = in.workflow->coating.material;
+  std::vector<HtmlFigure> figures;
+  int next = r->figure_count() + 1;
+  auto add = [&](const std::string& svg, const std::string& caption, bool synthetic, int* number) {
+    if (svg.empty()) return;
+    figures.push_back({.svg_document = svg, .caption = caption, .synthetic = synthetic});
+    *number = next++;
+  };
+  add(GammaCurveSvg(*in.results), "Γ against coating level, fitted curve and 1σ band",
+      At(*in.results, "gamma_curve").value("synthetic", false), &key->gamma_curve);
+  add(AngleVsCoatingSvg(*in.results, m),
+      "repose angle against coating: measured (and synthetic) against demcal",
+      AnySynthetic(At(At(*in.results, "gamma_per_coating"), "levels")), &key->angle);
+  add(SegregationBarsSvg(*in.results, m), m + " CoV and S_n per scenario ± sem",
+      AnySynthetic(At(At(*in.results, "segregation"), "scenarios")), &key->bars);
+  return r->FigureRow(figures, error);
+}
+
+// The whole table with short verdicts, coloured by kind; each distinct note once, below it.
+bool SummarySection(const ReportInputs& in, const RowNotes& notes, HtmlReport* r,
+                    std::string* error) {
   r->Section("Paper against demcal");
   r->Paragraph("Workflow " + in.workflow->name + " (" + in.workflow->source + ") at the " +
                (in.quick ? "--quick" : "default") + " fidelity. Verdicts: 'within noise' when "
                "|demcal − paper| ≤ √(sem² + u²) (the calibration's criterion); otherwise the "
-               "difference and, where known, the likely cause. Rows marked synthetic rest on the "
-               "synthetic coating angles (datasets/synthetic/alizadeh2018_coating_angles/), not on "
-               "measurements.");
+               "difference in units of that noise; 'meets' or 'does not meet' for an at-least or "
+               "at-most number; 'demcal only' where the paper shows a figure without a number. "
+               "The numbered notes below the table say how a number was obtained, why it differs "
+               "where that is known, or why it was not run. Rows marked synthetic rest on the "
+               "synthetic coating angles (datasets/synthetic/alizadeh2018_coating_angles/), not "
+               "on measurements.");
   HtmlTable t{.caption = "summary.json",
-              .header = {"quantity", "paper", "demcal mean ± sem", "verdict", "note", "source"}};
+              .header = {"quantity", "paper", "demcal mean ± sem", "verdict", "source"},
+              .tone_column = 3,
+              .row_notes = notes.row_notes,
+              .note_column = 3};
   for (const SummaryRow& row : *in.rows) {
     t.rows.push_back({row.quantity + " [" + row.unit + "]",
                       (row.comparison == "at_least" ? "≥ " : row.comparison == "at_most" ? "≤ " : "") +
                           Fmt(row.paper_value),
                       Fmt(row.demcal_mean) + (std::isfinite(row.demcal_sem) ? " ± " + Fmt(row.demcal_sem) : ""),
-                      row.verdict, row.note, row.source});
+                      ShortVerdict(row), row.source});
     t.synthetic_rows.push_back(row.synthetic);
+    t.row_tones.push_back(VerdictTone(row.kind));
   }
-  return r->Table(t, error);
+  if (!r->Table(t, error)) return false;
+  if (!notes.notes.empty()) r->Footnotes(notes.notes);
+  return true;
 }
 
 bool SpeciesSection(const ReportInputs& in, HtmlReport* r, std::string* error) {
@@ -84,9 +154,9 @@ bool CohesionSection(const ReportInputs& in, HtmlReport* r, std::string* error) 
   return r->Table(t, error);
 }
 
-bool CoatingSection(const ReportInputs& in, HtmlReport* r, std::string* error) {
+bool CoatingSection(const ReportInputs& in, const KeyFigures& key, HtmlReport* r,
+                    std::string* error) {
   const nlohmann::json& g = At(*in.results, "gamma_per_coating");
-  const std::string m = in.workflow->coating.material;
   r->Section("3. Γ per coating level");
   r->Paragraph("Start: 2γ carried to the simulation stiffness, " + Fmt(At(g, "start_gamma_J_m2")) +
                " J/m²; bracketed search on each level's angle, stopping within noise.");
@@ -99,15 +169,12 @@ bool CoatingSection(const ReportInputs& in, HtmlReport* r, std::string* error) {
                       l.value("termination", "")});
     t.synthetic_rows.push_back(l.value("synthetic", false));
   }
-  bool synthetic = false;
-  for (bool b : t.synthetic_rows) synthetic = synthetic || b;
-  return r->Table(t, error) &&
-         AddFigure(r, AngleVsCoatingSvg(*in.results, m),
-                   "repose angle against coating: measured (and synthetic) against demcal", synthetic,
-                   error);
+  if (!r->Table(t, error)) return false;
+  SeeFigure(key.angle, "plots these angles against the coating level", r);
+  return true;
 }
 
-bool CurveSection(const ReportInputs& in, HtmlReport* r, std::string* error) {
+bool CurveSection(const ReportInputs& in, const KeyFigures& key, HtmlReport* r) {
   const nlohmann::json& c = At(*in.results, "gamma_curve");
   const bool synthetic = c.value("synthetic", false);
   r->Section("4. Γ(w) curve", synthetic);
@@ -124,8 +191,8 @@ bool CurveSection(const ReportInputs& in, HtmlReport* r, std::string* error) {
                    "angle was made by demcal at a Γ(w) through 0.250 J/m² (the synthetic recipe), so "
                    "agreement there tests demcal's repeatability, not the paper.", true);
   }
-  return AddFigure(r, GammaCurveSvg(*in.results), "Γ against coating level, fitted curve and 1σ band",
-                   synthetic, error);
+  SeeFigure(key.gamma_curve, "plots Γ per level with this curve and its 1σ band", r);
+  return true;
 }
 
 bool PairsSection(const ReportInputs& in, HtmlReport* r, std::string* error) {
@@ -146,15 +213,19 @@ bool PairsSection(const ReportInputs& in, HtmlReport* r, std::string* error) {
 
 }  // namespace
 
-bool SegregationSection(const ReportInputs& in, HtmlReport* r, std::string* error);
+bool SegregationSection(const ReportInputs& in, int bars_figure, HtmlReport* r,
+                        std::string* error);
 bool TailSections(const ReportInputs& in, HtmlReport* r, std::string* error);
 
 bool WriteReproduceReport(const ReportInputs& in, std::string* error) {
   HtmlReport r("demcal reproduce " + in.workflow->name);
-  if (!SummarySection(in, &r, error) || !SpeciesSection(in, &r, error) ||
-      !CohesionSection(in, &r, error) || !CoatingSection(in, &r, error) ||
-      !CurveSection(in, &r, error) || !PairsSection(in, &r, error) ||
-      !SegregationSection(in, &r, error) || !TailSections(in, &r, error))
+  const RowNotes notes = NumberRowNotes(*in.rows);
+  KeyFigures key;
+  if (!VerdictSection(in, notes, &r, &key, error) || !SummarySection(in, notes, &r, error) ||
+      !SpeciesSection(in, &r, error) || !CohesionSection(in, &r, error) ||
+      !CoatingSection(in, key, &r, error) || !CurveSection(in, key, &r) ||
+      !PairsSection(in, &r, error) || !SegregationSection(in, key.bars, &r, error) ||
+      !TailSections(in, &r, error))
     return false;
   return r.WriteFile(in.out_dir + "/report.html", error) &&
          r.WriteMarkdown(in.out_dir + "/report.md", "figures", error);

@@ -1,9 +1,12 @@
 #pragma once
 // The report of `demcal reproduce`: DIR/report.html (self-contained: inline SVG, no scripts, no
 // network; outputs/html_report.h) and the same document as DIR/report.md with its
-// figures in DIR/figures/. Sections: paper vs demcal (the summary table), one per stage (its
-// numbers, its plot in the paper's figure style, its output folder), where the time went, and
-// the output files. Everything resting on synthetic data carries a "synthetic" badge.
+// figures in DIR/figures/. The verdict comes first: headline lines computed from the summary rows
+// (report_headline.h) and the key figures in the paper's styles (Γ(w), the angle against the
+// coating, the segregation indices); then paper vs demcal (the summary table with short verdicts,
+// its notes numbered below it, each once), one section per stage (its numbers, its other plots,
+// its output folder), where the time went, and the output files. Everything resting on synthetic
+// data carries a "synthetic" badge.
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>

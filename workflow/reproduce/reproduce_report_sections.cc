@@ -1,4 +1,4 @@
-// The later sections of the reproduce report (reproduce_report.h): segregation with its index bars
+// The later sections of the reproduce report (reproduce_report.h): segregation with its indices
 // and heap face pictures, the fidelity check, where the time went, and the output files.
 #include <cmath>
 #include <cstdio>
@@ -7,7 +7,6 @@
 #include <sstream>
 
 #include "outputs/html_report.h"
-#include "workflow/reproduce/reproduce_plots.h"
 #include "workflow/reproduce/reproduce_report.h"
 
 namespace demcal::workflow {
@@ -58,7 +57,8 @@ bool ScenarioFigures(const nlohmann::json& seg, const std::string& name, const s
 
 }  // namespace
 
-bool SegregationSection(const ReportInputs& in, HtmlReport* r, std::string* error) {
+bool SegregationSection(const ReportInputs& in, int bars_figure, HtmlReport* r,
+                        std::string* error) {
   const nlohmann::json& seg = At(*in.results, "segregation");
   r->Section("6. Segregation of the calibrated set");
   if (!seg.value("enabled", false)) {
@@ -69,9 +69,8 @@ bool SegregationSection(const ReportInputs& in, HtmlReport* r, std::string* erro
   r->Paragraph("Ternary heap, " + std::to_string(At(seg, "replicates").get<int>()) +
                " replicate(s) per scenario (mean ± sem over replicates; no sem with one). The "
                "segregation fidelity and replicate count are the workflow file's; their defaults "
-               "come from a sweep of what each fidelity can resolve (docs/experiments.md). A "
-               "coarse heap holds few " + m + " grains, so CoV_r grows and S_n is pulled towards "
-               "1.");
+               "are set by what a fidelity can resolve (docs/experiments.md). A coarse heap holds "
+               "few " + m + " grains, so CoV_r grows and S_n is pulled towards 1.");
   HtmlTable t{.caption = m + " (and TAED) indices per scenario",
               .header = {"scenario", "CoV 3D", "CoV_r 3D", "S_n 3D", "S_n front", "S_n back",
                          "TAED CoV 3D", "mixture angle [deg]", "discharge [s]", "replicates ok"}};
@@ -83,11 +82,9 @@ bool SegregationSection(const ReportInputs& in, HtmlReport* r, std::string* erro
     t.synthetic_rows.push_back(s.value("synthetic", false));
   }
   if (!r->Table(t, error)) return false;
-  const std::string bars = SegregationBarsSvg(*in.results, m);
-  bool synthetic = false;
-  for (const auto& [name, s] : At(seg, "scenarios").items()) synthetic = synthetic || s.value("synthetic", false);
-  if (!bars.empty() && !r->Figure(bars, m + " CoV and S_n per scenario ± sem", synthetic, error))
-    return false;
+  if (bars_figure > 0)
+    r->Paragraph("Figure " + std::to_string(bars_figure) +
+                 " (at the top, with the verdict) plots " + m + "'s CoV and S_n per scenario ± sem.");
   r->Subheading("Heap front faces (replicate 0 of each scenario)");
   if (!ScenarioFigures(seg, "heap_front_r0.svg", "front face of the %s heap, coloured by species", r, error))
     return false;

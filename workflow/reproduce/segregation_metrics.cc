@@ -134,7 +134,7 @@ nlohmann::json SegregationSummaryValues(const nlohmann::json& scenarios, const s
   for (const char* s : {"uncoated", "coated"}) MarkFeedLimited(scenario(s), &v["discharge_time_" + std::string(s) + "_s"]);
   put("s_n_EP_3d_excessive", "excessive", ep + ".s_n_3d");
   put("cov_EP_3d_excessive", "excessive", ep + ".cov_3d");
-  const char* cov_r_note = "random-mixture CoV: grows with coarse-graining";
+  const std::string cov_r_note = "random-mixture CoV: grows with coarse-graining";
   put("cov_r_EP_3d", "uncoated", ep + ".cov_r_3d", cov_r_note);
   put("cov_r_EP_front", "uncoated", ep + ".cov_r_2d_front", cov_r_note);
   put("ep_impact_specific_kinetic_J_kg", "uncoated", "impact_specific_kinetic_J_kg",

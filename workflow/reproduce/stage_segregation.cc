@@ -40,7 +40,7 @@ bool BuildScenarios(const ReproduceContext& ctx, std::vector<Scenario>* out, std
   const WorkflowFile& w = *ctx.workflow;
   nlohmann::ordered_json base;
   if (!ReadExperimentJson(w.segregation.experiment_file, &base, error)) return false;
-  if (w.segregation.size_scale > 0) {  // the workflow's own default fidelity (docs/reproduce.md)
+  if (w.segregation.size_scale > 0) {  // the workflow's own default fidelity
     nlohmann::ordered_json& fidelity = base["fidelity"];
     if (!fidelity.is_object()) fidelity = nlohmann::ordered_json::object();
     fidelity["name"] = "workflow";

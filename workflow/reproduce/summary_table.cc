@@ -41,26 +41,53 @@ const std::vector<std::string>& ReferenceKeys() {
   return keys;
 }
 
-std::string Verdict(const ReferenceValue& reference, const DemcalValue& value) {
-  if (!std::isfinite(value.mean))
-    return "not run: " + (value.note.empty() ? std::string("no value at this fidelity") : value.note);
-  if (!value.comparable) return "not comparable: " + value.note;
-  if (!std::isfinite(reference.value)) return "demcal only (the paper gives a figure, no number)";
-  const double sem = std::isfinite(value.sem) ? value.sem : 0;
+VerdictKind ClassifyVerdict(const ReferenceValue& reference, const DemcalValue& value) {
+  if (!std::isfinite(value.mean)) return VerdictKind::kNotRun;
+  if (!value.comparable) return VerdictKind::kNotComparable;
+  if (!std::isfinite(reference.value)) return VerdictKind::kDemcalOnly;
   if (reference.comparison == "at_least" || reference.comparison == "at_most") {
     const bool above = value.mean >= reference.value;
     const bool meets = reference.comparison == "at_least" ? above : !above;
-    const std::string sign = reference.comparison == "at_least" ? "≥ " : "≤ ";
-    return std::string(meets ? "meets" : "does not meet") + " (" + sign + Number(reference.value) +
-           (sem > 0 ? "; demcal ± " + Number(sem) : "") + ")";
+    return meets ? VerdictKind::kMeets : VerdictKind::kDoesNotMeet;
+  }
+  const double sem = std::isfinite(value.sem) ? value.sem : 0;
+  const double noise = std::sqrt(sem * sem + reference.uncertainty * reference.uncertainty);
+  return std::fabs(value.mean - reference.value) <= noise ? VerdictKind::kWithinNoise
+                                                          : VerdictKind::kDiffers;
+}
+
+std::string Verdict(const ReferenceValue& reference, const DemcalValue& value) {
+  const VerdictKind kind = ClassifyVerdict(reference, value);
+  const double sem = std::isfinite(value.sem) ? value.sem : 0;
+  switch (kind) {
+    case VerdictKind::kNotRun:
+      return "not run: " +
+             (value.note.empty() ? std::string("no value at this fidelity") : value.note);
+    case VerdictKind::kNotComparable: return "not comparable: " + value.note;
+    case VerdictKind::kDemcalOnly: return "demcal only (the paper gives a figure, no number)";
+    case VerdictKind::kWithinNoise: return "within noise";
+    case VerdictKind::kMeets:
+    case VerdictKind::kDoesNotMeet: {
+      const std::string sign = reference.comparison == "at_least" ? "≥ " : "≤ ";
+      return std::string(kind == VerdictKind::kMeets ? "meets" : "does not meet") + " (" + sign +
+             Number(reference.value) + (sem > 0 ? "; demcal ± " + Number(sem) : "") + ")";
+    }
+    case VerdictKind::kDiffers: break;
   }
   const double noise = std::sqrt(sem * sem + reference.uncertainty * reference.uncertainty);
   const double diff = value.mean - reference.value;
-  if (std::fabs(diff) <= noise) return "within noise";
   std::string text = "differs by " + Number(diff) + " " + reference.unit;
   if (noise > 0) text += " (" + Number(diff / noise) + " σ)";
   else text += " (" + Number(100 * diff / reference.value) + " %; no noise to compare with)";
   return text;
+}
+
+std::string ShortVerdict(const SummaryRow& row) {
+  if (row.kind == VerdictKind::kDemcalOnly) return "demcal only";
+  if (row.note.empty()) return row.verdict;  // nothing below the table to point at
+  if (row.kind == VerdictKind::kNotRun) return "not run";
+  if (row.kind == VerdictKind::kNotComparable) return "not comparable";
+  return row.verdict;
 }
 
 std::vector<SummaryRow> BuildSummaryRows(const std::vector<ReferenceValue>& reference,
@@ -82,6 +109,7 @@ std::vector<SummaryRow> BuildSummaryRows(const std::vector<ReferenceValue>& refe
     row.note = v.note;
     row.synthetic = v.synthetic;
     row.verdict = Verdict(r, v);
+    row.kind = ClassifyVerdict(r, v);
     rows.push_back(row);
   }
   return rows;

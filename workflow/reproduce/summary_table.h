@@ -23,6 +23,18 @@
 
 namespace demcal::workflow {
 
+// The verdict as a kind, for whatever groups or colours rows (the report's headline): decided with
+// the verdict's text, never read back from it.
+enum class VerdictKind {
+  kWithinNoise,    // "within noise"
+  kMeets,          // "meets (≥ v)"
+  kDiffers,        // "differs by X (k σ)"
+  kDoesNotMeet,    // "does not meet (≥ v)"
+  kDemcalOnly,     // the paper gives a figure, no number
+  kNotComparable,  // demcal's number measures something else (note says why)
+  kNotRun,         // no demcal value
+};
+
 struct DemcalValue {
   double mean = std::numeric_limits<double>::quiet_NaN();
   double sem = std::numeric_limits<double>::quiet_NaN();  // NaN: no spread (deterministic)
@@ -39,12 +51,18 @@ struct SummaryRow {
   double demcal_mean = std::numeric_limits<double>::quiet_NaN();
   double demcal_sem = std::numeric_limits<double>::quiet_NaN();
   std::string verdict, note;
+  VerdictKind kind = VerdictKind::kNotRun;
   bool synthetic = false;
 };
 
 std::vector<SummaryRow> BuildSummaryRows(const std::vector<ReferenceValue>& reference,
                                          const DemcalValues& values);
 std::string Verdict(const ReferenceValue& reference, const DemcalValue& value);
+VerdictKind ClassifyVerdict(const ReferenceValue& reference, const DemcalValue& value);
+// The verdict without the note it may carry ("not run", "not comparable" when the row has a note;
+// "demcal only"; the rest as Verdict() has it): for a table whose notes are printed once, below
+// it, and whose text says what "demcal only" means.
+std::string ShortVerdict(const SummaryRow& row);
 
 // summary.json: {"format": "demcal-reproduce-summary/1", "workflow", "fidelity", "rows": [...]}
 // (NaN written as null).

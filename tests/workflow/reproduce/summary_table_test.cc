@@ -75,3 +75,36 @@ TEST_CASE("summary rows: a number that does not measure the paper's quantity is 
   CHECK(rows[0].verdict == "not comparable: feed-limited funnel");
   CHECK(rows[0].demcal_mean == Approx(1.6));  // the number is still shown
 }
+
+TEST_CASE("summary rows: the verdict kind comes with the text; the short verdict drops the note",
+          "[unit]") {
+  const std::string long_note(400, 'x');
+  DemcalValues v;
+  v["a"] = {.mean = 1.0, .sem = 0.1};                 // within noise
+  v["b"] = {.mean = 5.0};                             // differs
+  v["c"] = {.note = long_note};                       // not run, with why
+  v["d"] = {};                                        // not run, no why
+  v["e"] = {.mean = 2, .note = long_note, .comparable = false};
+  v["f"] = {.mean = 50};                              // meets (≥ 40)
+  v["g"] = {.mean = 0.5};                             // figure only
+  const std::vector<SummaryRow> rows = BuildSummaryRows(
+      {Ref("a", 1.05), Ref("b", 1.0, 0.5), Ref("c", 3), Ref("d", 3), Ref("e", 2.2),
+       Ref("f", 40, 0, "at_least"), Ref("g", NAN)},
+      v);
+  REQUIRE(rows.size() == 7);
+  CHECK(rows[0].kind == VerdictKind::kWithinNoise);
+  CHECK(rows[1].kind == VerdictKind::kDiffers);
+  CHECK(rows[2].kind == VerdictKind::kNotRun);
+  CHECK(rows[3].kind == VerdictKind::kNotRun);
+  CHECK(rows[4].kind == VerdictKind::kNotComparable);
+  CHECK(rows[5].kind == VerdictKind::kMeets);
+  CHECK(rows[6].kind == VerdictKind::kDemcalOnly);
+  CHECK(ShortVerdict(rows[0]) == "within noise");
+  CHECK(ShortVerdict(rows[1]) == rows[1].verdict);  // "differs by 4 J/m2 (8 σ)": already short
+  CHECK(ShortVerdict(rows[2]) == "not run");
+  CHECK(rows[2].verdict.find(long_note) != std::string::npos);  // summary.json keeps it whole
+  CHECK(ShortVerdict(rows[3]) == "not run: no value at this fidelity");  // no note to point at
+  CHECK(ShortVerdict(rows[4]) == "not comparable");
+  CHECK(ShortVerdict(rows[6]) == "demcal only");
+  for (const SummaryRow& row : rows) CHECK(ShortVerdict(row).size() < 60);
+}

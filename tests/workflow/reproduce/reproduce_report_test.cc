@@ -1,0 +1,119 @@
+// The reproduce report from stand-in stage results and summary rows (no DEM run): the verdict
+// comes first, verdict cells are short, a note shared by rows is printed once, no history.
+#include "workflow/reproduce/reproduce_report.h"
+
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "outputs/html_report.h"
+#include "workflow/test_paths.h"
+
+using namespace demcal::workflow;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string ReadText(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+int Count(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// Each stage's result as the stages write it, reduced to what the report reads; two coating
+// levels so the Γ(w) and angle figures are drawn; segregation and the fidelity check off.
+nlohmann::json StandInResults() {
+  return nlohmann::json::parse(R"json({
+    "species": {"species": {"EP": {"property": "rolling_friction", "value": 0.2, "sigma": 0.02,
+                                   "measured": 31, "uncertainty": 1, "simulated": 31.4,
+                                   "sem": 0.3, "termination": "within_noise"}}},
+    "cohesion": {"convention": "R* = R", "cohesion_number": 1.64e-3, "gamma_sim_J_m2": 0.0409,
+                 "explanation": "Γ ∝ E^(2/5)", "inputs": {"gamma_J_m2": 0.086}},
+    "gamma_per_coating": {"start_gamma_J_m2": 0.0409, "levels": [
+      {"wt_pct": 0.5, "value": 0.05, "sigma": 0.01, "measured": 37.6, "uncertainty": 1,
+       "simulated": 37.2, "sem": 0.4, "synthetic": false, "provenance": "measured"},
+      {"wt_pct": 2.5, "value": 0.24, "sigma": 0.03, "measured": 45.0, "uncertainty": 1,
+       "simulated": 44.6, "sem": 0.5, "synthetic": true, "provenance": "synthetic"}]},
+    "gamma_curve": {"fitted": false, "why": "stand-in", "synthetic": true},
+    "dissimilar_pairs": {"from": "stand-in", "synthetic": true, "pairs": []},
+    "segregation": {"enabled": false},
+    "fidelity_check": {"enabled": false, "why": "off in this stand-in"}})json");
+}
+
+}  // namespace
+
+TEST_CASE("reproduce report: verdict first, short verdicts, each note once", "[unit]") {
+  const fs::path root = demcal::testing::RepoRoot();
+  WorkflowFile w;
+  std::string error;
+  REQUIRE(LoadWorkflowFile((root / "datasets/alizadeh2018/workflow.json").string(), &w, &error));
+  // The values as the stages would give them at a short run: the clump counts share the long
+  // shape note (stage_species.cc), the segregation rows were not run.
+  const std::string shape_note = "shape fixed by the workflow file: " + w.shape_assumption;
+  DemcalValues v;
+  v["angle_EP_deg"] = {.mean = 31.4, .sem = 0.3, .note = "calibrated to it (rolling_friction)"};
+  for (const char* s : {"BP", "TAED", "EP"})
+    v[std::string("clump_count_") + s] = {.note = shape_note};
+  v["coh_coated_EP"] = {.mean = 1.64e-3};
+  v["gamma_sim_J_m2"] = {.mean = 0.0409, .note = "Γ ∝ E^(2/5) at constant Coh"};
+  v["gamma_w2.5_J_m2"] = {.mean = 0.24, .sem = 0.03, .synthetic = true};
+  const std::vector<SummaryRow> rows = BuildSummaryRows(w.reference, v);
+  const nlohmann::json results = StandInResults();
+  const nlohmann::json timings = {{"species", 60.0}, {"cohesion", 0.0}};
+  const fs::path out = fs::temp_directory_path() / "demcal_reproduce_report_test";
+  fs::remove_all(out);
+  fs::create_directories(out);
+  const ReportInputs in{.workflow = &w, .results = &results, .rows = &rows,
+                        .timings = &timings, .quick = true, .out_dir = out.string()};
+  REQUIRE(WriteReproduceReport(in, &error));
+  const std::string html = ReadText(out / "report.html");
+  const std::string md = ReadText(out / "report.md");
+
+  // The headline and the key figures come before the table; the notes after it.
+  const size_t headline = html.find("<ul class=\"headline\">");
+  const size_t first_table = html.find("<table>");
+  REQUIRE(headline != std::string::npos);
+  CHECK(headline < first_table);
+  CHECK(html.find("<strong>Matched the paper:</strong>") < first_table);
+  CHECK(html.find("<strong>Not run:</strong> BP clump sphere count; TAED clump sphere count; EP "
+                  "clump sphere count<sup") != std::string::npos);
+  CHECK(Count(html.substr(0, first_table), "<figure") == 2);  // Γ(w) and the angle figure
+  CHECK(first_table < html.find("<ol class=\"notes\">"));
+
+  // The 90-word shape note: once as a footnote, not in the headline or any cell.
+  CHECK(Count(html, HtmlEscape(shape_note)) == 1);
+  CHECK(Count(md, shape_note) == 1);
+  // Every tone (verdict) cell is short: the text before its footnote mark.
+  int verdict_cells = 0;
+  for (size_t at = html.find("<td class=\"tone-"); at != std::string::npos;
+       at = html.find("<td class=\"tone-", at + 1)) {
+    const size_t text = html.find('>', at) + 1;
+    const size_t end = std::min(html.find("</td>", text), html.find("<sup", text));
+    CHECK(end - text < 60);
+    ++verdict_cells;
+  }
+  CHECK(verdict_cells == static_cast<int>(rows.size()));
+
+  // No history in what a reader sees.
+  CHECK(html.find("issue ") == std::string::npos);
+  CHECK(md.find("issue ") == std::string::npos);
+
+  // The Markdown twin reads in the same order.
+  const size_t md_headline = md.find("- **Matched the paper:**");
+  const size_t md_figure = md.find("![Figure 1](figures/figure_01.svg)");
+  const size_t md_table = md.find("| quantity | paper |");
+  const size_t md_notes = md.find("\n1. ");
+  REQUIRE(md_headline != std::string::npos);
+  CHECK(md_headline < md_figure);
+  CHECK(md_figure < md_table);
+  CHECK(md_table < md_notes);
+  fs::remove_all(out);
+}
