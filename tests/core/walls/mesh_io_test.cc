@@ -21,7 +21,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path DataDir() { return fs::path(__FILE__).parent_path().parent_path() / "data"; }
+fs::path DataDir() { return fs::path(__FILE__).parent_path().parent_path().parent_path() / "data"; }
 
 // A private scratch directory, removed at the end of the test.
 struct ScratchDir {
