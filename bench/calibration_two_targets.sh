@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Benchmark of a whole calibration (issue "Calibration II"): two parameters (BP-BP sliding and
+# Benchmark of a whole calibration: two parameters (BP-BP sliding and
 # rolling friction) against two targets of SYNTHETIC twin data, at the fidelity the data were made
 # at (--quick). Prints wall time, simulations run, and the recovered values against the truth
 # (truth.json beside the study's measurement table) in units of the reported sigma.

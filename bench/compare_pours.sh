@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# compare_pours.sh -- demcal vs LIGGGHTS 3.8 on the workloads a calibration runs (issue 11), one
+# compare_pours.sh -- demcal vs LIGGGHTS 3.8 on the workloads a calibration runs, one
 # thread / one MPI rank, both codes from the same inputs (bench/pours/make_cases.py writes the
 # demcal scenes and the LIGGGHTS data, STL and variables from one parameter set):
 #   heap       15,000 spheres (d 1.8-2.2 mm) poured from a 5 mm-radius stream onto a frozen rough

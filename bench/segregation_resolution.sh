@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fidelity vs resolution of the segregation indices (issue 15): runs the ternary heap of
+# Fidelity vs resolution of the segregation indices: runs the ternary heap of
 # examples/segregation_paper.json at coarse-graining s (size_scale; stiffness_scale 0.01) for two
 # cases, then tabulates and plots the indices against s with their random-mixture noise floor:
 #   uncoated   the example as it is (Γ = 0 on every contact)
@@ -43,7 +43,7 @@ make_params() {  # s case replicate > json
   jq --argjson s "$1" --argjson seed "$((2018 + $3))" --argjson g "$gamma" --arg case "$2" '
     .fidelity = {name: ("s" + ($s | tostring)), size_scale: $s, stiffness_scale: 0.01}
     | .seed = $seed | .replicates = 1
-    | .description = ("issue 15 sweep, case " + $case + ": " + .description)
+    | .description = ("fidelity sweep, case " + $case + ": " + .description)
     | .interactions.pairs |= map(
         if (.materials | index("EP")) and (.materials | index("perspex") | not)
         then .interfacial_energy_J_m2 = $g else . end)' "$example"

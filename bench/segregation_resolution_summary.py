@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Tables and plot of the fidelity-vs-resolution sweep (bench/segregation_resolution.sh, issue 15).
+"""Tables and plot of the fidelity-vs-resolution sweep (bench/segregation_resolution.sh).
 
 Reads OUT/s<s>/<case>/r<r>/result.json (one replicate each) and writes
   OUT/segregation_resolution_runs.csv        one row per run: wall time, grains, EP indices + floor

@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# Times the virtual experiments against the speed targets of issue 4 (one run each, 2 cores):
+# Times the virtual experiments against their speed targets (one run each, 2 cores):
 #   aor-quick   examples/aor_bp.json --quick                      (no target)
 #   aor         examples/aor_bp.json at the calibration fidelity   ≤ 60 s wall
 #   discharge-quick examples/discharge_bp.json --quick            (no target)
 #   discharge   examples/discharge_bp.json                        (no target)
-#   seg-quick   examples/segregation_paper.json --quick           ≤ 60 s wall (issue 11)
-#   seg-default examples/segregation_paper.json (size ×3)         ≤ 600 s wall (issue 11)
+#   seg-quick   examples/segregation_paper.json --quick           ≤ 60 s wall
+#   seg-default examples/segregation_paper.json (size ×3)         ≤ 600 s wall
 # Builds nothing: give it the demcal binary. Each case runs under /usr/bin/time -v; the table
 # gives wall and CPU (user + sys) seconds, the load average before the case and met/missed.
 #

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""SYNTHETIC data: the twin of the Gamma-per-coating calibration (issue 10, twin (c)).
+"""SYNTHETIC data: the twin of the Gamma-per-coating calibration (twin (c)).
 
 Recipe (re-runnable: `python3 scripts/make_twin_gamma_curve.py BUILD_DIR`):
  1. The heap of examples/diagnose/aor_bp_heap.json (BP of Alizadeh et al. 2018 as spheres in the

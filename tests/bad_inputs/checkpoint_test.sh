@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Hostile checkpoints through the real demcal (issue 12): a checkpoint written by a short run of
+# Hostile checkpoints through the real demcal: a checkpoint written by a short run of
 # a valid scene, then damaged or paired with another scene. Each must be refused with exit code
 # 2 and "FILE: checkpoint: <the failed check>", never a crash, a hang or a run. Edits behind a
 # valid checksum ("reframed": payload length and FNV-1a recomputed by ckpt_edit.py) test the
