@@ -30,7 +30,7 @@ std::string NoteMarks(const std::vector<int>& notes) {
 void MarkdownTableBody(const HtmlTable& table, std::string* out) {
   if (!table.caption.empty()) *out += "**" + MarkdownCell(table.caption) + "**\n\n";
   *out += "|";
-  for (const auto& h : table.header) *out += " " + MarkdownCell(h) + " |";
+  for (const auto& h : table.header) out->append(" ").append(MarkdownCell(h)).append(" |");
   *out += "\n|";
   for (size_t c = 0; c < table.header.size(); ++c) *out += " --- |";
   *out += "\n";

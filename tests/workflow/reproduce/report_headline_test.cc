@@ -124,7 +124,7 @@ TEST_CASE("report headline: nothing compared and nothing missed say so without e
 TEST_CASE("report headline: a long list of rows is cut to a few names and a count", "[unit]") {
   std::vector<ReferenceValue> refs;
   for (int k = 0; k < 12; ++k) {
-    const std::string name = "q" + std::to_string(k);
+    const std::string name = std::string("q").append(std::to_string(k));
     refs.push_back(Ref(name, name, 1));
   }
   const std::vector<SummaryRow> rows = BuildSummaryRows(refs, {});
