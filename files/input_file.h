@@ -1,8 +1,8 @@
 #pragma once
-// ReadInputFile: the one way demcal reads an input file (scene, experiment, study, dataset,
-// journal) into memory. It refuses what is not a regular file (a directory, /dev/zero, a FIFO)
-// and anything larger than a cap before reading a byte, so a wrong path gives a clear message
-// instead of reading until memory runs out. Messages start with the path.
+// ReadInputFile: the one way demcal reads a user's input file (scene, experiment, study,
+// dataset, measurement table, workflow) into memory: core::io::ReadRegularFile, which refuses
+// what is not a regular file (a directory, /dev/zero, a FIFO) and anything larger than a cap
+// before reading a byte. Messages start with the path.
 //
 //   std::string text, error;
 //   if (!ReadInputFile(path, "scene file", kMaxJsonInputBytes, &text, &error)) report(error);
@@ -10,6 +10,8 @@
 // Thread-safety: a free function, no shared state.
 #include <cstddef>
 #include <string>
+
+#include "core/io/input_file.h"
 
 namespace demcal::workflow {
 
@@ -20,7 +22,9 @@ inline constexpr size_t kMaxJsonInputBytes = size_t{64} << 20;
 inline constexpr size_t kMaxTableInputBytes = size_t{64} << 20;
 
 // Reads the whole file; `what` names it in messages ("scene file").
-bool ReadInputFile(const std::string& path, const std::string& what, size_t max_bytes,
-                   std::string* text, std::string* error);
+inline bool ReadInputFile(const std::string& path, const std::string& what, size_t max_bytes,
+                          std::string* text, std::string* error) {
+  return core::io::ReadRegularFile(path, what, max_bytes, {}, text, error);
+}
 
 }  // namespace demcal::workflow

@@ -1,13 +1,16 @@
-#include "files/input_file.h"
+#include "core/io/input_file.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 
-namespace demcal::workflow {
+#include "core/io/own_file.h"
+
+namespace demcal::core::io {
 namespace {
 
 std::string Mebibytes(size_t bytes) {
@@ -20,15 +23,36 @@ bool Fail(const std::string& path, const std::string& what, const std::string& p
   return false;
 }
 
+// What a non-regular, non-directory file is, for the message.
+std::string KindOf(mode_t mode) {
+  if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "a device, FIFO or socket";
+}
+
 }  // namespace
 
-bool ReadInputFile(const std::string& path, const std::string& what, size_t max_bytes,
-                   std::string* text, std::string* error) {
+bool ReadRegularFile(const std::string& path, const std::string& what, size_t max_bytes,
+                     const ReadOptions& options, std::string* text, std::string* error) {
   if (path.empty()) return Fail("(empty path)", what, "no file name given", error);
   // Open first, then fstat the descriptor, so the checks and the read see the same file.
   // O_NONBLOCK keeps a FIFO from blocking the open; it is refused right after.
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
-  if (fd < 0) return Fail(path, what, std::strerror(errno), error);
+  const int flags = O_RDONLY | O_CLOEXEC | O_NONBLOCK | (options.refuse_link ? O_NOFOLLOW : 0);
+  const int fd = ::open(path.c_str(), flags);
+  if (fd < 0) {
+    const int e = errno;
+    if (e == ENOENT && options.missing_is_empty) {
+      text->clear();
+      return true;
+    }
+    if (e == ELOOP && options.refuse_link) {
+      if (error) *error = LinkRefusedMessage(path);
+      return false;
+    }
+    return Fail(path, what, std::strerror(e), error);
+  }
   struct stat st {};
   if (::fstat(fd, &st) != 0) {
     const int e = errno;
@@ -41,7 +65,7 @@ bool ReadInputFile(const std::string& path, const std::string& what, size_t max_
   }
   if (!S_ISREG(st.st_mode)) {
     ::close(fd);
-    return Fail(path, what, "not a regular file (a device, FIFO or socket)", error);
+    return Fail(path, what, "not a regular file but " + KindOf(st.st_mode), error);
   }
   if (static_cast<uint64_t>(st.st_size) > max_bytes) {
     ::close(fd);
@@ -74,4 +98,4 @@ bool ReadInputFile(const std::string& path, const std::string& what, size_t max_
   return true;
 }
 
-}  // namespace demcal::workflow
+}  // namespace demcal::core::io
