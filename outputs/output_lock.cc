@@ -11,6 +11,8 @@
 #include <filesystem>
 #include <system_error>
 
+#include "core/io/own_file.h"
+
 namespace demcal::workflow {
 namespace {
 
@@ -57,8 +59,12 @@ bool LockOutputDirectory(const std::string& dir, const std::string& command, Out
     return fail("--out '" + dir + "' exists and is not a directory");
   lock->Release();
   const std::string path = (std::filesystem::path(dir) / kOutputLockFile).string();
-  const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (fd < 0) return fail("cannot create the lock file '" + path + "': " + std::strerror(errno));
+  // The lock file is truncated and rewritten in place, so it is opened without following a link
+  // (a link there would lead the pid line into the link's target, or create a file outside
+  // --out). No O_EXCL: the file outlives its holder by design, and the flock is the lock.
+  std::string open_error;
+  const int fd = core::io::OpenOwnFile(path, O_RDWR | O_CREAT, &open_error);
+  if (fd < 0) return fail("cannot create the lock file: " + open_error);
   if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
     const int e = errno;
     const std::string holder = ReadHolder(fd);

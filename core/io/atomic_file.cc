@@ -30,6 +30,11 @@ std::string DirectoryOf(const std::string& path) {
 
 AtomicFile::AtomicFile(std::string path, bool binary)
     : path_(std::move(path)), temporary_(path_ + ".tmp." + std::to_string(::getpid())) {
+  // A stale entry at the temporary's name (a crashed run's, or a link planted there) is removed
+  // first: unlink removes a link itself, never its target, so the text is never written through
+  // a link. rename(2) in Commit likewise replaces a link at NAME with the new file rather than
+  // writing into what the link points to.
+  std::remove(temporary_.c_str());
   out_.open(temporary_, std::ios::trunc | (binary ? std::ios::binary : std::ios::openmode{}));
 }
 

@@ -5,8 +5,11 @@
 
 #include <cerrno>
 #include <cstring>
-#include <fstream>
 #include <sstream>
+
+#include "core/io/input_file.h"
+#include "core/io/own_file.h"
+#include "files/input_file.h"
 
 namespace demcal::workflow {
 namespace {
@@ -26,21 +29,19 @@ bool StageJournal::Open(const std::string& path, const std::string& fingerprint,
                         std::string* error) {
   path_ = path;
   std::string text;
-  {
-    std::ifstream in(path, std::ios::binary);
-    if (in) {
-      std::stringstream buffer;
-      buffer << in.rdbuf();
-      text = buffer.str();
-    }
-  }
+  // The journal is appended to in place: a link at its name, or a FIFO or device, is refused
+  // rather than read and written through. A missing journal is a fresh run's.
+  if (!core::io::ReadRegularFile(path, "stage journal", kMaxTableInputBytes,
+                                 {.missing_is_empty = true, .refuse_link = true}, &text, error))
+    return false;
   // A kill while appending leaves at most one unterminated last line: drop it.
   size_t complete = text.rfind('\n');
   complete = complete == std::string::npos ? 0 : complete + 1;
   text.resize(complete);
   if (!Load(text, fingerprint, error)) return false;
-  fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
-  if (fd_ < 0) return Fail(error, path + ": cannot write: " + std::strerror(errno));
+  std::string open_error;
+  fd_ = core::io::OpenOwnFile(path, O_WRONLY | O_CREAT | O_APPEND, &open_error);
+  if (fd_ < 0) return Fail(error, "cannot write the stage journal: " + open_error);
   if (::ftruncate(fd_, static_cast<off_t>(complete)) != 0)
     return Fail(error, path + ": cannot drop the cut-off last line: " + std::strerror(errno));
   if (complete == 0) {
