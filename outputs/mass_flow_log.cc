@@ -1,13 +1,20 @@
 #include "outputs/mass_flow_log.h"
 
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 
 #include "core/io/atomic_file.h"
+#include "core/io/input_file.h"
 
 namespace demcal::workflow {
+namespace {
+
+// The log is rewritten whole at each record, so it is held in memory anyway; 1 GiB is millions
+// of rows, far beyond any run's.
+constexpr size_t kMaxLogBytes = size_t{1} << 30;
+
+}  // namespace
 
 MassFlowLog::MassFlowLog(std::string path, const OutputSettings& settings)
     : path_(std::move(path)),
@@ -61,9 +68,17 @@ std::vector<double> MassFlowLog::Row(const core::Simulation& sim) const {
 }
 
 bool MassFlowLog::ResumeFrom(const core::Simulation& sim, std::string* error) {
-  std::ifstream in(path_);
+  // A FIFO or device at the log's name is refused rather than read (which would block or never
+  // end); a missing log is nothing to continue.
+  std::string text;
+  if (!core::io::ReadRegularFile(path_, "mass flow log", kMaxLogBytes, {.missing_is_empty = true},
+                                 &text, error)) {
+    if (error) *error = "cannot continue: " + *error;
+    return false;
+  }
+  std::istringstream in(std::move(text));
   std::string line;
-  if (!in || !std::getline(in, line)) {  // nothing to continue
+  if (!std::getline(in, line)) {  // nothing to continue
     Record(sim);
     return true;
   }

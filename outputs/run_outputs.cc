@@ -2,24 +2,32 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <system_error>
 
 #include "core/io/csv_writer.h"
+#include "core/io/input_file.h"
 
 namespace demcal::workflow {
 namespace {
 constexpr const char* kVtkDir = "vtk";
 constexpr const char* kVtkPrefix = "particles";
 constexpr const char* kSceneCopy = "scene.json";
+// At most 100000 snapshots a run, each a line of under 100 bytes in the index.
+constexpr size_t kMaxSeriesIndexBytes = size_t{64} << 20;
 constexpr const char* kCheckpoint = "checkpoint.bin";
 
 // The snapshots of an earlier run listed in a ParaView series index, up to `time_s` and only
 // while their files exist (a run killed while writing leaves no gaps in the numbering).
 bool ReadSeriesUpTo(const std::filesystem::path& index, double time_s,
                     std::vector<core::io::VtkSeries::Entry>* entries, std::string* error) {
+  std::string text;
+  if (!core::io::ReadRegularFile(index.string(), "snapshot series index", kMaxSeriesIndexBytes,
+                                 {}, &text, error)) {
+    if (error) *error = "cannot continue the snapshot series: " + *error;
+    return false;
+  }
   try {
-    const nlohmann::json j = nlohmann::json::parse(std::ifstream(index));
+    const nlohmann::json j = nlohmann::json::parse(text);
     for (const nlohmann::json& f : j.at("files")) {
       core::io::VtkSeries::Entry e{f.at("name").get<std::string>(), f.at("time").get<double>()};
       if (e.time_s > time_s || !std::filesystem::exists(index.parent_path() / e.file_name)) break;
@@ -52,6 +60,10 @@ bool RunOutputs::CopyScene(const std::string& scene_path, std::string* error) {
   namespace fs = std::filesystem;
   const fs::path target = fs::path(directory_) / kSceneCopy;
   std::error_code ec;
+  // copy_file writes through a link at the target: a link found there is removed first (the
+  // link itself, never its target), so the copy cannot overwrite a file outside --out.
+  if (fs::is_symlink(fs::symlink_status(target, ec))) fs::remove(target, ec);
+  ec.clear();
   if (!fs::equivalent(scene_path, target, ec))
     fs::copy_file(scene_path, target, fs::copy_options::overwrite_existing, ec);
   if (ec) {

@@ -3,9 +3,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
+#include "core/io/input_file.h"
+#include "files/input_file.h"
 #include "outputs/html_report.h"
 #include "workflow/reproduce/reproduce_report.h"
 
@@ -34,11 +34,12 @@ std::string Stat(const nlohmann::json& scenario, const std::string& key) {
   return Fmt(At(s, "mean")) + (At(s, "sem").is_number() ? " ± " + Fmt(At(s, "sem")) : "");
 }
 
+// The file's text, or "" when it cannot be read (missing, or not a regular file: a FIFO would
+// block the report for ever).
 std::string ReadText(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
+  std::string text;
+  if (!core::io::ReadRegularFile(path, "figure", kMaxTableInputBytes, {}, &text, nullptr)) return "";
+  return text;
 }
 
 // One figure per scenario from replicate 0's file `name` (skipped where the run wrote none);
