@@ -2,17 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <set>
 #include <sstream>
 
 #include "calibrate/condition.h"
 #include "calibrate/observable_registry.h"
+#include "files/duplicate_rows.h"
+#include "files/input_file.h"
 
 namespace demcal::workflow {
 namespace {
 
-constexpr size_t kMaxTableBytes = 64 << 20;  // a bench dataset is kilobytes; refuse a runaway file
 const std::set<std::string> kFixedColumns = {"observable", "unit", "material", "value",
                                              "uncertainty", "repeats", "provenance", "source"};
 
@@ -84,24 +84,14 @@ class RowReader {
   std::string* error_;
 };
 
-bool SameKey(const MeasurementRow& a, const MeasurementRow& b) {
-  if (a.observable != b.observable || a.material != b.material || a.conditions.size() != b.conditions.size())
-    return false;
-  for (const auto& [column, cell] : a.conditions) {
-    auto it = b.conditions.find(column);
-    if (it == b.conditions.end() || !calibrate::SameConditionCell(cell, it->second)) return false;
-  }
-  return true;
-}
-
 }  // namespace
 
 bool LoadMeasurementTable(const std::string& path, MeasurementTable* out, std::string* error) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) return *error = path + ": cannot read the measurement table", false;
-  if (static_cast<size_t>(in.tellg()) > kMaxTableBytes)
-    return *error = path + ": larger than 64 MiB; not a measurement table", false;
-  in.seekg(0);
+  // A bench dataset is kilobytes; the cap refuses a runaway file, and the type check a directory
+  // or FIFO, before a byte is read.
+  std::string text;
+  if (!ReadInputFile(path, "measurement table", kMaxTableInputBytes, &text, error)) return false;
+  std::istringstream in(std::move(text));
   out->path = path;
   std::string line;
   std::vector<std::string> header, fields;
@@ -112,27 +102,41 @@ bool LoadMeasurementTable(const std::string& path, MeasurementTable* out, std::s
       return *error = path + ":1: missing column '" + column + "'", false;
   for (const std::string& column : header)
     if (!kFixedColumns.count(column)) out->condition_columns.push_back(column);
+  // Rows are read to the end (or the first malformed line) and then checked for repeats all at
+  // once, sorted: a repeat before the malformed line is still the error reported, as it would be
+  // by a check line by line.
+  std::string row_error;
   for (int n = 2; std::getline(in, line); ++n) {
     if (line.empty() || line == "\r") continue;
     const std::string at = path + ":" + std::to_string(n) + ": ";
-    if (!SplitCsvLine(line, &fields)) return *error = at + "unclosed double quote", false;
-    if (fields.size() != header.size())
-      return *error = at + std::to_string(fields.size()) + " fields, the header has " +
-                      std::to_string(header.size()), false;
+    if (!SplitCsvLine(line, &fields)) {
+      row_error = at + "unclosed double quote";
+      break;
+    }
+    if (fields.size() != header.size()) {
+      row_error = at + std::to_string(fields.size()) + " fields, the header has " +
+                  std::to_string(header.size());
+      break;
+    }
     std::map<std::string, std::string> cells;
     for (size_t k = 0; k < header.size(); ++k) cells[header[k]] = fields[k];
     MeasurementRow row;
     row.line = n;
-    if (!RowReader(at, error).Parse(cells, &row)) return false;
+    if (!RowReader(at, &row_error).Parse(cells, &row)) break;
     for (const std::string& column : out->condition_columns)
       if (!cells[column].empty()) row.conditions[column] = cells[column];
-    for (const MeasurementRow& earlier : out->rows)
-      if (SameKey(earlier, row))
-        return *error = at + "the same observable, material and conditions as line " +
-                        std::to_string(earlier.line) + " (" + row.observable + ", " + row.material +
-                        ", " + calibrate::DescribeCondition(row.conditions) + "): one value per condition", false;
-    out->rows.push_back(row);
+    out->rows.push_back(std::move(row));
   }
+  if (const auto repeat = FirstDuplicateRow(out->rows)) {
+    const MeasurementRow& earlier = out->rows[repeat->first];
+    const MeasurementRow& row = out->rows[repeat->second];
+    return *error = path + ":" + std::to_string(row.line) + ": " +
+                    "the same observable, material and conditions as line " +
+                    std::to_string(earlier.line) + " (" + row.observable + ", " + row.material +
+                    ", " + calibrate::DescribeCondition(row.conditions) +
+                    "): one value per condition", false;
+  }
+  if (!row_error.empty()) return *error = row_error, false;
   if (out->rows.empty()) return *error = path + ": no rows", false;
   return true;
 }
