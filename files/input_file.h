@@ -11,8 +11,6 @@
 #include <cstddef>
 #include <string>
 
-#include "core/io/input_file.h"
-
 namespace demcal::workflow {
 
 // 64 MiB: about 400,000 explicitly listed particles in a scene, far above any bundled input,
@@ -22,9 +20,7 @@ inline constexpr size_t kMaxJsonInputBytes = size_t{64} << 20;
 inline constexpr size_t kMaxTableInputBytes = size_t{64} << 20;
 
 // Reads the whole file; `what` names it in messages ("scene file").
-inline bool ReadInputFile(const std::string& path, const std::string& what, size_t max_bytes,
-                          std::string* text, std::string* error) {
-  return core::io::ReadRegularFile(path, what, max_bytes, {}, text, error);
-}
+bool ReadInputFile(const std::string& path, const std::string& what, size_t max_bytes,
+                   std::string* text, std::string* error);
 
 }  // namespace demcal::workflow
