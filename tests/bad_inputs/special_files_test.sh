@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Paths that are not what they should be, which the corpus (cases.txt) cannot hold as files:
 # a lock file that is a link (to a user's file, or dangling), a FIFO or a directory as the
-# measurement table, FIFOs as the journals. Each must end at once (never hang: every run is under
-# `timeout`) with exit 2 and a message that says what the path is, and no file outside --out may
-# change or appear.
+# measurement table, FIFOs as the journals, the scene and the checkpoint. Each must end at once
+# (never hang: every run is under `timeout`) with exit 2 and a message that says what the path
+# is, and no file outside --out may change or appear.
 set -uo pipefail
 demcal=$1
 files=$2
@@ -73,6 +73,14 @@ mkdir -p "$work/run_stages_fifo"
 mkfifo "$work/run_stages_fifo/stages.jsonl"
 expect stages_fifo "stages.jsonl: cannot read the stage journal: not a regular file but a FIFO" -- \
   reproduce alizadeh2018 --out "$work/run_stages_fifo" --quick --quiet
+
+# A FIFO as the scene, and as the checkpoint to restart from.
+mkfifo "$work/scene.json" "$work/checkpoint.bin"
+expect scene_fifo "scene.json: cannot read the scene file: not a regular file but a FIFO" -- \
+  simulate "$work/scene.json" --out "$work/run_scene_fifo" --quiet
+expect restart_fifo "not a regular file" -- \
+  simulate "$files/cli_restart_missing.json" --out "$work/run_restart_fifo" --quiet \
+  --restart "$work/checkpoint.bin"
 
 ((fail == 0)) && echo "ok"
 exit $fail
