@@ -54,14 +54,16 @@ void CheckCluster(const std::vector<MeasurementRow>& rows, std::vector<size_t> m
   std::sort(members.begin(), members.end());
   for (size_t j = 1; j < members.size(); ++j)
     for (size_t i = 0; i < j; ++i)
-      if (SameRowKey(rows[members[i]], rows[members[j]])) return Consider(members[i], members[j], best);
+      if (SameRowKey(rows[members[i]], rows[members[j]]))
+        return Consider(members[i], members[j], best);
 }
 
 // Splits `members` into clusters along numeric column `column`, then the next, and so on.
 void Split(const std::vector<MeasurementRow>& rows, const std::vector<Keyed>& keys,
            std::vector<size_t> members, size_t column, Best* best) {
   if (members.size() < 2) return;
-  if (column == keys[members[0]].numbers.size()) return CheckCluster(rows, std::move(members), best);
+  if (column == keys[members[0]].numbers.size())
+    return CheckCluster(rows, std::move(members), best);
   auto value = [&](size_t m) { return keys[m].numbers[column]; };
   std::sort(members.begin(), members.end(),
             [&](size_t a, size_t b) { return value(a) < value(b); });
@@ -89,7 +91,8 @@ bool SameRowKey(const MeasurementRow& earlier, const MeasurementRow& later) {
   return true;
 }
 
-std::optional<std::pair<size_t, size_t>> FirstDuplicateRow(const std::vector<MeasurementRow>& rows) {
+std::optional<std::pair<size_t, size_t>> FirstDuplicateRow(
+    const std::vector<MeasurementRow>& rows) {
   std::vector<Keyed> keys;
   keys.reserve(rows.size());
   std::unordered_map<std::string, std::vector<size_t>> groups;

@@ -39,15 +39,18 @@ mkdir -p "$work/run_dangling"
 ln -s "$work/outside.txt" "$work/run_dangling/.demcal.lock"
 expect lock_dangling "$link_message" -- \
   simulate "$files/cli_restart_missing.json" --out "$work/run_dangling" --quiet
-[[ ! -e "$work/outside.txt" ]] || { echo "FAIL [lock_dangling]: created $work/outside.txt"; fail=1; }
+[[ ! -e "$work/outside.txt" ]] ||
+  { echo "FAIL [lock_dangling]: created $work/outside.txt"; fail=1; }
 
 # The measurement table a FIFO (no writer: a plain read blocks for ever), then a directory.
 sed -e "s#\"../../../examples/aor_bp.json\"#\"$root/examples/aor_bp.json\"#" \
     -e 's#"table_duplicate_rows.csv"#"table.csv"#' "$files/table_duplicate_rows.json" \
     >"$work/study.json"
-grep -q "$root/examples/aor_bp.json" "$work/study.json" || { echo "FAIL: study not rewritten"; exit 1; }
+grep -q "$root/examples/aor_bp.json" "$work/study.json" ||
+  { echo "FAIL: study not rewritten"; exit 1; }
 mkfifo "$work/table.csv"
-expect table_fifo "table.csv: cannot read the measurement table: not a regular file but a FIFO" -- \
+expect table_fifo \
+  "table.csv: cannot read the measurement table: not a regular file but a FIFO" -- \
   calibrate "$work/study.json" --out "$work/run_table_fifo" --max-evaluations 1 --quiet
 rm "$work/table.csv"
 mkdir "$work/table.csv"

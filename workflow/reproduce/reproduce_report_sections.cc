@@ -38,7 +38,8 @@ std::string Stat(const nlohmann::json& scenario, const std::string& key) {
 // block the report for ever).
 std::string ReadText(const std::string& path) {
   std::string text;
-  if (!core::io::ReadRegularFile(path, "figure", kMaxTableInputBytes, {}, &text, nullptr)) return "";
+  if (!core::io::ReadRegularFile(path, "figure", kMaxTableInputBytes, {}, &text, nullptr))
+    return "";
   return text;
 }
 
