@@ -18,10 +18,12 @@ Command AddCalibrateCommand(CLI::App& parent) {
       "calibrate", "Calibrate DEM parameters against measurements (demcal-study/2 file)");
   app->add_option("study", options->study_path,
                   "study file (demcal-study/2 JSON; demcal-study/1 is still read)")
-      ->required();
+      ->required()
+      ->check(NonEmpty());
   app->add_option("--out", options->out_dir,
                   "output directory; holds the journal: run again with the same --out to resume")
-      ->required();
+      ->required()
+      ->check(NonEmpty());
   app->add_flag("--quick", options->quick, "run at the experiment file's quick fidelity");
   app->add_option("--max-evaluations", options->max_evaluations,
                   "candidate budget (default: the study's optimiser.max_evaluations)")

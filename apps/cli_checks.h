@@ -41,4 +41,16 @@ inline CLI::Validator Seconds(bool allow_zero, double max_s) {
       allow_zero ? "SECONDS>=0" : "SECONDS>0");
 }
 
+// A name or path: an empty string would otherwise read as "not given" and the default (or the
+// current directory) would be used in its place without a word.
+inline CLI::Validator NonEmpty() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        return text.empty() ? "an empty string is not allowed; leave an optional option out "
+                              "for its default"
+                            : std::string();
+      },
+      "");
+}
+
 }  // namespace demcal::apps

@@ -14,9 +14,12 @@ Command AddDiagnoseCommand(CLI::App& parent) {
   auto o = std::make_shared<diagnose::DiagnoseCommandOptions>();
   CLI::App* app = parent.add_subcommand(
       "diagnose", "Find the gap between a calibrated model and measurements, name the missing effect (demcal-study/2)");
-  app->add_option("study", o->study_path, "study file (demcal-study/2 JSON)")->required();
+  app->add_option("study", o->study_path, "study file (demcal-study/2 JSON)")
+      ->required()
+      ->check(NonEmpty());
   app->add_option("--out", o->out_dir, "output directory; holds the journals: run again with the same --out to resume")
-      ->required();
+      ->required()
+      ->check(NonEmpty());
   app->add_flag("--quick", o->quick, "run at the experiment files' quick fidelity");
   app->add_option("--significance", o->diagnose.significance,
                   "level of the gap test and of the evidence for an effect (default 0.01)")
@@ -24,8 +27,11 @@ Command AddDiagnoseCommand(CLI::App& parent) {
   app->add_option("--discrepancy-floor", o->diagnose.discrepancy_floor,
                   "model-discrepancy noise floor in single-run scatters of the simulation (default 1)")
       ->check(CliRange<double>(limits::kDiscrepancyFloor));
-  app->add_option("--effects", o->effects, "candidate effects (default: the whole library)")->delimiter(',');
-  app->add_option("--species", o->species, "the species the effects act on (default: from the study's parameters)");
+  app->add_option("--effects", o->effects, "candidate effects (default: the whole library)")
+      ->delimiter(',')
+      ->check(NonEmpty());
+  app->add_option("--species", o->species, "the species the effects act on (default: from the study's parameters)")
+      ->check(NonEmpty());
   app->add_option("--refits", o->diagnose.dem_refits, "candidates refitted by simulation per step (default 2)")
       ->check(CliRange<int>(limits::kDiagnoseRefits));
   app->add_option("--max-effects", o->diagnose.max_effects, "effects added at most (default 2)")

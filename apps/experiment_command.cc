@@ -3,6 +3,7 @@
 #include <iostream>
 #include <memory>
 
+#include "apps/cli_checks.h"
 #include "experiments/common/run_experiment.h"
 #include "experiments/experiment_registry.h"
 
@@ -20,8 +21,11 @@ Command AddExperimentCommand(CLI::App& parent) {
       ->required()
       ->check(CLI::IsMember(ExperimentKindNames()));
   app->add_option("params", options->params_path, "experiment parameter file (demcal-experiment/1 JSON)")
-      ->required();
-  app->add_option("--out", options->out_dir, "output directory (created if missing)")->required();
+      ->required()
+      ->check(NonEmpty());
+  app->add_option("--out", options->out_dir, "output directory (created if missing)")
+      ->required()
+      ->check(NonEmpty());
   app->add_option("--replicates", options->replicates,
                   "runs with different seeds (default: the file's 'replicates')")
       ->check(CLI::Range(1, 1000));

@@ -18,10 +18,12 @@ Command AddReproduceCommand(CLI::App& parent) {
       "reproduce", "Run a paper's method end to end (demcal-workflow/1 file; bundled: alizadeh2018)");
   app->add_option("workflow", options->workflow,
                   "a bundled workflow name (datasets/NAME/workflow.json) or a workflow file")
-      ->required();
+      ->required()
+      ->check(NonEmpty());
   app->add_option("--out", options->out_dir,
                   "output directory; holds the stage journal: run again with the same --out to resume")
-      ->required();
+      ->required()
+      ->check(NonEmpty());
   app->add_flag("--quick", options->quick, "run every experiment at its quick fidelity");
   app->add_option("--threads", options->threads, "runs side by side on this many cores (0: all)")
       ->check(CliRange<int>(limits::kThreads));

@@ -14,11 +14,14 @@ Command AddSimulateCommand(CLI::App& parent) {
   auto options = std::make_shared<SimulateOptions>();
   CLI::App* sub = parent.add_subcommand(
       "simulate", "Run one scene file (JSON, format demcal-scene/1) and write its outputs");
-  sub->add_option("scene", options->scene_path, "scene file, see docs/scene_format.md")->required();
+  sub->add_option("scene", options->scene_path, "scene file, see docs/scene_format.md")
+      ->required()
+      ->check(NonEmpty());
   sub->add_option("--out,-o", options->out_dir,
                   "output directory (created if missing): summary.json, final_particles.csv, "
                   "vtk/")
-      ->required();
+      ->required()
+      ->check(NonEmpty());
   sub->add_option("--threads,-t", options->threads, "worker threads (0: all cores)")
       ->check(CLI::Range(0, 4096))
       ->capture_default_str();
@@ -27,7 +30,8 @@ Command AddSimulateCommand(CLI::App& parent) {
       ->check(Seconds(/*allow_zero=*/true, 1e6))
       ->capture_default_str();
   sub->add_option("--restart", options->restart_path,
-                  "continue from a checkpoint.bin written for this scene, up to its duration");
+                  "continue from a checkpoint.bin written for this scene, up to its duration")
+      ->check(NonEmpty());
   sub->add_flag("--quiet,-q", options->quiet, "print only errors (no progress, no report)");
   sub->add_option("--progress-interval-s", options->progress_interval_s,
                   "wall time between progress lines on stderr")

@@ -7,6 +7,12 @@ namespace demcal::calibrate {
 
 bool ParseConditionNumber(const std::string& text, double* out) {
   if (text.empty()) return false;
+  // strtod also reads hexadecimal ("0x1p5" is 32): a table cell means what it shows in decimal,
+  // so anything but digits, sign, point and exponent after leading blanks is not a number.
+  const size_t start = text.find_first_not_of(" \t\n\v\f\r");
+  if (start == std::string::npos ||
+      text.find_first_not_of("0123456789+-.eE", start) != std::string::npos)
+    return false;
   char* end = nullptr;
   *out = std::strtod(text.c_str(), &end);
   return end == text.c_str() + text.size() && std::isfinite(*out);

@@ -14,7 +14,7 @@ namespace demcal::calibrate {
 
 using Condition = std::map<std::string, std::string>;
 
-// A finite number, the whole text.
+// A finite decimal number, the whole text (hexadecimal, inf and nan are not numbers).
 bool ParseConditionNumber(const std::string& text, double* out);
 // Numbers by value (relative 1e-12), words exactly.
 bool SameConditionCell(const std::string& a, const std::string& b);

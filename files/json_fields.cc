@@ -37,6 +37,14 @@ bool IsIntegral(const nlohmann::json& v) {
   return std::floor(d) == d && std::abs(d) < 9.0e15;
 }
 
+// The value as an int64_t when it is an integer that fits one exactly (1e4 counts, 2.5 and
+// 2^63 do not).
+bool ToInt64(const nlohmann::json& v, int64_t* out) {
+  if (!IsIntegral(v) || (v.is_number_unsigned() && v.get<uint64_t>() > INT64_MAX)) return false;
+  *out = v.is_number_float() ? static_cast<int64_t>(v.get<double>()) : v.get<int64_t>();
+  return true;
+}
+
 }  // namespace
 
 std::string FormatNumber(double v) {
@@ -145,10 +153,8 @@ void JsonFields::Number(const std::string& key, double* out, Presence presence, 
 void JsonFields::Integer(const std::string& key, int64_t* out, Presence presence, Range range) {
   const nlohmann::json* v = Value(key, presence);
   if (!v) return;
-  if (!IsIntegral(*v) || (v->is_number_unsigned() && v->get<uint64_t>() > INT64_MAX))
-    return TypeError(key, "an integer", *v);
-  const int64_t i =
-      v->is_number_float() ? static_cast<int64_t>(v->get<double>()) : v->get<int64_t>();
+  int64_t i = 0;
+  if (!ToInt64(*v, &i)) return TypeError(key, "an integer", *v);
   if (!range.Contains(static_cast<double>(i)))
     return Fail(key,
                 "= " + std::to_string(i) + " is outside the allowed range " + range.Describe());
@@ -168,6 +174,23 @@ void JsonFields::Unsigned(const std::string& key, uint64_t* out, Presence presen
   if (v->is_number_integer() && !v->is_number_unsigned() && v->get<int64_t>() < 0)
     return TypeError(key, "a non-negative integer", *v);
   *out = v->get<uint64_t>();
+}
+
+void JsonFields::Integers(const std::string& key, std::vector<int64_t>* out, Presence presence,
+                          Range range) {
+  const nlohmann::json* v = Value(key, presence);
+  if (!v) return;
+  if (!v->is_array()) return TypeError(key, "an array of integers", *v);
+  std::vector<int64_t> values;
+  for (size_t k = 0; k < v->size(); ++k) {
+    const std::string at = IndexPath(key, k);
+    int64_t i = 0;
+    if (!ToInt64((*v)[k], &i)) return TypeError(at, "an integer", (*v)[k]);
+    if (!range.Contains(static_cast<double>(i)))
+      return Fail(at, "= " + std::to_string(i) + " is outside the allowed range " + range.Describe());
+    values.push_back(i);
+  }
+  *out = std::move(values);
 }
 
 void JsonFields::Bool(const std::string& key, bool* out, Presence presence) {

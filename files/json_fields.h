@@ -92,6 +92,10 @@ class JsonFields {
   void Number(const std::string& key, double* out, Presence presence, Range range = Range::Any());
   void Integer(const std::string& key, int64_t* out, Presence presence, Range range = Range::Any());
   void Unsigned(const std::string& key, uint64_t* out, Presence presence);
+  // An array of integers, each within `range`; a bad element is named by its index
+  // ("counts[2]"), so a value such as 4294967297 is refused, never narrowed to fit.
+  void Integers(const std::string& key, std::vector<int64_t>* out, Presence presence,
+                Range range = Range::Any());
   void Bool(const std::string& key, bool* out, Presence presence);
   // Non-empty string; with `choices`, one of them.
   void String(const std::string& key, std::string* out, Presence presence,

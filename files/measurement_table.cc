@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -57,7 +58,7 @@ class RowReader {
     if (row->provenance != "measured" && row->provenance != "inferred" && row->provenance != "synthetic")
       return Fail("provenance", "'" + row->provenance + "'; allowed: measured, inferred, synthetic");
     if (!ParseNumber(cells.at("value"), &row->value))
-      return Fail("value", "'" + cells.at("value") + "' is not a finite number");
+      return Fail("value", "'" + cells.at("value") + "' is not a finite decimal number");
     if (!info->Contains(row->value))
       return Fail("value", std::to_string(row->value) + " is outside " + info->RangeText());
     const std::string& u = cells.at("uncertainty");
@@ -97,6 +98,15 @@ bool LoadMeasurementTable(const std::string& path, MeasurementTable* out, std::s
   std::vector<std::string> header, fields;
   if (!std::getline(in, line) || !SplitCsvLine(line, &header))
     return *error = path + ":1: no header line", false;
+  // A repeated column would be read as its last copy, the earlier one silently dropped.
+  std::map<std::string, size_t> first_position;
+  for (size_t k = 0; k < header.size(); ++k) {
+    const auto [it, added] = first_position.emplace(header[k], k + 1);
+    if (!added)
+      return *error = path + ":1: column '" + header[k] + "' appears twice (columns " +
+                      std::to_string(it->second) + " and " + std::to_string(k + 1) + ")",
+             false;
+  }
   for (const std::string& column : kFixedColumns)
     if (std::find(header.begin(), header.end(), column) == header.end())
       return *error = path + ":1: missing column '" + column + "'", false;

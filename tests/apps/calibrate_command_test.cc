@@ -39,6 +39,12 @@ TEST_CASE("calibrate refuses an out-of-range budget or thread count, naming the 
                  "--threads");
 }
 
+TEST_CASE("calibrate refuses an empty study or --out", "[unit][cli]") {
+  CheckRefused(AddCalibrateCommand, {"calibrate", "s.json", "--out", ""},
+               "--out: an empty string is not allowed");
+  CheckRefused(AddCalibrateCommand, {"calibrate", "", "--out", "o"}, "an empty string");
+}
+
 TEST_CASE("calibrate exits 2 on a missing study or an --out in use", "[unit][cli]") {
   ScratchDir dir("calibrate_cli");
   CheckInputRefused(AddCalibrateCommand,

@@ -39,6 +39,16 @@ TEST_CASE("diagnose refuses each ranged option out of range, naming it", "[unit]
     CheckRefused(AddDiagnoseCommand, {"diagnose", "s.json", "--out", "o", option, value}, option);
 }
 
+TEST_CASE("diagnose refuses an empty name or path instead of taking the default", "[unit][cli]") {
+  const std::string empty = "an empty string is not allowed";
+  CheckRefused(AddDiagnoseCommand, {"diagnose", "s.json", "--out", "o", "--species", ""},
+               "--species: " + empty);
+  CheckRefused(AddDiagnoseCommand, {"diagnose", "s.json", "--out", "o", "--effects", ""},
+               "--effects: " + empty);
+  CheckRefused(AddDiagnoseCommand, {"diagnose", "s.json", "--out", ""}, "--out: " + empty);
+  CheckRefused(AddDiagnoseCommand, {"diagnose", "", "--out", "o"}, empty);
+}
+
 TEST_CASE("diagnose exits 2 on a missing study or an unknown effect", "[unit][cli]") {
   ScratchDir dir("diagnose_cli");
   CheckInputRefused(AddDiagnoseCommand,

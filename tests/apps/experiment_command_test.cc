@@ -52,6 +52,12 @@ TEST_CASE("experiment refuses out-of-range replicates and threads, naming the op
                  {"experiment", "aor", "p.json", "--out", "o", "--threads", threads}, "--threads");
 }
 
+TEST_CASE("experiment refuses an empty file or --out", "[unit][cli]") {
+  CheckRefused(AddExperimentCommand, {"experiment", "aor", "e.json", "--out", ""},
+               "--out: an empty string is not allowed");
+  CheckRefused(AddExperimentCommand, {"experiment", "aor", "", "--out", "o"}, "an empty string");
+}
+
 TEST_CASE("experiment exits 2 on a missing file or a file of another experiment", "[unit][cli]") {
   ScratchDir dir("experiment_cli");
   CheckInputRefused(AddExperimentCommand,

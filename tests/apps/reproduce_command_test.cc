@@ -31,6 +31,12 @@ TEST_CASE("reproduce refuses an out-of-range thread count, naming the option", "
                  {"reproduce", "alizadeh2018", "--out", "o", "--threads", threads}, "--threads");
 }
 
+TEST_CASE("reproduce refuses an empty workflow or --out", "[unit][cli]") {
+  CheckRefused(AddReproduceCommand, {"reproduce", "alizadeh2018", "--out", ""},
+               "--out: an empty string is not allowed");
+  CheckRefused(AddReproduceCommand, {"reproduce", "", "--out", "o"}, "an empty string");
+}
+
 TEST_CASE("reproduce exits 2 on an unknown workflow name, saying what a name is", "[unit][cli]") {
   ScratchDir dir("reproduce_cli");
   const std::vector<std::string> args = {"reproduce", "no_such_workflow", "--out", dir.str("o")};

@@ -64,6 +64,14 @@ TEST_CASE("simulate refuses out-of-range options, naming the option and its rang
                {"simulate", "s.json", "--out", "o", "--checkpoint-every-s", "-1"}, "[0, 1e+06] s");
 }
 
+TEST_CASE("simulate refuses an empty path instead of taking the default", "[unit][cli]") {
+  const std::string empty = "an empty string is not allowed";
+  CheckRefused(AddSimulateCommand, {"simulate", "s.json", "--out", "o", "--restart", ""},
+               "--restart: " + empty);
+  CheckRefused(AddSimulateCommand, {"simulate", "s.json", "--out", ""}, "--out: " + empty);
+  CheckRefused(AddSimulateCommand, {"simulate", "", "--out", "o"}, empty);
+}
+
 TEST_CASE("simulate exits 2 on a scene it cannot read, naming the file", "[unit][cli]") {
   ScratchDir dir("simulate_cli");
   CheckInputRefused(AddSimulateCommand,

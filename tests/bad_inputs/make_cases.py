@@ -236,6 +236,18 @@ table_case("table_angle_400", HEADER + ROW.format(v=400), "400")
 table_case("table_duplicate_rows", HEADER + ROW.format(v=40) + ROW.format(v=41), "line")
 table_case("table_not_a_number", HEADER + ROW.format(v="forty"), "forty")
 table_case("table_overflow", HEADER + ROW.format(v="1e999"), "value")
+table_case("table_hex_value", HEADER + ROW.format(v="0x1p5"),
+           "value: '0x1p5' is not a finite decimal number")
+table_case("table_value_twice", HEADER.replace("source\n", "source,value\n") +
+           ROW.replace("test\n", "test,41\n").format(v=40),
+           "column 'value' appears twice (columns 6 and 11)")
+case("study_clump_count_wraps", {"study_clump_count_wraps.json": study(clump_count={
+    "species": "BP", "semi_axes": [1.5, 1, 1], "counts": [1, 4294967297]})},
+     C % "study_clump_count_wraps.json", 2,
+     "'clump_count.counts[1]' = 4294967297 is outside the allowed range [1, ")
+case("study_format_mixed", {"study_format_mixed.json": study(targets=[])},
+     C % "study_format_mixed.json", 2,
+     "field 'targets' is a demcal-study/2 key, but this file is demcal-study/1")
 # --- command line -----------------------------------------------------------------------------
 case("cli_unknown_command", {}, "frobnicate", 2, "unknown command 'frobnicate'")
 case("cli_no_command", {}, "", 2, "subcommand")

@@ -92,6 +92,31 @@ TEST_CASE("integers accept integral floats (1e4) and reject fractions", "[unit]"
   CHECK_THAT(negative_status.message(), Catch::Contains("'seed' must be a non-negative integer"));
 }
 
+TEST_CASE("integer lists refuse values that would wrap when narrowed, naming the element", "[unit]") {
+  const auto read = [](const char* text, std::vector<int64_t>* out) {
+    JsonStatus status;
+    const json j = json::parse(text);
+    JsonFields f(j, "clump_count", {"counts"}, &status);
+    f.Integers("counts", out, kRequired, Range::Closed(1, 64));
+    return status.ok() ? std::string("ok") : status.message();
+  };
+  std::vector<int64_t> counts;
+  CHECK(read(R"({"counts": [1, 2e0, 64]})", &counts) == "ok");
+  CHECK(counts == std::vector<int64_t>{1, 2, 64});
+  // 2^32 + 1 and -(2^32 - 1) are 1 in 32 bits: each must be refused, not read as 1.
+  CHECK_THAT(read(R"({"counts": [1, 4294967297]})", &counts),
+             Catch::Contains("'clump_count.counts[1]' = 4294967297 is outside the allowed range "
+                             "[1, 64]"));
+  CHECK_THAT(read(R"({"counts": [-4294967295]})", &counts),
+             Catch::Contains("'clump_count.counts[0]' = -4294967295 is outside"));
+  CHECK_THAT(read(R"({"counts": [18446744073709551615]})", &counts),
+             Catch::Contains("'clump_count.counts[0]' must be an integer"));
+  CHECK_THAT(read(R"({"counts": [2.5]})", &counts),
+             Catch::Contains("'clump_count.counts[0]' must be an integer, got number 2.5"));
+  CHECK_THAT(read(R"({"counts": 3})", &counts), Catch::Contains("must be an array of integers"));
+  CHECK(counts == std::vector<int64_t>{1, 2, 64});  // untouched on error
+}
+
 TEST_CASE("vectors need exactly three numbers and strings may be restricted to choices", "[unit]") {
   JsonStatus status;
   const json short_vector = json::parse(R"({"g": [0, -9.81]})");

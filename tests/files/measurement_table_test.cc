@@ -54,8 +54,28 @@ TEST_CASE("measurement tables refuse bad rows naming the line and the column", "
   CHECK_THAT(Load(dir, "porosity,-,BP,0,0.4,,,measured,x\n"), Catch::Contains("unknown 'porosity'"));
   CHECK_THAT(Load(dir, "angle_deg,deg,BP,0,40,,,guessed,x\n"), Catch::Contains("provenance"));
   CHECK_THAT(Load(dir, "angle_deg,deg,BP,0,40,-1,,measured,x\n"), Catch::Contains("uncertainty"));
-  CHECK_THAT(Load(dir, "angle_deg,deg,BP,0,nan,,,measured,x\n"), Catch::Contains("not a finite number"));
+  CHECK_THAT(Load(dir, "angle_deg,deg,BP,0,nan,,,measured,x\n"),
+             Catch::Contains("'nan' is not a finite decimal number"));
   CHECK_THAT(Load(dir, "angle_deg,deg,BP,0,40,,,measured,\n"), Catch::Contains("source"));
   CHECK_THAT(Load(dir, "angle_deg,deg,BP,0,40,,,measured,\"x\n"), Catch::Contains("quote"));
   CHECK_THAT(Load(dir, "angle_deg,deg,BP,40\n"), Catch::Contains("4 fields"));
+}
+
+TEST_CASE("measurement tables read what a cell shows, nothing the reader would guess", "[unit]") {
+  ScratchDir dir("measurement_table_silent");
+  // strtod reads 0x1p5 as 32, inside the angle range: refused, not taken as 32 degrees.
+  CHECK_THAT(Load(dir, "angle_deg,deg,BP,0,0x1p5,,,measured,x\n"),
+             Catch::Contains("t.csv:2: value: '0x1p5' is not a finite decimal number"));
+  CHECK_THAT(Load(dir, "angle_deg,deg,BP,0,40,0x1,,measured,x\n"), Catch::Contains("uncertainty"));
+  CHECK_THAT(Load(dir, "angle_deg,deg,BP,0,40,,0x5,measured,x\n"), Catch::Contains("repeats"));
+  MeasurementTable table;
+  REQUIRE(Load(dir, "angle_deg,deg,BP,4.0e1,4.05e1,,,measured,x\n", &table) == "ok");
+  CHECK(table.rows[0].value == 40.5);
+
+  // A second 'value' column would win over the first: refused, naming both positions.
+  std::ofstream(dir.str("dup.csv")) << "observable,unit,material,value,uncertainty,repeats,"
+                                       "provenance,source,value\nangle_deg,deg,BP,40,,,measured,x,41\n";
+  std::string error;
+  CHECK_FALSE(LoadMeasurementTable(dir.str("dup.csv"), &table, &error));
+  CHECK_THAT(error, Catch::EndsWith("dup.csv:1: column 'value' appears twice (columns 4 and 9)"));
 }

@@ -65,6 +65,20 @@ void ParseFormat1(JsonFields& f, StudyFile* out, JsonStatus* status) {
     ParseLegacyMeasurement(*m, "measurement", out, status);
 }
 
+// The top-level keys only one format reads: the parser of the other would skip them silently,
+// so a study mixing the two would run without the targets or measurement its author wrote.
+void RefuseOtherFormatKeys(JsonFields& f, const std::string& format) {
+  const bool first = format == kFormat1;
+  const char* other = first ? kFormat2 : kFormat1;
+  const std::vector<std::string> keys =
+      first ? std::vector<std::string>{"measurements", "targets", "candidate_targets"}
+            : std::vector<std::string>{"experiment_file", "measurement"};
+  for (const std::string& key : keys)
+    if (f.Has(key))
+      return f.Fail(key, std::string("is a ") + other + " key, but this file is " + format +
+                             ", which does not read it");
+}
+
 }  // namespace
 
 std::string ResolveStudyPath(const std::string& study, const std::string& path) {
@@ -136,6 +150,7 @@ bool ParseStudyJson(const nlohmann::json& doc, const std::string& path, StudyFil
   out->replicates = static_cast<int>(replicates);
   out->has_seed = f.Has("seed");
   f.Unsigned("seed", &out->seed, kOptional);
+  if (f.ok()) RefuseOtherFormatKeys(f, out->format);
   if (f.ok()) (out->format == kFormat1 ? ParseFormat1 : ParseFormat2)(f, out, &status);
   ForEach(f, "parameters", kRequired, [&](const nlohmann::json& j, const std::string& p) {
     ParseStudyParameter(j, p, out, &status);

@@ -123,16 +123,13 @@ void ParseClumpCount(const nlohmann::json& j, const std::string& path, StudyFile
   ClumpCountSearch& c = study->clump_count;
   f.String("species", &c.species, kRequired);
   f.Vector("semi_axes", &c.semi_axes, kRequired);
-  const nlohmann::json* counts = f.Array("counts", kRequired);
   if (!f.ok()) return;
   if (!(c.semi_axes.x >= c.semi_axes.y && c.semi_axes.y >= c.semi_axes.z && c.semi_axes.z > 0))
     return f.Fail("semi_axes", "must be [a, b, c] with a >= b >= c > 0");
-  for (const nlohmann::json& n : *counts) {
-    if (!n.is_number_integer() || !limits::kClumpSpheres.Contains(n.get<int>()))
-      return f.Fail("counts", "must be whole numbers in " + limits::kClumpSpheres.Text() +
-                                  " (clump sphere counts)");
-    c.counts.push_back(n.get<int>());
-  }
+  std::vector<int64_t> counts;
+  f.Integers("counts", &counts, kRequired, Range::Of(limits::kClumpSpheres));
+  if (!f.ok()) return;
+  c.counts.assign(counts.begin(), counts.end());  // each within kClumpSpheres, so fits an int
   if (c.counts.empty() || !std::is_sorted(c.counts.begin(), c.counts.end()) ||
       std::adjacent_find(c.counts.begin(), c.counts.end()) != c.counts.end())
     return f.Fail("counts", "must be a non-empty ascending list without repeats");

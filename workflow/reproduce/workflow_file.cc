@@ -61,9 +61,11 @@ void ParseSpecies(const nlohmann::json& j, const std::string& path, const std::s
   f.Number("start", &s->start, kOptional, Range::Closed(0, 10));
   if (f.ok() && !(s->min < s->max && s->start >= s->min && s->start <= s->max))
     f.Fail("start", "needs min < max and min <= start <= max");
-  std::vector<double> counts;
-  NumberList(f, "clump_counts", kOptional, Range::Of(limits::kClumpSpheres), 1, &counts, status);
-  for (double c : counts) s->clump_counts.push_back(static_cast<int>(c));
+  std::vector<int64_t> counts;
+  f.Integers("clump_counts", &counts, kOptional, Range::Of(limits::kClumpSpheres));
+  if (f.ok() && f.Has("clump_counts") && counts.empty())
+    f.Fail("clump_counts", "needs at least 1 number");
+  s->clump_counts.assign(counts.begin(), counts.end());  // each within kClumpSpheres
   NumberList(f, "semi_axes", s->clump_counts.empty() ? kOptional : kRequired,
              Range::LeftOpen(0, 1e3), 3, &s->semi_axes, status);
 }

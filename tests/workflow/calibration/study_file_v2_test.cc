@@ -67,6 +67,10 @@ TEST_CASE("study/2: per-condition parameters, curves, constraints and the clump 
   CHECK(st.space.non_decreasing == std::vector<std::vector<int>>{{2, 3}});
   CHECK(st.clump_count.counts == std::vector<int>{1, 2, 3});
 
+  j["clump_count"]["counts"] = {1, 4294967297};
+  CHECK_THAT(Load(dir, j, &st), Catch::Contains("clump_count.counts[1]' = 4294967297 is outside"));
+  j["clump_count"]["counts"] = {-4294967295, 2};
+  CHECK_THAT(Load(dir, j, &st), Catch::Contains("clump_count.counts[0]' = -4294967295 is outside"));
   j["clump_count"]["counts"] = {3, 2};
   CHECK_THAT(Load(dir, j, &st), Catch::Contains("clump_count.counts") && Catch::Contains("ascending"));
   j.erase("clump_count");
@@ -95,6 +99,24 @@ TEST_CASE("study/2 errors name the target and the field", "[unit][calibrate]") {
   j = Example();
   j["parameters"][0]["materials"] = {"BP", "sugar"};
   CHECK_THAT(Load(dir, j, &st), Catch::Contains("parameters[0].materials"));
+}
+
+TEST_CASE("a key of the other study format is refused, not ignored", "[unit][calibrate]") {
+  ScratchDir dir("study_mixed_formats");
+  StudyFile st;
+  json j = Example();
+  j["measurement"] = json::object();
+  CHECK_THAT(Load(dir, j, &st), Catch::EndsWith("s.json: field 'measurement' is a demcal-study/1 "
+                                                "key, but this file is demcal-study/2, which does "
+                                                "not read it"));
+  j = Example();
+  j["experiment_file"] = "aor.json";
+  CHECK_THAT(Load(dir, j, &st), Catch::Contains("'experiment_file' is a demcal-study/1 key"));
+  j = ReadJson((RepoRoot() / "examples/calibrate_bp_rolling.json").string());
+  REQUIRE(j["format"] == "demcal-study/1");
+  j["targets"] = json::array();
+  CHECK_THAT(Load(dir, j, &st), Catch::Contains("field 'targets' is a demcal-study/2 key, but this "
+                                                "file is demcal-study/1"));
 }
 
 TEST_CASE("the one-angle example: one target, a candidate target in another experiment", "[unit][calibrate]") {
