@@ -41,6 +41,27 @@ inline CLI::Validator Seconds(bool allow_zero, double max_s) {
       allow_zero ? "SECONDS>=0" : "SECONDS>0");
 }
 
+// A number within a limit of the input-limits table: the check and the help print the same
+// range (Limit::Text), and NaN, which CLI::Range lets through, is refused here with the option's
+// name (CLI11 puts it before the message).
+inline CLI::Validator InLimit(const objectives::limits::Limit& limit, const char* unit = "") {
+  const std::string range = limit.Text() + (*unit ? std::string(" ") + unit : std::string());
+  return CLI::Validator(
+      [limit, range](std::string& text) -> std::string {
+        double v = 0;
+        size_t used = 0;
+        try {
+          v = std::stod(text, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used != text.size() || !limit.Contains(v))
+          return "'" + text + "' is not a number in " + range;
+        return {};
+      },
+      "in " + range);
+}
+
 // A name or path: an empty string would otherwise read as "not given" and the default (or the
 // current directory) would be used in its place without a word.
 inline CLI::Validator NonEmpty() {

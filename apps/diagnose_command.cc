@@ -23,10 +23,10 @@ Command AddDiagnoseCommand(CLI::App& parent) {
   app->add_flag("--quick", o->quick, "run at the experiment files' quick fidelity");
   app->add_option("--significance", o->diagnose.significance,
                   "level of the gap test and of the evidence for an effect (default 0.01)")
-      ->check(CLI::Range(1e-6, 0.5));
+      ->check(InLimit(limits::kSignificance));
   app->add_option("--discrepancy-floor", o->diagnose.discrepancy_floor,
                   "model-discrepancy noise floor in single-run scatters of the simulation (default 1)")
-      ->check(CliRange<double>(limits::kDiscrepancyFloor));
+      ->check(InLimit(limits::kDiscrepancyFloor, "single-run scatters"));
   app->add_option("--effects", o->effects, "candidate effects (default: the whole library)")
       ->delimiter(',')
       ->check(NonEmpty());

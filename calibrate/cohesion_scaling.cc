@@ -3,33 +3,32 @@
 #include <cmath>
 
 #include "objectives/common/fidelity.h"
+#include "objectives/common/input_limits.h"
 
 namespace demcal::calibrate {
 namespace {
 
-bool Positive(double v, const char* name, double hi, std::string* error) {
-  if (std::isfinite(v) && v > 0 && v <= hi) return true;
-  if (error) *error = std::string(name) + " must be in (0, " + std::to_string(hi) + "]";
+namespace limits = objectives::limits;
+
+// Reads as the command line's check does (Limit::Text, 6 significant digits).
+bool Within(double v, const limits::Limit& limit, const char* name, std::string* error) {
+  if (limit.Contains(v)) return true;
+  if (error) *error = std::string(name) + " must be in " + limit.Text();
   return false;
 }
 
 }  // namespace
 
 bool CohesionInputs::IsValid(std::string* error) const {
-  if (!Positive(gamma_J_m2, "gamma_J_m2", 100, error) ||
-      !Positive(youngs_real_Pa, "youngs_real_Pa", 1e13, error) ||
-      !Positive(youngs_sim_Pa, "youngs_sim_Pa", 1e13, error) ||
-      !Positive(radius_m, "radius_m", 1, error) ||
-      !Positive(density_kg_m3, "density_kg_m3", 1e5, error) ||
-      !Positive(gravity_m_s2, "gravity_m_s2", 1e3, error) ||
-      !Positive(reference_gamma_sim_J_m2, "reference_gamma_sim_J_m2", 100, error)) {
-    return false;
-  }
-  if (!(poisson_ratio > -1 && poisson_ratio < 0.5)) {
-    if (error) *error = "poisson_ratio must be in (-1, 0.5)";
-    return false;
-  }
-  return true;
+  return Within(gamma_J_m2, limits::kCohesionGamma, "gamma_J_m2", error) &&
+         Within(youngs_real_Pa, limits::kCohesionYoungs, "youngs_real_Pa", error) &&
+         Within(youngs_sim_Pa, limits::kCohesionYoungs, "youngs_sim_Pa", error) &&
+         Within(radius_m, limits::kCohesionRadius, "radius_m", error) &&
+         Within(density_kg_m3, limits::kCohesionDensity, "density_kg_m3", error) &&
+         Within(gravity_m_s2, limits::kCohesionGravity, "gravity_m_s2", error) &&
+         Within(reference_gamma_sim_J_m2, limits::kCohesionGamma, "reference_gamma_sim_J_m2",
+                error) &&
+         Within(poisson_ratio, limits::kCohesionPoisson, "poisson_ratio", error);
 }
 
 CohesionReport EvaluateCohesion(const CohesionInputs& in) {

@@ -92,6 +92,9 @@ bool LoadMeasurementTable(const std::string& path, MeasurementTable* out, std::s
   // or FIFO, before a byte is read.
   std::string text;
   if (!ReadInputFile(path, "measurement table", kMaxTableInputBytes, &text, error)) return false;
+  // Spreadsheets write a UTF-8 byte-order mark before the header; it is not part of the first
+  // column's name.
+  if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
   std::istringstream in(std::move(text));
   out->path = path;
   std::string line;

@@ -9,14 +9,25 @@
 
 namespace demcal::diagnose {
 
+namespace {
+
+// 6 significant digits, as Limit::Text prints the bounds (std::to_string gives 0.000000 for 1e-7).
+std::string Shown(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+}  // namespace
+
 bool DiagnoseOptions::IsValid(std::string* error) const {
   namespace limits = objectives::limits;
   if (!limits::kSignificance.Contains(significance))
     return *error = "significance must be in " + limits::kSignificance.Text() + ", got " +
-                    std::to_string(significance), false;
+                    Shown(significance), false;
   if (!limits::kDiscrepancyFloor.Contains(discrepancy_floor))
     return *error = "discrepancy floor must be in " + limits::kDiscrepancyFloor.Text() +
-                    " single-run scatters, got " + std::to_string(discrepancy_floor), false;
+                    " single-run scatters, got " + Shown(discrepancy_floor), false;
   if (!limits::kDiagnoseRefits.Contains(dem_refits))
     return *error = "refits must be in " + limits::kDiagnoseRefits.Text(), false;
   if (!limits::kDiagnoseMaxEffects.Contains(max_effects))

@@ -103,11 +103,14 @@ int RunExperiment(const ExperimentOptions& options, std::ostream& log) {
   std::string error;
   if (!LoadExperimentFile(options.params_path, &file, &error))
     return Reject(options, &lock, error, log);
-  if (file.experiment != options.kind)
+  if (file.experiment != options.kind) {
+    const bool vowel = std::string("aeiou").find(file.experiment[0]) != std::string::npos;
     return Reject(options, &lock,
-                  options.params_path + ": field 'experiment' = '" + file.experiment +
-                      "' but the command asks for '" + options.kind + "'",
+                  options.params_path + (vowel ? " is an '" : " is a '") + file.experiment +
+                      "' experiment file, not '" + options.kind +
+                      "'; run it with `demcal experiment " + file.experiment + "`",
                   log);
+  }
   ExperimentContext context = ExperimentContextFor(file, options.out_dir, options.quick);
   if (options.replicates > 0) context.replicates = options.replicates;
   context.threads = options.threads;

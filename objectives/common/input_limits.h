@@ -61,4 +61,12 @@ inline constexpr Limit kDiagnoseRefits = Closed(1, 10);
 inline constexpr Limit kDiagnoseMaxEffects = Closed(1, 6);
 inline constexpr Limit kDiagnoseExtraRefits = Closed(0, 20);
 
+// `demcal cohesion` (calibrate/cohesion_scaling.h): its options and CohesionInputs::IsValid.
+inline constexpr Limit kCohesionGamma = LeftOpen(0, 100);     // J/m2
+inline constexpr Limit kCohesionYoungs = LeftOpen(0, 1e13);   // Pa
+inline constexpr Limit kCohesionPoisson = Open(-1, 0.5);
+inline constexpr Limit kCohesionRadius = LeftOpen(0, 1);      // m
+inline constexpr Limit kCohesionDensity = LeftOpen(0, 1e5);   // kg/m3
+inline constexpr Limit kCohesionGravity = LeftOpen(0, 1e3);   // m/s2
+
 }  // namespace demcal::objectives::limits

@@ -37,6 +37,16 @@ TEST_CASE("diagnose refuses each ranged option out of range, naming it", "[unit]
       {"--max-evaluations", "0"},    {"--threads", "-1"},       {"--refits", "two"}};
   for (const auto& [option, value] : bad)
     CheckRefused(AddDiagnoseCommand, {"diagnose", "s.json", "--out", "o", option, value}, option);
+  // NaN passes a plain CLI::Range; the ranges printed are the limits table's, as --help shows.
+  CheckRefused(AddDiagnoseCommand, {"diagnose", "s.json", "--out", "o", "--significance", "nan"},
+               "--significance: 'nan' is not a number in (0, 0.5)");
+  CheckRefused(AddDiagnoseCommand,
+               {"diagnose", "s.json", "--out", "o", "--discrepancy-floor", "nan"},
+               "--discrepancy-floor: 'nan' is not a number in [0, 10] single-run scatters");
+  CheckRefused(AddDiagnoseCommand, {"diagnose", "s.json", "--out", "o", "--significance", "0.5"},
+               "--significance: '0.5' is not a number in (0, 0.5)");
+  CheckHelpShows(AddDiagnoseCommand, "diagnose",
+                 {"in (0, 0.5)", "in [0, 10] single-run scatters"});
 }
 
 TEST_CASE("diagnose refuses an empty name or path instead of taking the default", "[unit][cli]") {

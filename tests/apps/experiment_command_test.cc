@@ -66,5 +66,12 @@ TEST_CASE("experiment exits 2 on a missing file or a file of another experiment"
   const std::string aor_file = (demcal::testing::RepoRoot() / "examples/aor_bp.json").string();
   CheckInputRefused(AddExperimentCommand,
                     {"experiment", "discharge", aor_file, "--out", dir.str("o"), "--quiet"},
-                    "but the command asks for 'discharge'");
+                    "examples/aor_bp.json is an 'aor' experiment file, not 'discharge'; run it "
+                    "with `demcal experiment aor`");
+  const std::string discharge_file =
+      (demcal::testing::RepoRoot() / "examples/discharge_bp.json").string();
+  CheckInputRefused(AddExperimentCommand,
+                    {"experiment", "aor", discharge_file, "--out", dir.str("o"), "--quiet"},
+                    "discharge_bp.json is a 'discharge' experiment file, not 'aor'; run it with "
+                    "`demcal experiment discharge`");
 }

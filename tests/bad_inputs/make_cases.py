@@ -191,7 +191,8 @@ case("exp_number_overflow", {"exp_number_overflow.json": aor().replace('"seed": 
      E % "exp_number_overflow.json", 2, "seed: number '-1e400' is out of range")
 case("exp_wrong_kind", {"exp_wrong_kind.json": aor()},
      "experiment discharge {files}/exp_wrong_kind.json --out {out}", 2,
-     "field 'experiment' = 'aor' but the command asks for 'discharge'")
+     "exp_wrong_kind.json is an 'aor' experiment file, not 'discharge'; run it with `demcal "
+     "experiment aor`")
 case("exp_replicates_zero", {"exp_replicates_zero.json": aor(replicates=0)},
      E % "exp_replicates_zero.json", 2, "'replicates' = 0 is outside the allowed range [1, 1000]")
 case("exp_dev_zero", {}, "experiment aor /dev/zero --out {out}", 2, "not a regular file")
@@ -352,6 +353,14 @@ case("diagnose_significance", {}, D % "study_overflow.json" + " --significance 2
 case("diagnose_unknown_effect", {"diagnose_study.json": study()},
      D % "diagnose_study.json" + " --effects jkr_adhesion,telekinesis", 2, "telekinesis")
 case("diagnose_refits_negative", {}, D % "diagnose_study.json" + " --refits -1", 2, "refits")
+case("diagnose_significance_nan", {}, D % "diagnose_study.json" + " --significance nan", 2,
+     "--significance: 'nan' is not a number in (0, 0.5)")
+case("diagnose_floor_nan", {}, D % "diagnose_study.json" + " --discrepancy-floor nan", 2,
+     "--discrepancy-floor: 'nan' is not a number in [0, 10]")
+case("cohesion_gamma_range", {}, "cohesion --gamma-J-m2 200", 2,
+     "--gamma-J-m2: '200' is not a number in (0, 100] J/m2", "100.000000")
+table_case("table_byte_order_mark_ok", ("\ufeff" + HEADER + ROW.format(v=400)).encode(),
+           "value: 400")
 case("diagnose_directory", {}, "diagnose {files} --out {out}", 2, "directory")
 
 # Not cases: the scenes of checkpoint_test.sh (a base run, and others its checkpoint must not fit).

@@ -78,4 +78,13 @@ TEST_CASE("measurement tables read what a cell shows, nothing the reader would g
   std::string error;
   CHECK_FALSE(LoadMeasurementTable(dir.str("dup.csv"), &table, &error));
   CHECK_THAT(error, Catch::EndsWith("dup.csv:1: column 'value' appears twice (columns 4 and 9)"));
+
+  // The UTF-8 byte-order mark spreadsheets write before the header is not part of a column name.
+  std::ofstream(dir.str("bom.csv")) << "\xEF\xBB\xBF" << kHeader
+                                    << "angle_deg,deg,BP,0,40,,,measured,x\n";
+  MeasurementTable with_bom;
+  REQUIRE(LoadMeasurementTable(dir.str("bom.csv"), &with_bom, &error));
+  REQUIRE(with_bom.rows.size() == 1);
+  CHECK(with_bom.rows[0].observable == "angle_deg");
+  CHECK(with_bom.rows[0].value == 40);
 }
