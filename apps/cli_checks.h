@@ -19,21 +19,27 @@ CLI::Range CliRange(const objectives::limits::Limit& limit) {
   return CLI::Range(static_cast<T>(limit.lo), static_cast<T>(limit.hi));
 }
 
+// The whole of `text` as a number; NaN when it is not one (any part left over, or no number).
+inline double WholeNumber(const std::string& text) {
+  size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    return NAN;
+  }
+  return used == text.size() ? v : NAN;
+}
+
 // A finite number of seconds, > 0 (or >= 0 with allow_zero), at most `max_s`.
 inline CLI::Validator Seconds(bool allow_zero, double max_s) {
   return CLI::Validator(
       [allow_zero, max_s](std::string& text) -> std::string {
-        double v = 0;
-        size_t used = 0;
-        try {
-          v = std::stod(text, &used);
-        } catch (const std::exception&) {
-          used = 0;
-        }
+        const double v = WholeNumber(text);
         char max_text[32];
         std::snprintf(max_text, sizeof max_text, "%g", max_s);
         const std::string range = std::string(allow_zero ? "[0, " : "(0, ") + max_text + "] s";
-        if (used != text.size() || !std::isfinite(v) || v < 0 || (!allow_zero && v == 0) ||
+        if (!std::isfinite(v) || v < 0 || (!allow_zero && v == 0) ||
             v > max_s)
           return "'" + text + "' is not a number of seconds in " + range;
         return {};
@@ -48,14 +54,8 @@ inline CLI::Validator InLimit(const objectives::limits::Limit& limit, const char
   const std::string range = limit.Text() + (*unit ? std::string(" ") + unit : std::string());
   return CLI::Validator(
       [limit, range](std::string& text) -> std::string {
-        double v = 0;
-        size_t used = 0;
-        try {
-          v = std::stod(text, &used);
-        } catch (const std::exception&) {
-          used = 0;
-        }
-        if (used != text.size() || !limit.Contains(v))
+        const double v = WholeNumber(text);
+        if (!limit.Contains(v))
           return "'" + text + "' is not a number in " + range;
         return {};
       },
