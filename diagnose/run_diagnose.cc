@@ -1,11 +1,13 @@
 #include "diagnose/run_diagnose.h"
 
+#include <algorithm>
 #include <sstream>
 
 #include "diagnose/dem/effect_context.h"
 #include "diagnose/dem/study_model.h"
 #include "diagnose/effects/effect_registry.h"
 #include "diagnose/report/diagnosis_outputs.h"
+#include "files/measurement_table.h"
 #include "outputs/exit_codes.h"
 #include "workflow/calibration/study_file.h"
 #include "outputs/output_lock.h"
@@ -27,7 +29,11 @@ DiagnosisRunInfo RunInfo(const DiagnoseCommandOptions& o, const workflow::StudyF
                          const std::vector<CandidateEffect>& candidates, const Diagnosis& d, const StudyModel& m) {
   DiagnosisRunInfo info{o.study_path, study.description};
   const workflow::ExperimentFile& e = study.experiment();
-  for (const workflow::StudyTarget& t : study.targets) info.synthetic = info.synthetic || t.provenance == "synthetic";
+  for (const workflow::StudyTarget& t : study.targets) {
+    info.synthetic = info.synthetic || workflow::IsModelMadeProvenance(t.provenance);
+    if (std::find(info.data_provenance.begin(), info.data_provenance.end(), t.provenance) == info.data_provenance.end())
+      info.data_provenance.push_back(t.provenance);
+  }
   info.fidelity = (o.quick ? e.quick_fidelity : e.fidelity).name;
   info.seed = study.has_seed ? study.seed : e.seed;
   info.replicates = study.replicates > 0 ? study.replicates : e.replicates;

@@ -9,7 +9,9 @@
 //   value        in the unit; inside the observable's physical range
 //   uncertainty  one standard deviation (> 0), or empty when the source gives none
 //   repeats      how many repeats the value is the mean of (>= 1), or empty
-//   provenance   measured, inferred (read from a source's text, not a measurement) or synthetic
+//   provenance   measured, inferred (read from a source's text, not a measurement), synthetic
+//                (made by demcal) or simulated:<engine> (made by another simulator, e.g.
+//                simulated:liggghts-3.8; engine: lower-case letters, digits, '.', '-', '_')
 //   source       where the number came from (paper, table, figure, page; or the synthetic recipe)
 // Checked on load: every field's type and range; two rows for the same observable, material and
 // conditions are an error naming both lines. Errors read "FILE:LINE: column: problem".
@@ -33,7 +35,7 @@ struct MeasurementRow {
   double value = 0;
   double uncertainty = 0;  // 0: not given
   int repeats = 0;         // 0: not given
-  std::string provenance;  // measured, inferred, synthetic
+  std::string provenance;  // measured, inferred, synthetic, simulated:<engine>
   std::string source;
   bool HasUncertainty() const { return uncertainty > 0; }
 };
@@ -49,6 +51,13 @@ struct MeasurementTable {
                              const calibrate::Condition& conditions,
                              std::string* error) const;
 };
+
+// "simulated:<engine>" with a well-formed engine name (1 to 40 of a-z, 0-9, '.', '-', '_'); the
+// engine in *engine when given.
+bool IsSimulatedProvenance(const std::string& provenance, std::string* engine = nullptr);
+// Made by a model, not measured: synthetic (demcal) or simulated by another engine. A fit to
+// such rows says nothing about a real powder; reports badge them.
+bool IsModelMadeProvenance(const std::string& provenance);
 
 bool LoadMeasurementTable(const std::string& path, MeasurementTable* out, std::string* error);
 

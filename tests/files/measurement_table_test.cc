@@ -42,6 +42,22 @@ TEST_CASE("the alizadeh2018 table: Table 1 angles, the inferred 0.5 wt% row, by 
   CHECK_THAT(error, Catch::Contains("2 rows") && Catch::Contains("tells them apart"));
 }
 
+TEST_CASE("a value simulated by another engine says so in its provenance", "[unit]") {
+  ScratchDir dir("measurement_table_simulated");
+  MeasurementTable table;
+  REQUIRE(Load(dir, "angle_deg,deg,BP,0,17.5,1,4,simulated:liggghts-3.8,scripts/x.py\n", &table) == "ok");
+  const std::string& p = table.rows[0].provenance;
+  std::string engine;
+  CHECK(p == "simulated:liggghts-3.8");
+  CHECK(IsSimulatedProvenance(p, &engine));
+  CHECK(engine == "liggghts-3.8");
+  CHECK(IsModelMadeProvenance(p));
+  CHECK(IsModelMadeProvenance("synthetic"));
+  CHECK_FALSE(IsModelMadeProvenance("measured"));
+  CHECK_FALSE(IsModelMadeProvenance("inferred"));
+  CHECK_FALSE(IsSimulatedProvenance("synthetic"));
+}
+
 TEST_CASE("measurement tables refuse bad rows naming the line and the column", "[unit]") {
   ScratchDir dir("measurement_table");
   const std::string good = "angle_deg,deg,BP,0,40,1,5,measured,Table 1\n";
@@ -53,6 +69,9 @@ TEST_CASE("measurement tables refuse bad rows naming the line and the column", "
   CHECK_THAT(Load(dir, "angle_deg,rad,BP,0,0.7,,,measured,x\n"), Catch::Contains("unit"));
   CHECK_THAT(Load(dir, "porosity,-,BP,0,0.4,,,measured,x\n"), Catch::Contains("unknown 'porosity'"));
   CHECK_THAT(Load(dir, "angle_deg,deg,BP,0,40,,,guessed,x\n"), Catch::Contains("provenance"));
+  for (const char* bad : {"simulated", "simulated:", "simulated:LIGGGHTS", "simulated:lig ghts"})
+    CHECK_THAT(Load(dir, std::string("angle_deg,deg,BP,0,40,,,") + bad + ",x\n"),
+               Catch::Contains("t.csv:2: provenance") && Catch::Contains("simulated:<engine>"));
   CHECK_THAT(Load(dir, "angle_deg,deg,BP,0,40,-1,,measured,x\n"), Catch::Contains("uncertainty"));
   CHECK_THAT(Load(dir, "angle_deg,deg,BP,0,nan,,,measured,x\n"),
              Catch::Contains("'nan' is not a finite decimal number"));
