@@ -16,6 +16,31 @@ int SubjectSpecies(const core::Scene& model, const std::string& material) {
   return found;
 }
 
+// The base model's values of what the signed effects shift (effect.h).
+void BaseValues(const core::Scene& model, int s, EffectContext* out) {
+  const int n = static_cast<int>(model.materials.size());
+  const int m = model.species[s].material;
+  if (static_cast<int>(model.pair_parameters.size()) == n * n) {
+    const core::PairParameters& self = model.pair_parameters[m * n + m];
+    out->sliding_friction = self.sliding_friction;
+    out->rolling_friction = self.rolling_friction;
+    out->interfacial_energy = self.interfacial_energy_J_m2;
+    out->wall_friction = 0;
+    bool first = true;
+    for (const std::string& wall : out->wall_materials) {
+      const double mu = model.pair_parameters[m * n + model.MaterialIndex(wall)].sliding_friction;
+      out->wall_friction = first ? mu : std::min(out->wall_friction, mu);
+      first = false;
+    }
+  }
+  const core::SizeDistribution& size = model.species[s].size;
+  using Kind = core::SizeDistribution::Kind;
+  out->relative_width = 0;
+  if (size.kind == Kind::kUniform && size.max_diameter_m + size.min_diameter_m > 0)
+    out->relative_width =
+        2 * (size.max_diameter_m - size.min_diameter_m) / (size.max_diameter_m + size.min_diameter_m);
+}
+
 }  // namespace
 
 bool MakeEffectContext(const workflow::StudyFile& study, const std::string& species, EffectContext* out,
@@ -49,6 +74,7 @@ bool MakeEffectContext(const workflow::StudyFile& study, const std::string& spec
       }
     }
   if (out->coating_max <= 0) out->coating_column.clear();
+  BaseValues(model, s, out);
   return true;
 }
 

@@ -21,7 +21,8 @@ class ParticleShape final : public Effect {
            "1 + delta_aspect_ratio";
   }
   std::vector<EffectParameter> Parameters(const EffectContext&) const override {
-    return {{"delta_aspect_ratio", "", 0, 2.0, 0.8}};
+    // One-sided: the base species is a sphere (a clump is refused below), and nothing is rounder.
+    return {{"delta_aspect_ratio", "", 0, 2.0, 0.8, "more elongated particles than assumed", ""}};
   }
   bool Apply(const std::vector<double>& v, const calibrate::Condition&, const EffectContext& c,
              core::Scene* model, std::string* why) const override {

@@ -1,4 +1,4 @@
-// Rolling resistance: the subject species' self-contact rolling friction μr grows by Δμr (the
+// Rolling resistance: the subject species' self-contact rolling friction μr changes by Δμr (either sign, μr ≥ 0) (the
 // model's own rolling model, CDT or EPSD: core/contact/rolling_model.h). Stands for every
 // mechanism that resists rolling without changing the contact's sliding: surface asperities,
 // angularity below the clump scale. Probe Δμr = 0.2.
@@ -12,10 +12,12 @@ class RollingResistance final : public Effect {
  public:
   std::string Key() const override { return "rolling_resistance"; }
   std::string Description() const override {
-    return "rolling resistance: rolling friction of the species' self-contact raised by delta_mu_r";
+    return "rolling resistance: rolling friction of the species' self-contact shifted by delta_mu_r";
   }
-  std::vector<EffectParameter> Parameters(const EffectContext&) const override {
-    return {{"delta_mu_r", "", 0, 1.0, 0.2}};
+  std::vector<EffectParameter> Parameters(const EffectContext& c) const override {
+    // Down to μr = 0 at the base's value (no negative rolling friction).
+    return {{"delta_mu_r", "", -c.rolling_friction, 1.0, 0.2, "more rolling resistance than assumed",
+             c.rolling_friction > 0 ? "less rolling resistance than assumed" : ""}};
   }
   bool Apply(const std::vector<double>& v, const calibrate::Condition&, const EffectContext& c,
              core::Scene* model, std::string* why) const override {

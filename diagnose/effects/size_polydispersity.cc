@@ -1,5 +1,5 @@
-// Size polydispersity: the subject species' size distribution widens about the same mean
-// diameter. The relative width w = (d_max − d_min) / d_mean of its uniform sieve cut (a single
+// Size polydispersity: the subject species' size distribution widens (or narrows, down to one
+// diameter) about the same mean diameter. The relative width w = (d_max − d_min) / d_mean of its uniform sieve cut (a single
 // diameter counts as w = 0) becomes w + Δ; diameters stay uniform in [d_mean(1 − w/2),
 // d_mean(1 + w/2)]. A wider distribution packs denser (small grains fill the gaps) and flows
 // differently; the repose angle moves little. Probe Δ = 0.8; w stays below 1.8 (d_min > 0).
@@ -18,8 +18,10 @@ class SizePolydispersity final : public Effect {
     return "size polydispersity: relative width (d_max - d_min)/d_mean of the species' size cut widened by "
            "delta_relative_width about the same mean";
   }
-  std::vector<EffectParameter> Parameters(const EffectContext&) const override {
-    return {{"delta_relative_width", "", 0, 1.4, 0.8}};
+  std::vector<EffectParameter> Parameters(const EffectContext& c) const override {
+    // Down to a single diameter (w = 0) at the base's width.
+    return {{"delta_relative_width", "", -c.relative_width, 1.4, 0.8, "a wider size distribution than assumed",
+             c.relative_width > 0 ? "a narrower size distribution than assumed" : ""}};
   }
   bool Apply(const std::vector<double>& v, const calibrate::Condition&, const EffectContext& c,
              core::Scene* model, std::string* why) const override {

@@ -3,6 +3,8 @@
 // model's own sensitivities, so the refit gains nothing and the ranking must not name it: a
 // check that the ranking rewards new physics, not a second copy of a fitted parameter. When
 // the study does not fit μs, it is a genuine candidate (a wrong fixed μs). Probe +0.2.
+#include <algorithm>
+
 #include "diagnose/effects/effect_registry.h"
 #include "diagnose/effects/effect_support.h"
 
@@ -16,8 +18,9 @@ class SlidingFrictionControl final : public Effect {
     return "control: sliding friction of the species' self-contact shifted by delta_mu_s (redundant when the study "
            "fits it)";
   }
-  std::vector<EffectParameter> Parameters(const EffectContext&) const override {
-    return {{"delta_mu_s", "", -0.5, 0.8, 0.2}};
+  std::vector<EffectParameter> Parameters(const EffectContext& c) const override {
+    return {{"delta_mu_s", "", -std::min(0.5, c.sliding_friction), 0.8, 0.2, "more sliding friction than assumed",
+             c.sliding_friction > 0 ? "less sliding friction than assumed" : ""}};
   }
   bool Apply(const std::vector<double>& v, const calibrate::Condition&, const EffectContext& c,
              core::Scene* model, std::string* why) const override {

@@ -1,7 +1,7 @@
 // Particle–wall friction: the sliding friction between the subject species' material and every
 // wall material (those no species is made of) shifted by Δμw. A wrong wall friction moves what
 // the walls hold — a narrow heap's flanks, a hopper's flow — and little else. Probe Δμw = +0.3;
-// it may also fall (down to −0.4) when the walls were given too rough.
+// it may also fall (down to μw = 0 on the smoothest wall) when the walls were given too rough.
 #include "diagnose/effects/effect_registry.h"
 #include "diagnose/effects/effect_support.h"
 
@@ -14,8 +14,10 @@ class WallFriction final : public Effect {
   std::string Description() const override {
     return "particle-wall friction: sliding friction between the species and every wall material shifted by delta_mu_w";
   }
-  std::vector<EffectParameter> Parameters(const EffectContext&) const override {
-    return {{"delta_mu_w", "", -0.4, 0.6, 0.3}};
+  std::vector<EffectParameter> Parameters(const EffectContext& c) const override {
+    // Down to μw = 0 on the smoothest wall.
+    return {{"delta_mu_w", "", -c.wall_friction, 0.6, 0.3, "higher wall friction than assumed",
+             c.wall_friction > 0 ? "lower wall friction than assumed" : ""}};
   }
   bool Apply(const std::vector<double>& v, const calibrate::Condition&, const EffectContext& c,
              core::Scene* model, std::string* why) const override {

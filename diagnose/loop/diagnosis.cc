@@ -60,6 +60,18 @@ std::string Names(const std::vector<int>& named, const std::vector<CandidateEffe
   return s;
 }
 
+// "rolling_resistance (less rolling resistance than assumed, delta_mu_r = -0.06)" per added effect.
+std::string Signed(const ModelPoint& point, const std::vector<CandidateEffect>& candidates) {
+  std::ostringstream s;
+  s.precision(3);
+  for (const ActiveEffect& a : point.effects) {
+    const EffectParameter& p = candidates[a.candidate].parameters[0];
+    s << (s.tellp() > 0 ? " + " : "") << candidates[a.candidate].key << " (" << EffectDirection(p, a.values[0]) << ", "
+      << p.name << " = " << a.values[0] << (p.unit.empty() ? "" : " " + p.unit) << ")";
+  }
+  return s.str();
+}
+
 void Finish(const std::vector<Observation>& observations, const FitState& fit, const DiagnoseOptions& options,
             const std::vector<CandidateEffect>& candidates, Diagnosis* d) {
   d->final_point = fit.point;
@@ -70,9 +82,9 @@ void Finish(const std::vector<Observation>& observations, const FitState& fit, c
   if (d->termination == DiagnosisTermination::kNoMissingEffect) {
     m << "no missing effect found: the base model fits within noise (" << d->gap_before.summary << ")";
   } else if (d->termination == DiagnosisTermination::kEffectFound) {
-    m << "missing effect: " << Names(d->named, candidates) << "; after adding it " << d->gap_after.summary;
+    m << "missing effect: " << Signed(fit.point, candidates) << "; after adding it " << d->gap_after.summary;
   } else if (d->termination == DiagnosisTermination::kGapRemains) {
-    m << "added " << Names(d->named, candidates) << " but a gap remains (" << d->gap_after.summary
+    m << "added " << Signed(fit.point, candidates) << " but a gap remains (" << d->gap_after.summary
       << "), not explained by the library";
   } else {
     m << "gap remains, not explained by the library: " << d->gap_before.summary;

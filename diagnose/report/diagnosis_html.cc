@@ -33,7 +33,7 @@ bool GapTable(const Diagnosis& d, bool synthetic, workflow::HtmlReport* report, 
 bool RankingTable(const DiagnosisRunInfo& info, const DiagnosisStep& s, workflow::HtmlReport* report,
                   std::string* error) {
   workflow::HtmlTable t{s.ranking.message,
-                        {"rank", "effect", "parameter = value", "refit", "χ²/dof after", "ΔBIC", "LR p",
+                        {"rank", "effect", "parameter = value", "direction", "refit", "χ²/dof after", "ΔBIC", "LR p",
                          "signature match", "note"}};
   int rank = 1;
   for (int i : s.ranking.order) {
@@ -41,6 +41,7 @@ bool RankingTable(const DiagnosisRunInfo& info, const DiagnosisStep& s, workflow
     const EffectParameter& p = info.candidates[e.candidate].parameters[0];
     t.rows.push_back({std::to_string(rank++) + (i == s.ranking.winner ? " (named)" : ""), e.key,
                       p.name + " = " + (e.values.empty() ? "" : Num(e.values[0], 3)) + " " + p.unit,
+                      e.values.empty() ? "" : EffectDirection(p, e.values[0]),
                       e.simulated ? "simulated" : "linearised", Num(e.chi2_per_dof, 3),
                       Num(e.evidence.delta_bic, 3), Num(e.evidence.lr_p_value, 3), Num(e.signature_match, 3), e.note});
   }
@@ -98,6 +99,9 @@ bool WriteDiagnosisHtml(const std::string& path, const DiagnosisRunInfo& info, c
   }
   report.Section("Cost");
   if (!CostTable(d, &report, error)) return false;
+  std::string provenance;
+  for (const std::string& p : info.data_provenance) provenance += (provenance.empty() ? "" : ", ") + p;
+  report.Paragraph("Data provenance: " + provenance + ".", syn);
   report.Paragraph("Significance " + Num(info.options.significance) + ", model-discrepancy floor " +
                    Num(info.options.discrepancy_floor) + " single-run scatter(s), fidelity " + info.fidelity +
                    ", seed " + std::to_string(info.seed) + ", " + std::to_string(info.replicates) +

@@ -51,7 +51,9 @@ Json CandidateJson(const DiagnosisRunInfo& info, const RankingEntry& e, int rank
                           {"value", k < e.values.size() ? Number(e.values[k]) : Json(nullptr)},
                           {"lower", c.parameters[k].lower}, {"upper", c.parameters[k].upper},
                           {"probe", c.parameters[k].probe}});
+  const std::string direction = e.values.empty() ? "" : EffectDirection(c.parameters[0], e.values[0]);
   return {{"rank", rank}, {"effect", e.key}, {"description", c.description}, {"parameters", parameters},
+          {"direction", direction},
           {"refit", e.simulated ? "simulated" : "linearised"}, {"chi2", Number(e.chi2)},
           {"chi2_per_dof_after", Number(e.chi2_per_dof)}, {"delta_bic", Number(e.evidence.delta_bic)},
           {"likelihood_ratio_p", Number(e.evidence.lr_p_value)}, {"significant", e.evidence.significant},
@@ -83,9 +85,16 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
   j["gap_detected"] = d.gap_before.gap_detected;
   j["chi2_per_dof_before"] = Number(d.gap_before.chi2_per_dof);
   j["named_effect"] = d.named.empty() ? Json(nullptr) : Json(info.candidates[d.named.front()].key);
-  Json named = Json::array();
+  Json named = Json::array(), signed_effects = Json::array();
   for (int c : d.named) named.push_back(info.candidates[c].key);
+  for (const ActiveEffect& a : d.final_point.effects) {
+    const EffectParameter& p = info.candidates[a.candidate].parameters[0];
+    signed_effects.push_back({{"effect", info.candidates[a.candidate].key}, {"parameter", p.name},
+                              {"unit", p.unit}, {"value", Number(a.values[0])},
+                              {"direction", EffectDirection(p, a.values[0])}});
+  }
   j["named_effects"] = named;
+  j["named_effects_signed"] = signed_effects;
   j["chi2_per_dof_after"] = Number(d.gap_after.chi2_per_dof);
   j["gap_detected_after"] = d.gap_after.gap_detected;
   j["candidates"] = d.steps.empty() ? Json::array() : StepJson(info, d.steps.front())["candidates"];
@@ -105,7 +114,7 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
   j["phases"] = phases;
   j["wall_time_s"] = d.wall_time_s;
   j["provenance"] = {{"demcal_version", kVersion}, {"study", info.study}, {"description", info.description},
-                     {"synthetic_data", info.synthetic},
+                     {"synthetic_data", info.synthetic}, {"data_provenance", info.data_provenance},
                      {"fidelity", info.fidelity}, {"seed", info.seed}, {"replicates", info.replicates},
                      {"significance", info.options.significance},
                      {"discrepancy_floor_single_run_scatters", info.options.discrepancy_floor},

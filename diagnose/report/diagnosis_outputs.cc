@@ -34,14 +34,16 @@ void ResidualsCsv(const Diagnosis& d, std::ostream& out) {
 
 void RankingCsv(const DiagnosisRunInfo& info, const Diagnosis& d, std::ostream& out) {
   out.precision(8);
-  out << "step,rank,effect,parameter,value,refit,chi2,chi2_per_dof_after,delta_bic,likelihood_ratio_p,signature_match,"
+  out << "step,rank,effect,parameter,value,direction,refit,chi2,chi2_per_dof_after,delta_bic,likelihood_ratio_p,signature_match,"
          "winner\n";
   for (size_t s = 0; s < d.steps.size(); ++s) {
     int rank = 1;
     for (int i : d.steps[s].ranking.order) {
       const RankingEntry& e = d.steps[s].entries[i];
       out << s + 1 << "," << rank++ << "," << e.key << "," << info.candidates[e.candidate].parameters[0].name << ","
-          << (e.values.empty() ? 0 : e.values[0]) << "," << (e.simulated ? "simulated" : "linearised") << "," << e.chi2
+          << (e.values.empty() ? 0 : e.values[0]) << ","
+          << (e.values.empty() ? "" : EffectDirection(info.candidates[e.candidate].parameters[0], e.values[0])) << ","
+          << (e.simulated ? "simulated" : "linearised") << "," << e.chi2
           << "," << e.chi2_per_dof << "," << e.evidence.delta_bic << "," << e.evidence.lr_p_value << ","
           << e.signature_match << "," << (i == d.steps[s].ranking.winner ? 1 : 0) << "\n";
     }

@@ -35,9 +35,11 @@ inline double EffectChange(int e, int kind, double w, double v) {
   return 0;
 }
 
+// Rolling is signed (the base assumes some rolling resistance, 0.3, that may be too much).
 inline std::vector<CandidateEffect> Candidates() {
   return {{"adhesion", "", {{"g", "", 0, 0.2, 0.05}}},
-          {"rolling", "", {{"t", "", 0, 1, 0.2}}},
+          {"rolling", "", {{"t", "", -0.3, 1, 0.2, "more rolling resistance than assumed",
+                            "less rolling resistance than assumed"}}},
           {"shape", "", {{"t", "", 0, 2, 0.5}}},
           {"polydispersity", "", {{"t", "", 0, 1.5, 0.5}}},
           {"control", "", {{"t", "", -0.5, 0.5, 0.2}}}};

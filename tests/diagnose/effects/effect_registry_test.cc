@@ -46,6 +46,40 @@ TEST_CASE("effect library: every effect is off at 0 and declares a probe inside 
   CHECK(FindEffect("nonsense") == nullptr);
 }
 
+TEST_CASE("signed effects may weaken what the base assumes, down to the physical bound", "[unit]") {
+  // The base model of Model(): μs 0.5, μr 0.1, μw 0.5, no adhesion, width 0.162 (425-500 µm).
+  EffectContext c = Context();
+  c.sliding_friction = 0.5, c.rolling_friction = 0.1, c.wall_friction = 0.5;
+  c.relative_width = 75.0 / 462.5;
+  auto lower = [&c](const std::string& key) { return FindEffect(key)->Parameters(c)[0].lower; };
+  CHECK(lower("rolling_resistance") == Approx(-0.1));
+  CHECK(lower("wall_friction") == Approx(-0.5));
+  CHECK(lower("size_polydispersity") == Approx(-75.0 / 462.5));
+  CHECK(lower("sliding_friction_control") == Approx(-0.5));
+  CHECK(lower("jkr_adhesion") == 0);    // the base has no adhesion to take away
+  CHECK(lower("particle_shape") == 0);  // a sphere: nothing is rounder
+  const EffectParameter rolling = FindEffect("rolling_resistance")->Parameters(c)[0];
+  CHECK(EffectDirection(rolling, -0.05) == "less rolling resistance than assumed");
+  CHECK(EffectDirection(rolling, 0.05) == "more rolling resistance than assumed");
+  c.interfacial_energy = 0.006;  // Γ at the largest coating level 3 is 0.006 + 3·g >= 0
+  CHECK(lower("jkr_adhesion") == Approx(-0.002));
+  // At the lower bound the property reaches its physical limit; beyond it Apply refuses.
+  std::string why;
+  core::Scene m = Model();
+  REQUIRE(FindEffect("rolling_resistance")->Apply({-0.1}, {}, c, &m, &why));
+  CHECK(m.pair_parameters[0].rolling_friction == Approx(0.0).margin(1e-15));
+  m = Model();
+  CHECK_FALSE(FindEffect("rolling_resistance")->Apply({-0.11}, {}, c, &m, &why));
+  CHECK(why.find("rolling_friction") != std::string::npos);
+  m = Model();
+  REQUIRE(FindEffect("size_polydispersity")->Apply({-0.1}, {}, c, &m, &why));
+  const core::SizeDistribution& s = m.species[0].size;
+  CHECK((s.max_diameter_m - s.min_diameter_m) / 462.5e-6 == Approx(0.062).epsilon(1e-2));
+  m = Model();
+  REQUIRE(FindEffect("wall_friction")->Apply({-0.3}, {}, c, &m, &why));
+  CHECK(m.pair_parameters[1].sliding_friction == Approx(0.2));
+}
+
 TEST_CASE("effects write what they declare into the model", "[unit]") {
   std::string why;
   core::Scene m = Model();

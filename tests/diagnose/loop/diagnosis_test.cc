@@ -43,6 +43,20 @@ TEST_CASE("diagnosis on analytic stand-ins names the hidden effect and closes th
   }
 }
 
+TEST_CASE("diagnosis names a weakened effect with its sign", "[unit]") {
+  // Less rolling resistance than the base assumes: the refit goes below 0 and says so.
+  for (uint64_t seed : {1, 2, 3}) {
+    INFO("noise seed " << seed);
+    const Diagnosis d = Run({{1, -0.2}}, seed);
+    CHECK(d.gap_before.gap_detected);
+    REQUIRE(Named(d) == "rolling");
+    const double v = d.final_point.effects.at(0).values[0];
+    CHECK(v == Approx(-0.2).margin(0.05));
+    CHECK(d.message.find("less rolling resistance than assumed") != std::string::npos);
+    CHECK_FALSE(d.gap_after.gap_detected);
+  }
+}
+
 TEST_CASE("diagnosis says no missing effect when none is hidden", "[unit]") {
   for (uint64_t seed : {1, 2, 3, 4, 5}) {
     INFO("noise seed " << seed);
