@@ -5,62 +5,20 @@
 #include <cstdio>
 #include <iostream>
 
-#include "core/math/random.h"
+#include "bench/liggghts_inputs.h"
+#include "bench/state_digest.h"
 #include "core/simulation/simulation.h"
 
 namespace demcal::bench {
-namespace {
 
-using core::Vec3;
-
-constexpr double kBaseDiameter = 0.002;
-
-core::Scene PourScene(const PourOptions& o) {
-  core::Scene s;
-  s.materials = {{"glass", 5e6, 0.25, 2500}};
-  s.species = {{"sphere", 0, {}, {}}};
-  s.species[0].size = {core::SizeDistribution::Kind::kUniform, 0, 0.0018, 0.0022, {}, {}};
-  core::PairParameters pair;
-  pair.sliding_friction = 0.5;
-  pair.rolling_friction = 0.1;
-  pair.restitution = 0.5;
-  s.pair_parameters = {pair};
-  s.rolling.name = "epsd2";
-  const double half = o.base_radius_m + 0.01, top = o.stream_height_m + 0.02;
-  s.walls = core::BoxInnerFaces("box", {-half, -half, 0}, {half, half, top}, 0, true);
-  s.domain_min_m = {-half, -half, 0};
-  s.domain_max_m = {half, half, top + 0.02};
-  // The frozen base: a square grid clipped to the disc, each sphere lifted at random.
-  core::Rng rng(core::DeriveSeed(o.seed, 77));
-  const double d = kBaseDiameter, r = 0.5 * d;
-  const int n = static_cast<int>(std::floor(2 * o.base_radius_m / d));
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      const Vec3 at{(i - 0.5 * (n - 1)) * d, (j - 0.5 * (n - 1)) * d, r * (1 + 0.5 * rng.Uniform())};
-      if (at.x * at.x + at.y * at.y > o.base_radius_m * o.base_radius_m) continue;
-      core::ParticleSpec p{0, at, {}, {}, d, {}};
-      p.fixed = true;
-      s.particles.push_back(p);
-    }
-  core::FactorySpec stream;
-  stream.name = "stream";
-  stream.region = core::InsertionRegion::Cylinder({0, 0, 0}, 0.005, o.stream_height_m - 0.02,
-                                                  o.stream_height_m);
-  stream.species = {0};
-  stream.mass_fractions = {1};
-  stream.mass_rate_kg_s = o.mass_rate_kg_s;
-  stream.velocity_m_s = {0, 0, -1.5};  // fast enough for the rate in a 5 mm stream
-  s.factories = {stream};
-  s.seed = o.seed;
-  s.time.timestep_s = 2.4e-5;
-  s.skin_m = 0.0005;
-  return s;
-}
-
-}  // namespace
-
-CLI::App* AddPourCommand(CLI::App& app, PourOptions* o) {
+CLI::App* AddPourCommand(CLI::App& app, PourCommand* command) {
+  PourOptions* o = &command->pour;
   auto* c = app.add_subcommand("pour", "time the poured heap on a frozen base");
+  c->add_option("--particles", o->particles,
+                "spheres of a column filled at t = 0 above the base (0: the stream)")
+      ->check(CLI::NonNegativeNumber);
+  c->add_option("--liggghts-inputs", command->liggghts_inputs,
+                "write DIR/initial.data and DIR/case.vars of this case for LIGGGHTS and exit");
   c->add_option("--threads", o->threads, "worker threads");
   c->add_option("--steps", o->steps, "timed steps from the start of the pour");
   c->add_option("--base-radius", o->base_radius_m, "radius of the frozen base disc, m");
@@ -74,7 +32,8 @@ CLI::App* AddPourCommand(CLI::App& app, PourOptions* o) {
   return c;
 }
 
-int RunPour(const PourOptions& o) {
+int RunPour(const PourCommand& command) {
+  const PourOptions& o = command.pour;
   const core::Scene scene = PourScene(o);
   core::Simulation sim(scene, {.threads = o.threads,
                                .exclude_fixed_pairs = !o.keep_fixed_pairs,
@@ -85,6 +44,17 @@ int RunPour(const PourOptions& o) {
     return 1;
   }
   const size_t base = scene.particles.size();
+  if (!command.liggghts_inputs.empty()) {
+    const LiggghtsVars vars = {{"half", scene.domain_max_m.x},
+                               {"top", scene.domain_max_m.z - 0.02},
+                               {"nparticles", static_cast<double>(o.particles)}};
+    if (!WriteLiggghtsInputs(command.liggghts_inputs, sim.particles(), scene.domain_min_m,
+                             scene.domain_max_m, vars, &error)) {
+      std::cerr << "error: " << error << "\n";
+      return 1;
+    }
+    return 0;
+  }
   // Movers per rebuild (particles re-searched) against the moving particles at that rebuild.
   uint64_t last_builds = sim.neighbours().Builds();
   double movers = 0, moving = 0;
@@ -109,6 +79,10 @@ int RunPour(const PourOptions& o) {
   std::printf("re-searched per rebuild: %.0f of %.0f moving spheres on average\n",
               movers / std::max<double>(1, run.neighbour_rebuilds),
               moving / std::max<double>(1, run.neighbour_rebuilds));
+  // Moving spheres (those present at the end) × steps / s: the figure scaling.sh compares.
+  std::printf("particle_steps_per_s: %.0f\n",
+              static_cast<double>(spheres - base) * run.steps / run.wall_time_s);
+  std::printf("state_digest: %a\n", StateDigest(sim.particles()));
   std::printf("phases: %s\n", run.phases.Report().c_str());
   return 0;
 }
