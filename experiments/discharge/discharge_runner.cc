@@ -4,6 +4,7 @@
 // numbers returned as a DischargeResult.
 #include "experiments/discharge/discharge_runner.h"
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -111,6 +112,23 @@ bool WritePictures(const std::string& dir, const std::vector<DischargeRun>& runs
   return true;
 }
 
+// The runs that gave no value, by status, with the first message of each: "; 2 jammed (no
+// outflow for 0.5 s with ... left in the hopper)". A jammed funnel is a result to report, not
+// a slow flow: the console says so, as result.json does per run.
+std::string FailedRuns(const std::vector<DischargeRun>& runs) {
+  std::map<std::string, std::pair<int, std::string>> by_status;
+  for (const DischargeRun& run : runs)
+    if (!run.ok()) {
+      auto& entry = by_status[run.status];
+      if (entry.first++ == 0) entry.second = run.message;
+    }
+  std::string text;
+  for (const auto& [status, entry] : by_status)
+    text += "; " + std::to_string(entry.first) + " " + status +
+            (entry.second.empty() ? "" : " (" + entry.second + ")");
+  return text;
+}
+
 }  // namespace
 
 DischargeResult RunDischargeExperiment(const ExperimentFile& file,
@@ -146,7 +164,8 @@ DischargeResult RunDischargeExperiment(const ExperimentFile& file,
   }
   log << "discharge: mass flow " << result["mass_flow_kg_s"].dump() << " kg/s, discharge time "
       << result["discharge_time_s"].dump() << " s (" << out.replicates_ok << " of "
-      << context.replicates << " replicates ok) -> " << context.out_dir << "/result.json\n";
+      << context.replicates << " replicates ok" << FailedRuns(out.runs) << ") -> "
+      << context.out_dir << "/result.json\n";
   out.status = out.replicates_ok > 0 ? ExperimentStatus::kOk : ExperimentStatus::kRunFailed;
   return out;
 }
