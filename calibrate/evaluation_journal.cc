@@ -74,6 +74,13 @@ std::string RecordLine(const ReplicateRecord& r) {
   else
     j["value"] = r.ok() ? nlohmann::json(r.value) : nlohmann::json(nullptr);
   j["wall_time_s"] = r.wall_time_s;
+  if (r.start_unix_s > 0) {
+    j["host"] = r.host;
+    j["rank"] = r.rank;
+    j["start_unix_s"] = r.start_unix_s;
+    j["end_unix_s"] = r.end_unix_s;
+    j["batch_unix_s"] = r.batch_unix_s;
+  }
   return j.dump() + "\n";
 }
 
@@ -85,6 +92,30 @@ std::string CheckValue(const std::string& name, double v) {
   const ObservableInfo* info = FindObservable(name);
   if (info && !info->Contains(v))
     return name + " = " + std::to_string(v) + " outside " + info->RangeText();
+  return "";
+}
+
+// The optional host, rank and times of a record ("" when absent or sound).
+std::string ParseWhereAndWhen(const nlohmann::json& j, ReplicateRecord* r) {
+  if (j.contains("host")) {
+    if (!j.at("host").is_string() || j.at("host").get<std::string>().size() > 255)
+      return "host: must be a string of at most 255 characters";
+    r->host = j.at("host").get<std::string>();
+  }
+  if (j.contains("rank")) {
+    if (!j.at("rank").is_number_unsigned() || j.at("rank").get<uint64_t>() > 10000000)
+      return "rank: must be a whole number in [0, 10000000]";
+    r->rank = j.at("rank").get<int>();
+  }
+  for (auto [key, field] : {std::pair{"start_unix_s", &r->start_unix_s},
+                            std::pair{"end_unix_s", &r->end_unix_s},
+                            std::pair{"batch_unix_s", &r->batch_unix_s}}) {
+    if (!j.contains(key)) continue;
+    if (!Finite(j.at(key)) || j.at(key).get<double>() < 0)
+      return std::string(key) + ": must be a finite number of seconds >= 0";
+    *field = j.at(key).get<double>();
+  }
+  if (r->end_unix_s < r->start_unix_s) return "end_unix_s: must not be before start_unix_s";
   return "";
 }
 
@@ -114,6 +145,7 @@ std::string ParseRecord(const nlohmann::json& j, size_t parameter_count, Replica
   if (j.contains("wall_time_s") && !(Finite(j.at("wall_time_s")) && j.at("wall_time_s").get<double>() >= 0))
     return "wall_time_s: must be a finite number >= 0";
   r->wall_time_s = j.value("wall_time_s", 0.0);
+  if (std::string why = ParseWhereAndWhen(j, r); !why.empty()) return why;
   const bool has_values = j.contains("values"), has_value = j.contains("value");
   if (has_values == has_value) return "needs exactly one of 'value' or 'values'";
   const nlohmann::json& v = has_values ? j.at("values") : j.at("value");
@@ -132,6 +164,7 @@ std::string ParseRecord(const nlohmann::json& j, size_t parameter_count, Replica
   return "";
 }
 
+// What the run gave; where, when and how long it took are not part of it.
 bool SameRecord(const ReplicateRecord& a, const ReplicateRecord& b) {
   return a.seed == b.seed && a.status == b.status && a.value == b.value && a.values == b.values;
 }
@@ -143,8 +176,9 @@ EvaluationJournal::~EvaluationJournal() {
 }
 
 bool EvaluationJournal::Open(const std::string& path, const std::string& fingerprint,
-                             std::string* error, size_t parameter_count) {
+                             std::string* error, size_t parameter_count, bool read_only) {
   path_ = path;
+  read_only_ = read_only;
   std::string content;
   // The journal is appended to in place: a link at its name, or a FIFO or device, is refused
   // rather than read and written through. A missing journal is a fresh run's.
@@ -189,6 +223,7 @@ bool EvaluationJournal::Open(const std::string& path, const std::string& fingerp
                               "with other content; the journal has been edited or mixed");
   }
   loaded_ = records_.size();
+  if (read_only) return true;
   std::string open_error;
   fd_ = core::io::OpenOwnFile(path, O_WRONLY | O_CREAT | O_APPEND, &open_error);
   if (fd_ < 0) return Fail(error, "cannot write the journal: " + open_error);
@@ -219,6 +254,10 @@ const ReplicateRecord* EvaluationJournal::Find(const std::string& group,
 bool EvaluationJournal::Append(const ReplicateRecord& record, std::string* error) {
   const std::string line = RecordLine(record);
   std::lock_guard lock(mutex_);
+  if (read_only_) {
+    records_[{record.group, record.parameters, record.replicate}] = record;
+    return true;
+  }
   if (fd_ < 0) return Fail(error, "journal not open");
   if (::write(fd_, line.data(), line.size()) != static_cast<ssize_t>(line.size()) || ::fsync(fd_) != 0)
     return Fail(error, path_ + ": cannot append: " + std::strerror(errno));

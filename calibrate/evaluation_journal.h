@@ -22,6 +22,9 @@
 //   if (const ReplicateRecord* done = journal.Find(values, r, seed)) use(*done);
 //   else journal.Append(record, &error);
 //
+// A read-only journal (ranks of an MPI farm other than the manager) loads the file but never
+// writes it: Append only adds to the records in memory, so every rank finds the same runs.
+//
 // Thread-safety: Find and Append may be called from several threads (replicates side by side).
 #include <cstdint>
 #include <map>
@@ -41,6 +44,12 @@ struct ReplicateRecord {
   double wall_time_s = 0;
   std::string group;                     // the experiment run ("" for single-observable studies)
   std::map<std::string, double> values;  // observable -> value (multi-observable runs)
+  // Where and when it ran (0 / "": not recorded; never part of the run's identity).
+  std::string host;
+  int rank = 0;
+  double start_unix_s = 0;
+  double end_unix_s = 0;
+  double batch_unix_s = 0;
   bool ok() const { return status == "ok"; }
 };
 
@@ -54,8 +63,9 @@ class EvaluationJournal {
   // Opens (creating it if absent) and loads the journal; false with a message naming the file
   // if it cannot be read or written, or belongs to another study.
   // parameter_count > 0: every record must have that many parameters.
+  // read_only: load, never write (see above).
   bool Open(const std::string& path, const std::string& fingerprint, std::string* error,
-            size_t parameter_count = 0);
+            size_t parameter_count = 0, bool read_only = false);
 
   // The record of this candidate's replicate, or nullptr. The pointer stays valid.
   const ReplicateRecord* Find(const std::vector<double>& parameters, int replicate,
@@ -72,6 +82,7 @@ class EvaluationJournal {
   using Key = std::tuple<std::string, std::vector<double>, int>;
   std::string path_;
   int fd_ = -1;
+  bool read_only_ = false;
   size_t loaded_ = 0;
   mutable std::mutex mutex_;
   std::map<Key, ReplicateRecord> records_;

@@ -1,9 +1,13 @@
 #include "calibrate/target_evaluator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <mutex>
+#include <nlohmann/json.hpp>
 
+#include "core/math/fnv1a.h"
 #include "objectives/common/replicates.h"
+#include "objectives/farm/farm.h"
 
 namespace demcal::calibrate {
 
@@ -11,6 +15,41 @@ namespace demcal::calibrate {
 struct TargetEvaluator::Task {
   int candidate = 0, group = 0, replicate = 0;
 };
+
+namespace {
+
+// What a run adds to its record, as bytes for the farm (farm.h): CBOR keeps every double's bits.
+std::string SaveOutcome(const ReplicateRecord& r) {
+  const nlohmann::json j{{"status", r.status}, {"values", r.values}, {"wall", r.wall_time_s},
+                         {"host", r.host},     {"rank", r.rank},     {"start", r.start_unix_s},
+                         {"end", r.end_unix_s}};
+  const std::vector<uint8_t> bytes = nlohmann::json::to_cbor(j);
+  return std::string(bytes.begin(), bytes.end());
+}
+
+void LoadOutcome(const std::string& bytes, ReplicateRecord* r) {
+  const nlohmann::json j = nlohmann::json::from_cbor(bytes);
+  r->status = j.at("status").get<std::string>();
+  r->values = j.at("values").get<std::map<std::string, double>>();
+  r->wall_time_s = j.at("wall").get<double>();
+  r->host = j.at("host").get<std::string>();
+  r->rank = j.at("rank").get<int>();
+  r->start_unix_s = j.at("start").get<double>();
+  r->end_unix_s = j.at("end").get<double>();
+}
+
+// The batch's runs, in order: every rank of a farm must derive the same.
+uint64_t Fingerprint(const std::vector<ReplicateRecord*>& records) {
+  core::Fnv1a64 h;
+  for (const ReplicateRecord* r : records) {
+    h.Text(r->group);
+    for (double p : r->parameters) h.Field(p);
+    h.Field(r->replicate), h.Field(r->seed);
+  }
+  return h.digest();
+}
+
+}  // namespace
 
 TargetEvaluator::TargetEvaluator(const ParameterSpace& space, std::vector<RunGroup> groups,
                                  std::vector<TargetBinding> targets,
@@ -90,18 +129,37 @@ std::vector<CandidateResult> TargetEvaluator::Run(const std::vector<std::vector<
   }
   std::mutex error_mutex;
   std::vector<std::string> journal_errors(n);
-  objectives::RunReplicates(static_cast<int>(pending.size()), 0, options_.workers, [&](int t, uint64_t) {
+  std::vector<ReplicateRecord*> slots;
+  const double batch_start = objectives::farm::UnixNow();
+  for (const Task& task : pending) {
+    slots.push_back(&batch[task.candidate].runs[task.group][task.replicate]);
+    slots.back()->batch_unix_s = batch_start;
+  }
+  objectives::farm::Job job;
+  job.count = static_cast<int>(pending.size());
+  job.fingerprint = Fingerprint(slots);
+  job.run = [&](int t) {
     const Task& task = pending[t];
-    ReplicateRecord& record = batch[task.candidate].runs[task.group][task.replicate];
+    ReplicateRecord& record = *slots[t];
+    record.start_unix_s = objectives::farm::UnixNow();
     const ProbeOutcome o = groups_[task.group].probe->Run(
         models[static_cast<size_t>(task.candidate) * g + task.group], record.seed);
     record.status = o.status, record.values = o.values, record.wall_time_s = o.wall_time_s;
+    record.end_unix_s = std::max(record.start_unix_s, objectives::farm::UnixNow());
+    record.host = objectives::farm::HostName(), record.rank = objectives::farm::Rank();
+  };
+  job.save = [&](int t) { return SaveOutcome(*slots[t]); };
+  job.load = [&](int t, const std::string& bytes) { LoadOutcome(bytes, slots[t]); };
+  job.done = [&](int t) {
     std::string error;
-    if (journal_ && !journal_->Append(record, &error)) {
+    if (journal_ && !journal_->Append(*slots[t], &error)) {
       std::lock_guard lock(error_mutex);
-      if (journal_errors[task.candidate].empty()) journal_errors[task.candidate] = error;
+      std::string& first = journal_errors[pending[t].candidate];
+      if (first.empty()) first = error;
     }
-  });
+  };
+  objectives::farm::RunBatch(job, {.threads = options_.workers,
+                                   .run_time_limit_s = options_.run_time_limit_s});
   // Every target's replicate values first, so the pooled spread includes this batch.
   std::vector<std::vector<TargetSample>> samples(n);
   for (int c = 0; c < n; ++c) {

@@ -7,8 +7,10 @@
 // `prepare` turns it into the simulated model (the fidelity: coarse-graining, stiffness, Γ at
 // constant Cohesion number). Replicate r uses the same seed in every group and for every
 // candidate (common random numbers). All runs of a batch — candidates × groups × replicates —
-// go side by side, one per worker; each finished run goes to the journal at once (group key,
-// parameters, replicate, seed), and a run found there is not repeated.
+// go side by side, one per worker (objectives/farm: threads of this process, or the ranks of an
+// MPI job, where every rank ends the batch with the same records); each finished run goes to the
+// journal at once (group key, parameters, replicate, seed, with where and when it ran), and a run
+// found there is not repeated.
 //
 // A candidate that breaks a declared constraint, or whose curve gives no valid property at a
 // group's condition, is infeasible without running. A target has a value when at least half of
@@ -49,7 +51,8 @@ struct TargetBinding {
 struct TargetEvaluatorOptions {
   int replicates = 2;  // runs per candidate and group, >= 1
   uint64_t seed = 1;   // base seed of the replicates
-  int workers = 0;     // runs side by side (0: all cores)
+  int workers = 0;     // runs side by side (0: all cores; per rank under mpirun, farm.h)
+  double run_time_limit_s = 0;  // under mpirun: a run copied to another rank after (0: auto)
   // sem of a target from the replicate spread pooled over every candidate evaluated so far
   // (pooled variance, Σ(n_i − 1)s_i² / Σ(n_i − 1)), not from this candidate's replicates alone:
   // with R = 2 one candidate's spread has one degree of freedom and swings by a factor 10 from

@@ -150,3 +150,72 @@ TEST_CASE("journal records are validated line by line on loading", "[unit][calib
              Catch::Contains("angle_deg") && Catch::Contains("outside [0, 90] deg"));
   CHECK_THAT(load(std::string(100000, '[')), Catch::Contains("j.jsonl:2: not a journal record"));
 }
+
+TEST_CASE("journal records carry host, rank and times; older records without them still load",
+          "[unit][calibrate]") {
+  demcal::testing::ScratchDir dir("journal_timing");
+  const std::string path = dir.str("j.jsonl");
+  std::string error;
+  ReplicateRecord timed{{0.5}, 0, 1, "ok", 30.0, 2.5};
+  timed.host = "node-7", timed.rank = 3;
+  timed.start_unix_s = 1764806400.123456, timed.end_unix_s = 1764806402.623456;
+  timed.batch_unix_s = 1764806400.0;
+  {
+    EvaluationJournal j;
+    REQUIRE(j.Open(path, "f", &error, 1));
+    REQUIRE(j.Append(timed, &error));
+  }
+  // A record written before the timing fields existed, then the same run again from a resumed
+  // run on another host: the same run, not "other content".
+  std::ofstream(path, std::ios::app)
+      << R"({"parameters": [0.7], "replicate": 0, "seed": 1, "status": "ok", "value": 31.0})" << "\n"
+      << R"({"parameters": [0.5], "replicate": 0, "seed": 1, "status": "ok", "value": 30.0, )"
+      << R"("host": "other", "rank": 0, "start_unix_s": 5, "end_unix_s": 6, "batch_unix_s": 5})"
+      << "\n";
+  EvaluationJournal j;
+  REQUIRE(j.Open(path, "f", &error, 1));
+  CHECK(j.LoadedRecords() == 2);
+  const ReplicateRecord* old = j.Find({0.7}, 0, 1);
+  REQUIRE(old != nullptr);
+  CHECK(old->host.empty());
+  CHECK(old->start_unix_s == 0);
+  const ReplicateRecord* r = j.Find({0.5}, 0, 1);
+  REQUIRE(r != nullptr);
+  CHECK(r->value == 30.0);
+
+  auto load = [&](const std::string& extra) {
+    std::ofstream(path, std::ios::trunc)
+        << R"({"format": "demcal-journal/3", "study": "f"})" << "\n"
+        << R"({"parameters": [0.5], "replicate": 0, "seed": 1, "status": "ok", "value": 30.0, )"
+        << extra << "}\n";
+    EvaluationJournal k;
+    return k.Open(path, "f", &error, 1) ? std::string("ok") : error;
+  };
+  CHECK(load(R"("host": "a", "rank": 1, "start_unix_s": 10, "end_unix_s": 12)") == "ok");
+  CHECK_THAT(load(R"("rank": -1)"), Catch::Contains("j.jsonl:2: rank"));
+  CHECK_THAT(load(R"("host": 7)"), Catch::Contains("host"));
+  CHECK_THAT(load(R"("start_unix_s": 10, "end_unix_s": 9)"),
+             Catch::Contains("end_unix_s: must not be before start_unix_s"));
+  CHECK_THAT(load(R"("start_unix_s": "now")"), Catch::Contains("start_unix_s"));
+}
+
+TEST_CASE("a read-only journal loads the file and appends in memory only", "[unit][calibrate]") {
+  demcal::testing::ScratchDir dir("journal_read_only");
+  const std::string path = dir.str("j.jsonl");
+  std::string error;
+  {
+    EvaluationJournal writer;
+    REQUIRE(writer.Open(path, "f", &error, 1));
+    REQUIRE(writer.Append({{0.5}, 0, 1, "ok", 30.0, 1.0}, &error));
+  }
+  const auto size = std::filesystem::file_size(path);
+  EvaluationJournal reader;
+  REQUIRE(reader.Open(path, "f", &error, 1, /*read_only=*/true));
+  CHECK(reader.Find({0.5}, 0, 1) != nullptr);
+  REQUIRE(reader.Append({{0.6}, 0, 1, "ok", 31.0, 1.0}, &error));
+  CHECK(reader.Find({0.6}, 0, 1) != nullptr);
+  CHECK(std::filesystem::file_size(path) == size);
+  EvaluationJournal missing;  // a worker may open it before the manager has written the header
+  REQUIRE(missing.Open(dir.str("absent.jsonl"), "f", &error, 1, true));
+  CHECK_FALSE(std::filesystem::exists(dir.str("absent.jsonl")));
+}
