@@ -11,6 +11,7 @@
 #include "apps/command.h"
 #include "apps/diagnose_command.h"
 #include "apps/experiment_command.h"
+#include "apps/export_command.h"
 #include "apps/reproduce_command.h"
 #include "apps/simulate_command.h"
 #include "core/version.h"
@@ -25,6 +26,7 @@ constexpr demcal::apps::CommandFactory kCommands[] = {
     &demcal::apps::AddReproduceCommand,
     &demcal::apps::AddCohesionCommand,
     &demcal::apps::AddDiagnoseCommand,
+    &demcal::apps::AddExportCommand,
 };
 
 }  // namespace
