@@ -66,6 +66,17 @@ std::string Groups(const core::Scene& s, const LiggghtsParticles& particles) {
   return out.str();
 }
 
+// LIGGGHTS refuses Young's moduli outside [5 MPa, 1 GPa] in SI units unless told: reduced
+// stiffness fidelities go below, real Perspex or steel above.
+std::string StiffnessRange(const core::Scene& s) {
+  bool soft = false, hard = false;
+  for (const core::Material& m : s.materials) {
+    soft = soft || m.youngs_modulus_Pa < 5e6;
+    hard = hard || m.youngs_modulus_Pa > 1e9;
+  }
+  return std::string(soft ? "soft_particles yes\n" : "") + (hard ? "hard_particles yes\n" : "");
+}
+
 }  // namespace
 
 bool LiggghtsDeck(const ExportRun& run, const ExportOptions& options,
@@ -100,19 +111,21 @@ bool LiggghtsDeck(const ExportRun& run, const ExportOptions& options,
   out << "\n";
   for (const std::string& n : law.notes) out << "# " << n << "\n";
   out << "\n"
-      << Header(s, particles) << "\n# materials and pairs (SI)\nsoft_particles yes\n"
-      << calibrate::LiggghtsMaterialLines(s, law) << "pair_style gran " << law.model
-      << "\npair_coeff * *\ntimestep " << Num(dt) << "\nfix gravity all gravity "
+      << Header(s, particles) << "\n# materials and pairs (SI)\n"
+      << StiffnessRange(s) << calibrate::LiggghtsMaterialLines(s, law) << "pair_style gran "
+      << law.model << "\npair_coeff * *\ntimestep " << Num(dt) << "\nfix gravity all gravity "
       << Num(Norm(s.gravity_m_s2)) << " vector " << Num(s.gravity_m_s2.x) << " "
       << Num(s.gravity_m_s2.y) << " " << Num(s.gravity_m_s2.z) << "\n\n"
       << Groups(s, particles) << "\n# walls\n"
       << walls.commands << "\n# particles\n"
       << particles.commands << "\n# integration: only group flow moves\n";
-  if (particles.clumps) out << "fix clumps flow multisphere allow_group_and_set yes\n";
+  // fix multisphere integrates the clumps; nve/sphere would move their member spheres again.
+  out << (particles.clumps ? "fix integrate flow multisphere allow_group_and_set yes\n"
+                           : "fix integrate flow nve/sphere\n");
   const int64_t dump_every = std::max<int64_t>(1, Steps(options.dump_interval_s, dt));
   const double check_s =
       run.settle ? run.settle_criteria.check_interval_s : options.dump_interval_s;
-  out << "fix integrate flow nve/sphere\n\n# outputs\ncompute ke flow ke\n"
+  out << "\n# outputs\ncompute ke flow ke\n"
       << "compute rke flow erotate/sphere\n"
       << "variable specific_ke equal (c_ke+c_rke)/(mass(flow)+1e-300)   # J/kg\n"
       << "variable time equal step*dt   # s\n"

@@ -68,8 +68,8 @@ struct SpeciesTemplates {
   double mean_mass_kg = 0;
 };
 
-bool WriteTemplates(const core::Scene& scene, size_t s, Seeds& seeds, std::ostream& out,
-                    SpeciesTemplates* t, std::string* error) {
+bool WriteTemplates(const core::Scene& scene, size_t s, Seeds& seeds, int* multisphere_count,
+                    std::ostream& out, SpeciesTemplates* t, std::string* error) {
   const core::Species& sp = scene.species[s];
   const core::Material& mat = scene.materials[sp.material];
   std::vector<core::ClumpSphere> unit;
@@ -101,7 +101,8 @@ bool WriteTemplates(const core::Scene& scene, size_t s, Seeds& seeds, std::ostre
       for (const core::ClumpSphere& m : unit)
         out << " " << Num(m.centre_m.x * d) << " " << Num(m.centre_m.y * d) << " "
             << Num(m.centre_m.z * d) << " " << Num(m.radius_m * d);
-      out << " type 1\n";
+      // LIGGGHTS numbers its multisphere templates ("type", unique per template).
+      out << " type " << ++*multisphere_count << "\n";
     }
     t->ids.push_back(id);
     t->number_fraction.push_back(classes[k].number_fraction);
@@ -184,14 +185,34 @@ bool LiggghtsParticleCommands(const core::Scene& scene, double timestep_s, Liggg
       return false;
     }
   }
+  // LIGGGHTS integrates clumps with fix multisphere and single spheres with fix nve/sphere, each
+  // on a group; inserted grains all join one group, so one deck moves one kind.
+  std::vector<bool> moves(scene.species.size(), false);
+  for (const core::FactorySpec& f : scene.factories)
+    for (int s : f.species) moves[s] = true;
+  for (const core::FillSpec& f : scene.fills) moves[f.species] = true;
+  for (const core::ParticleSpec& p : scene.particles)
+    if (!p.fixed) moves[p.species] = true;
+  bool spheres = false;
+  for (size_t s = 0; s < moves.size(); ++s) {
+    if (!moves[s]) continue;
+    (scene.species[s].clump_shape.empty() ? spheres : out->clumps) = true;
+  }
+  if (spheres && out->clumps) {
+    *error = "the scene moves clumps and single spheres together, which one LIGGGHTS deck " +
+             std::string("does not integrate (fix multisphere and fix nve/sphere need separate ") +
+             "groups; inserted grains share one)";
+    return false;
+  }
   if (!scene.particles.empty()) out->data_file = DataFile(scene, &out->fixed);
   out->placed = static_cast<int64_t>(scene.particles.size());
   Seeds seeds(scene.seed);
   std::ostringstream cmd;
   std::vector<SpeciesTemplates> templates(scene.species.size());
+  int multisphere_count = 0;
   for (size_t s = 0; s < scene.species.size(); ++s) {
-    if (!WriteTemplates(scene, s, seeds, cmd, &templates[s], error)) return false;
-    out->clumps = out->clumps || !scene.species[s].clump_shape.empty();
+    if (!WriteTemplates(scene, s, seeds, &multisphere_count, cmd, &templates[s], error))
+      return false;
   }
   const double g = Norm(scene.gravity_m_s2);
   for (size_t f = 0; f < scene.factories.size(); ++f) {

@@ -11,7 +11,7 @@
 //  - explicitly placed particles (a glued base) in a `read_data` file, fixed ones in group
 //    `fixed` (not integrated, their pairs excluded from the neighbour list).
 // Atom type = demcal material index + 1. Refused (false with *error naming the item): moving
-// or heap-following insertion regions, and placed clumps.
+// or heap-following insertion regions, placed clumps, and clumps moving beside single spheres.
 #include <string>
 #include <vector>
 

@@ -94,6 +94,8 @@ TEST_CASE("export: the aor deck has every part, each line a LIGGGHTS command", "
   const double dt = e.summary["timestep_s"].get<double>();
   CHECK(dt == Approx(e.run.scene.time.rayleigh_fraction * core::RayleighTime(e.run.scene)));
   CHECK_THAT(d, Catch::Contains("timestep " + Num(dt) + "\n"));
+  // E 2.5 MPa is below LIGGGHTS' default SI floor (5 MPa), Perspex's 25 MPa within it.
+  CHECK_THAT(d, Catch::Contains("soft_particles yes\n") && !Catch::Contains("hard_particles"));
   REQUIRE(e.files.size() == 1);
   CHECK(e.files[0].first == "particles.data");
   CHECK(e.summary["fixed_particles"].get<int64_t>() ==
@@ -199,6 +201,15 @@ TEST_CASE("export: a clump species becomes a multisphere template of unit-volume
     CHECK(r == Approx(5e-4 / std::cbrt(2.0)));
     CHECK(std::sqrt(x * x + y * y + z * z) == Approx(5e-4 / std::cbrt(2.0)));
   }
+  // A sphere species poured beside the clumps: LIGGGHTS would integrate one of them twice or
+  // not at all.
+  core::Species ball;
+  ball.name = "ball";
+  ball.size.diameter_m = 1e-3;
+  s.species.push_back(ball);
+  s.fills.push_back(core::FillSpec(1, {0, 0, 0.02}, {0.01, 0.01, 0.03}, 10));
+  CHECK_FALSE(LiggghtsParticleCommands(s, 1e-5, &p, &error));
+  CHECK_THAT(error, Catch::Contains("clumps and single spheres"));
 }
 
 TEST_CASE("export: calibrated parameters are applied; bad ones name the field", "[unit][export]") {
