@@ -12,6 +12,7 @@
 #include "apps/diagnose_command.h"
 #include "apps/experiment_command.h"
 #include "apps/journal_stats_command.h"
+#include "apps/export_command.h"
 #include "apps/reproduce_command.h"
 #include "apps/simulate_command.h"
 #include "core/version.h"
@@ -27,6 +28,7 @@ constexpr demcal::apps::CommandFactory kCommands[] = {
     &demcal::apps::AddCohesionCommand,
     &demcal::apps::AddDiagnoseCommand,
     &demcal::apps::AddJournalStatsCommand,
+    &demcal::apps::AddExportCommand,
 };
 
 }  // namespace

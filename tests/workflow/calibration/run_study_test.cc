@@ -58,8 +58,9 @@ TEST_CASE("calibrate writes its outputs and resumes from the journal", "[dem][ca
   for (const char* svg : {"calibration.svg", "targets.svg", "convergence.svg", "profile_mu_r_BP_BP.svg"})
     CHECK(ReadFile(dir.str(std::string("out/") + svg)).find("<svg") != std::string::npos);
   const std::string deck = ReadFile(dir.str("out/calibrated_params.liggghts"));
-  CHECK(deck.find("coefficientRollingFriction peratomtypepair 2") != std::string::npos);
-  CHECK(deck.find("rolling_friction cdt") != std::string::npos);
+  // demcal's cdt is not LIGGGHTS' cdt (docs/export.md): the include names the pair instead.
+  CHECK(deck.find("# NOT EXPORTED: material pair BP–BP") != std::string::npos);
+  CHECK(deck.find("coefficientRollingFriction") == std::string::npos);
 
   // The typed front door on the same study, into the same folder: every heap comes from the
   // journal, and the result carries what result.json holds.
