@@ -131,7 +131,8 @@ core::Scene PourScene(const PourOptions& o) {
   const int n = static_cast<int>(std::floor(2 * base_radius / d));
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
-      const Vec3 at{(i - 0.5 * (n - 1)) * d, (j - 0.5 * (n - 1)) * d, r * (1 + 0.5 * rng.Uniform())};
+      const Vec3 at{(i - 0.5 * (n - 1)) * d, (j - 0.5 * (n - 1)) * d,
+                    r * (1 + 0.5 * rng.Uniform())};
       if (at.x * at.x + at.y * at.y > base_radius * base_radius) continue;
       core::ParticleSpec p{0, at, {}, {}, d, {}};
       p.fixed = true;

@@ -4,7 +4,8 @@
 //   dense bed  spheres (or rods of spheres) packed as a loose gas into an open box and settled;
 //              up to 20,000 spheres the reference 60 × 60 mm box (the LIGGGHTS comparison case),
 //              above it a footprint grown as √(N / 20,000), so the loose pack keeps its solid
-//              fraction (≈ 15 %, random insertion works up to ≈ 30 %) and the settled bed its depth;
+//              fraction (≈ 15 %; random insertion works up to ≈ 30 %) and the settled bed its
+//              depth;
 //   pour       spheres d 1.8–2.2 mm onto a frozen rough base (a disc of fixed 2 mm spheres at 2 mm
 //              pitch, lifted at random by up to half a radius, as objectives/common/glued_base.cc
 //              builds it), either from a narrow stream (the calibration workload) or, with

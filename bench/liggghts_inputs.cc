@@ -24,8 +24,9 @@ bool WriteLiggghtsInputs(const std::string& dir, const core::Particles& p, const
   data << "demcal_bench initial state (bench/liggghts_inputs.cc)\n\n"
        << p.Size() << " atoms\n" << (any_fixed ? 2 : 1) << " atom types\n\n";
   // %.17g: the same doubles in both codes.
-  std::snprintf(line, sizeof line, "%.17g %.17g xlo xhi\n%.17g %.17g ylo yhi\n%.17g %.17g zlo zhi\n",
-                lo.x, hi.x, lo.y, hi.y, lo.z, hi.z);
+  std::snprintf(line, sizeof line,
+                "%.17g %.17g xlo xhi\n%.17g %.17g ylo yhi\n%.17g %.17g zlo zhi\n", lo.x, hi.x,
+                lo.y, hi.y, lo.z, hi.z);
   data << line << "\nAtoms\n\n";
   for (size_t i = 0; i < p.Size(); ++i) {
     const double d = 2 * p.radius_m[i];

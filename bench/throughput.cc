@@ -1,5 +1,6 @@
 // demcal_bench throughput: the side-by-side case of bench/README.md (LIGGGHTS reference case):
-// by default 20,000 spheres (--particles: any count, bench/bench_cases.h sizes the box), d = 2 mm, ρ = 2500 kg/m³, E = 5 MPa, ν = 0.25, e = 0.5, μs = 0.5, μr = 0.1
+// by default 20,000 spheres (--particles: any count; bench/bench_cases.h sizes the box),
+// d = 2 mm, ρ = 2500 kg/m³, E = 5 MPa, ν = 0.25, e = 0.5, μs = 0.5, μr = 0.1
 // (epsd2), 60 × 60 mm box, Δt = 2.4e-5 s, skin 0.5 mm. Pours and settles the bed (or loads it
 // from --bed), runs a warm-up, then times --steps steps and prints particle-steps per second.
 // Variants of the same case:
@@ -21,6 +22,7 @@
 
 #include "bench/bench_cases.h"
 #include "bench/liggghts_inputs.h"
+#include "bench/memory.h"
 #include "bench/pour.h"
 #include "bench/state_digest.h"
 #include "core/simulation/simulation.h"
@@ -77,8 +79,11 @@ int main(int argc, char** argv) {
                  "exit");
   demcal::bench::PourCommand pour;
   CLI::App* pour_command = demcal::bench::AddPourCommand(app, &pour);
+  demcal::bench::MemoryCommand memory;
+  CLI::App* memory_command = demcal::bench::AddMemoryCommand(app, &memory);
   CLI11_PARSE(app, argc, argv);
   if (pour_command->parsed()) return demcal::bench::RunPour(pour);
+  if (memory_command->parsed()) return demcal::bench::RunMemory(memory);
 
   const Scene scene = demcal::bench::DenseBedScene(c);
   Simulation sim(scene, {.threads = 0});

@@ -314,6 +314,16 @@ double ContactForces::PairElasticEnergy(const Particles& p, const NeighbourList&
   return energy;
 }
 
+HeapBytes ContactForces::Heap() const {
+  HeapBytes b = walls_.Heap();
+  b.per_pair +=
+      VectorBytes(pair_history_, pair_result_, pair_active_, spare_history_, spare_active_);
+  for (const RowScratch& s : row_scratch_)
+    b.other += VectorBytes(s.touching, s.geometry, s.in_contact);
+  b.other += chunks_.HeapBytes();
+  return b;
+}
+
 size_t ContactForces::ActiveContacts() const {
   return std::accumulate(pair_active_.begin(), pair_active_.end(), size_t{0}) +
          walls_.ActiveContacts();

@@ -53,6 +53,9 @@ class ContactForces {
   // Periodic axes for pair separations (minimum image); default: none.
   void SetPeriodic(const PeriodicBox& box) { periodic_ = box; }
 
+  // The pair histories and results, the wall candidates and the sweep's scratch.
+  HeapBytes Heap() const;
+
   // Number of particle–particle and particle–wall contacts with positive overlap last step.
   size_t ActiveContacts() const;
   // Force and torque the particles exerted on each wall in the last Compute (see WallContacts).

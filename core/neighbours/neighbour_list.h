@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "core/math/heap_bytes.h"
 #include "core/math/periodic_box.h"
 #include "core/math/vec3.h"
 
@@ -86,6 +87,13 @@ class NeighbourList {
   std::vector<uint32_t> CellOrder(const Settings& settings, const std::vector<Vec3>& positions) const;
 
   uint64_t Builds() const { return builds_; }
+  // The list's arrays and its search scratch (core/math/heap_bytes.h).
+  HeapBytes Heap() const {
+    return {VectorBytes(row_start_, reverse_start_, reference_position_, cell_of_particle_,
+                        cell_particles_, row_scratch_, is_mover_, new_slot_, movers_) +
+                VectorBytes(found_, found_count_, incoming_start_),
+            VectorBytes(partner_, reverse_entry_, incoming_), VectorBytes(cell_start_)};
+  }
 
   // Checkpointing: the list and its rebuild reference (cell scratch is rebuilt on demand).
   template <class A>

@@ -31,6 +31,7 @@
 #include <thread>
 #include <vector>
 
+#include "core/math/heap_bytes.h"
 #include "core/neighbours/neighbour_list.h"
 
 namespace demcal::core {
@@ -51,6 +52,11 @@ class SweepChunks {
   uint32_t End(size_t c) const { return boundary_[c + 1]; }
   std::span<const CrossPair> Incoming(size_t c) const {
     return {incoming_.data() + incoming_start_[c], incoming_.data() + incoming_start_[c + 1]};
+  }
+
+  // The cross pairs and per-chunk arrays (core/math/heap_bytes.h).
+  size_t HeapBytes() const {
+    return VectorBytes(boundary_, incoming_start_, incoming_, time_s_) + Count();
   }
 
   // Adds the measured sweep time of chunk c in this pass.

@@ -104,6 +104,9 @@ class Simulation {
   // pass (the last step, or Initialize). Summed in particle order: identical for any thread count.
   std::vector<WallLoad> WallLoads() const { return forces_.WallLoads(system_.spheres, walls_); }
   const NeighbourList& neighbours() const { return list_; }
+  // Heap bytes of the state and scratch arrays (particles, clumps, the three neighbour lists,
+  // contact histories, wall candidates), by what they grow with.
+  HeapBytes Heap() const;
   // Wall time per phase of the step since Initialize (RunSummary::phases has one Run's).
   const PhaseTimes& phases() const { return phases_; }
   std::vector<FactoryReport> FactoryReports() const;

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "core/contact/contact_state.h"
+#include "core/math/heap_bytes.h"
 #include "core/materials/interaction_table.h"
 #include "core/bodies/particles.h"
 #include "core/walls/triangle_mesh.h"
@@ -66,6 +67,12 @@ class WallContacts {
   std::vector<WallLoad> Loads(const Particles& p, const std::vector<Wall>& walls) const;
   // Particle–wall contacts with positive overlap (or held by adhesion) in the last pass.
   size_t ActiveContacts() const;
+  // Candidate rows (per particle: a few walls each) and the per-wall arrays.
+  HeapBytes Heap() const {
+    return {VectorBytes(start_, index_, history_, active_, mesh_slots_, mesh_history_,
+                        mesh_near_start_, mesh_near_, load_) + RowsBytes(spare_),
+            0, VectorBytes(triangles_, velocity_)};
+  }
 
   template <class A>
   void Serialize(A& a) {
@@ -120,6 +127,10 @@ class WallContacts {
     void Clear(size_t particles);
   };
   static constexpr size_t kNoOldSlot = SIZE_MAX;
+  static size_t RowsBytes(const Rows& r) {
+    return VectorBytes(r.start, r.index, r.mesh_slots, r.near_start, r.history, r.active,
+                       r.mesh_history, r.near);
+  }
   // Old row o copied to `to` as it is (walls removed since dropped).
   void KeepRow(size_t o, const std::vector<Wall>& walls, Rows& to) const;
   // Particle i's walls listed anew at its position; histories from old slot o (or kNoOldSlot).
