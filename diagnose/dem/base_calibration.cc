@@ -4,7 +4,10 @@
 #include <chrono>
 #include <cmath>
 
+#include <algorithm>
+
 #include "calibrate/calibration.h"
+#include "calibrate/parameter_covariance.h"
 #include "calibrate/response_surface.h"
 #include "diagnose/dem/study_model.h"
 
@@ -36,13 +39,25 @@ bool Sensitivities(const calibrate::CalibrationSummary& s, const std::vector<cal
 
 }  // namespace
 
-BaseCalibration StudyModel::CalibrateBase() {
+std::vector<std::string> StudyModel::BaseParameterNames() const {
+  std::vector<std::string> names;
+  for (const calibrate::Parameter& p : study_.space.parameters) names.push_back(p.name);
+  return names;
+}
+
+std::vector<double> StudyModel::BaseSiPerUnit(const std::vector<double>& unit) const {
+  return calibrate::SiPerUnit(study_.space, unit);
+}
+
+BaseCalibration StudyModel::CalibrateBase(int budget_scale) {
   BaseCalibration base;
   std::string error;
   Setting* s = SettingFor({}, &error);
   if (!s) return base.message = error, base;
   calibrate::CalibrationOptions options = study_.options;
   if (options_.max_evaluations > 0) options.optimiser_options.max_evaluations = options_.max_evaluations;
+  options.optimiser_options.max_evaluations *= std::max(1, budget_scale);
+  base.max_evaluations = options.optimiser_options.max_evaluations;
   std::vector<calibrate::Target> targets;
   for (const workflow::StudyTarget& t : study_.targets) targets.push_back(t.target);
   calibrate::CandidateProgress progress;
@@ -57,6 +72,7 @@ BaseCalibration StudyModel::CalibrateBase() {
   reused_ += summary.replicates_reused;
   Pool(s);
   base.termination = calibrate::TerminationName(summary.termination);
+  base.settled = SettledTermination(base.termination);
   base.message = summary.message;
   if (summary.best < 0) return base;
   const calibrate::Candidate& best = summary.candidates[summary.best];

@@ -46,7 +46,9 @@ class StudyModel final : public ForwardModel {
                                             const EffectContext& context, const StudyModelOptions& options,
                                             std::string* error);
   int BaseParameters() const override { return static_cast<int>(study_.space.Size()); }
-  BaseCalibration CalibrateBase() override;
+  BaseCalibration CalibrateBase(int budget_scale) override;
+  std::vector<std::string> BaseParameterNames() const override;
+  std::vector<double> BaseSiPerUnit(const std::vector<double>& unit) const override;
   std::vector<Prediction> Evaluate(const std::vector<ModelPoint>& points) override;
   int SimulationsRun() const override { return run_; }
   int SimulationsReused() const override { return reused_; }

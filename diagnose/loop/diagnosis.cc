@@ -3,6 +3,7 @@
 #include <chrono>
 #include <sstream>
 
+#include "diagnose/loop/base_fit.h"
 #include "diagnose/loop/candidate_step.h"
 #include "diagnose/loop/fit_state.h"
 #include "objectives/common/input_limits.h"
@@ -41,7 +42,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-FitState BaseFit(const BaseCalibration& base, int observations) {
+FitState StartingFit(const BaseCalibration& base, int observations) {
   FitState fit;
   fit.point.base_unit = base.base_unit;
   fit.prediction = base.prediction;
@@ -79,7 +80,16 @@ void Finish(const std::vector<Observation>& observations, const FitState& fit, c
   d->after = WithPrediction(observations, fit.prediction, options.discrepancy_floor);
   d->gap_after = TestGap(d->after, fit.Fitted(), {options.significance});
   std::ostringstream m;
-  if (d->termination == DiagnosisTermination::kNoMissingEffect) {
+  if (!d->base_identifiability.Identifiable() && !d->base_identifiability.singular_values.empty()) {
+    m << "the data do not determine the base parameters (";
+    for (const calibrate::UndeterminedDirection& u : d->base_identifiability.undetermined) m << u.description;
+    m << "); ";
+  }
+  if (d->termination == DiagnosisTermination::kBaseUnsettled) {
+    m << "no effect ranked: " << d->base_summary
+      << "; raise the study's max_evaluations (or --max-evaluations) until it settles (" << d->gap_before.summary
+      << ")";
+  } else if (d->termination == DiagnosisTermination::kNoMissingEffect) {
     m << "no missing effect found: the base model fits within noise (" << d->gap_before.summary << ")";
   } else if (d->termination == DiagnosisTermination::kEffectFound) {
     m << "missing effect: " << Signed(fit.point, candidates) << "; after adding it " << d->gap_after.summary;
@@ -106,20 +116,29 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
     return d;
   }
   if (progress) progress("calibrating the base model");
-  d.base = model.CalibrateBase();
+  const BaseFit settled = SettleBase(model, observations, options.discrepancy_floor, progress);
+  d.base = settled.base;
+  d.base_budget_scale = settled.budget_scale;
+  d.base_identifiability = settled.identifiability;
+  d.base_summary = settled.summary;
+  if (progress) progress(settled.summary);
   d.phases.push_back({"base calibration", model.SimulationsRun(),
                       std::chrono::duration<double>(Clock::now() - start).count()});
   if (!d.base.ok || !d.base.prediction.ok) {
     d.message = "the base calibration gave no prediction: " + d.base.message;
     return d;
   }
-  FitState fit = BaseFit(d.base, static_cast<int>(observations.size()));
+  FitState fit = StartingFit(d.base, static_cast<int>(observations.size()));
   d.before = WithPrediction(observations, fit.prediction, options.discrepancy_floor);
   d.gap_before = TestGap(d.before, fit.Fitted(), {options.significance});
   if (progress) progress("base model: " + d.gap_before.summary);
   bool gap = d.gap_before.gap_detected;
   d.termination =
       gap ? DiagnosisTermination::kGapUnexplained : DiagnosisTermination::kNoMissingEffect;
+  if (gap && !d.base.settled) {  // an unsettled base leaves a gap its own calibration would close
+    d.termination = DiagnosisTermination::kBaseUnsettled;
+    gap = false;
+  }
   while (gap && static_cast<int>(d.named.size()) < options.max_effects) {
     std::vector<int> remaining;
     for (int c = 0; c < static_cast<int>(candidates.size()); ++c)

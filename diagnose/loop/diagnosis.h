@@ -1,7 +1,9 @@
 #pragma once
 // Diagnose: the discrepancy workflow (docs/diagnose.md; docs/design.md "The discrepancy workflow").
-//  1. Calibrate the base model (ForwardModel::CalibrateBase); standardised residuals per
-//     observation (observation.h) and the gap test (gap_significance.h).
+//  1. Calibrate the base model until it settles by the calibration's own criterion (base_fit.h:
+//     at most kMaxBaseBudgetScale × the study's budget; unsettled: nothing is ranked); the
+//     identifiability of its parameters; standardised residuals per observation
+//     (observation.h) and the gap test (gap_significance.h).
 //  2. No gap: stop, "no missing effect found".
 //  3. Else, per candidate effect not yet added: its signature — one simulated point, the
 //     current fit with the effect at its probe value (same seeds) — and a linearised
@@ -27,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "calibrate/identifiability.h"
 #include "diagnose/gap/gap_significance.h"
 #include "diagnose/loop/diagnosis_termination.h"
 #include "diagnose/loop/forward_model.h"
@@ -72,6 +75,9 @@ struct Diagnosis {
   DiagnosisTermination termination = DiagnosisTermination::kFailed;
   std::string message = "Diagnose was not called";
   BaseCalibration base;
+  int base_budget_scale = 1;        // the study's budget times this (base_fit.h)
+  calibrate::IdentifiabilityReport base_identifiability;
+  std::string base_summary;         // settled or not, budget, undetermined base parameters
   std::vector<Observation> before;  // at the base calibration
   GapReport gap_before;
   std::vector<DiagnosisStep> steps;

@@ -10,6 +10,9 @@ const char* DiagnosisTerminationName(DiagnosisTermination t) {
     case DiagnosisTermination::kGapUnexplained: return "gap_unexplained";
     case DiagnosisTermination::kFailed: return "failed";
     case DiagnosisTermination::kInvalid: return "invalid";
+    case DiagnosisTermination::kBaseUnsettled: return "base_unsettled";
+    case DiagnosisTermination::kNotToldApart: return "not_told_apart";
+    case DiagnosisTermination::kModelFormOffset: return "model_form_offset";
   }
   return "unknown";
 }

@@ -47,13 +47,32 @@ struct BaseCalibration {
   Prediction prediction;
   std::vector<std::vector<double>> jacobian;  // [observation][parameter]
   std::string termination;                     // the calibration's
+  // Settled by the calibration's own criterion: within_noise, converged or out_of_range
+  // (calibrate/termination.h); a calibration that stopped on its budget did not.
+  bool settled = false;
+  int max_evaluations = 0;  // the budget it ran under
 };
+
+// The calibration's own verdict that its search ended (not its budget): within_noise,
+// converged, out_of_range.
+bool SettledTermination(const std::string& termination);
 
 class ForwardModel {
  public:
   virtual ~ForwardModel() = default;
   virtual int BaseParameters() const = 0;
-  virtual BaseCalibration CalibrateBase() = 0;
+  // The study's calibration with its evaluation budget times budget_scale (1, 2, 4: more
+  // evaluations when a fit did not settle; runs already made are read back, not repeated).
+  virtual BaseCalibration CalibrateBase(int budget_scale) = 0;
+  // Per base parameter: its name and SI units per unit-cube step at the unit point (reports).
+  virtual std::vector<std::string> BaseParameterNames() const {
+    std::vector<std::string> names;
+    for (int j = 0; j < BaseParameters(); ++j) names.push_back("u" + std::to_string(j));
+    return names;
+  }
+  virtual std::vector<double> BaseSiPerUnit(const std::vector<double>&) const {
+    return std::vector<double>(BaseParameters(), 1.0);
+  }
   // One prediction per point, in order; points are run side by side.
   virtual std::vector<Prediction> Evaluate(const std::vector<ModelPoint>& points) = 0;
   // Simulations (replicate runs) made so far, and those read back from a journal.

@@ -64,6 +64,7 @@ bool WriteDiagnosisHtml(const std::string& path, const DiagnosisRunInfo& info, c
   const bool syn = info.synthetic;
   report.Section("Verdict", syn);
   report.Paragraph(d.message, syn);
+  report.Paragraph("Base fit: " + d.base_summary + ".", syn);
   report.Paragraph("Before: " + d.gap_before.summary + ". After: " + d.gap_after.summary + ".", syn);
   report.Section("Gap before and after", syn);
   if (!report.Figure(objectives::RenderSvg(GapPlot(d)), "standardised residuals before (base model) and after",

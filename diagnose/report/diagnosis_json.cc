@@ -105,7 +105,17 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
   j["gap_after"] = GapJson(d.gap_after);
   j["residuals_before"] = ResidualTable(d.before);
   j["residuals_after"] = ResidualTable(d.after);
-  j["base_calibration"] = {{"termination", d.base.termination}, {"message", d.base.message}};
+  Json undetermined = Json::array();
+  for (const calibrate::UndeterminedDirection& u : d.base_identifiability.undetermined)
+    undetermined.push_back({{"description", u.description}, {"singular_value", Number(u.singular_value)},
+                            {"unit_direction", u.unit_direction}});
+  Json singular = Json::array();
+  for (double s : d.base_identifiability.singular_values) singular.push_back(Number(s));
+  j["base_calibration"] = {{"termination", d.base.termination}, {"message", d.base.message},
+                           {"settled", d.base.settled}, {"max_evaluations", d.base.max_evaluations},
+                           {"budget_scale", d.base_budget_scale}, {"summary", d.base_summary},
+                           {"identifiable", d.base_identifiability.Identifiable()},
+                           {"singular_values", singular}, {"undetermined", undetermined}};
   Json phases = Json::array();
   for (const PhaseTime& p : d.phases)
     phases.push_back({{"phase", p.phase}, {"simulations", p.simulations}, {"wall_time_s", p.wall_time_s}});

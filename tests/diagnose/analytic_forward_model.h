@@ -97,10 +97,19 @@ class AnalyticForwardModel final : public ForwardModel {
   // difference.
   // base_stop_unit >= 0: the base calibration ends there instead (a calibration stopped on its
   // budget), its J a difference over base_step (negative: backwards), as a coarse optimiser's.
+  // settle_at_scale: the calibration ends on its budget (at u = 1, unsettled) below this budget
+  // scale, and settles from it on. blind_base: the base sensitivities come back zero (the data
+  // cannot determine the base parameter).
   double base_stop_unit = -1, base_step = 0.01;
-  BaseCalibration CalibrateBase() override {
-    double best_u = base_stop_unit, best = INFINITY;
-    for (int g = 0; base_stop_unit < 0 && g <= 1000; ++g) {
+  int settle_at_scale = 1;
+  bool blind_base = false;
+  std::vector<int> base_scales;  // the budget scales CalibrateBase was called with
+  BaseCalibration CalibrateBase(int budget_scale) override {
+    base_scales.push_back(budget_scale);
+    const bool settles = budget_scale >= settle_at_scale;
+    const double stop = settles ? base_stop_unit : 1.0;
+    double best_u = stop, best = INFINITY;
+    for (int g = 0; stop < 0 && g <= 1000; ++g) {
       const double u = g / 1000.0;
       const Prediction p = Evaluate({{{u}, {}}})[0];
       double chi2 = 0;
@@ -110,8 +119,11 @@ class AnalyticForwardModel final : public ForwardModel {
     BaseCalibration b{true, "grid", {best_u}};
     b.prediction = Evaluate({{{best_u}, {}}})[0];
     const Prediction up = Evaluate({{{best_u + base_step}, {}}})[0];
-    for (int i = 0; i < Count(); ++i) b.jacobian.push_back({(up.mean[i] - b.prediction.mean[i]) / base_step});
-    b.termination = "grid";
+    for (int i = 0; i < Count(); ++i)
+      b.jacobian.push_back({blind_base ? 0.0 : (up.mean[i] - b.prediction.mean[i]) / base_step});
+    b.termination = settles ? "converged" : "budget";
+    b.settled = settles;
+    b.max_evaluations = 10 * budget_scale;
     return b;
   }
 

@@ -57,6 +57,35 @@ TEST_CASE("diagnosis names a weakened effect with its sign", "[unit]") {
   }
 }
 
+TEST_CASE("an unsettled base calibration gets more budget, and nothing is ranked on it", "[unit]") {
+  AnalyticForwardModel model;
+  model.settle_at_scale = 2;  // settles with twice the study's budget
+  std::vector<Observation> obs = testing::MakeObservations(&model, 0.5, {{2, 0.8}}, 1);
+  Diagnosis d = Diagnose(model, obs, testing::Candidates(), DiagnoseOptions{});
+  CHECK(model.base_scales == std::vector<int>{1, 2});
+  CHECK(d.base_budget_scale == 2);
+  CHECK(d.base_summary.find("2x the study's budget") != std::string::npos);
+  CHECK(Named(d) == "shape");
+  AnalyticForwardModel never;
+  never.settle_at_scale = 1000;  // stops on its budget at u = 1 every time: a gap it made itself
+  obs = testing::MakeObservations(&never, 0.5, {}, 1);
+  d = Diagnose(never, obs, testing::Candidates(), DiagnoseOptions{});
+  CHECK(never.base_scales == std::vector<int>{1, 2, 4});
+  CHECK(d.termination == DiagnosisTermination::kBaseUnsettled);
+  CHECK(d.steps.empty());
+  CHECK(d.named.empty());
+  CHECK(d.message.find("no effect ranked") != std::string::npos);
+}
+
+TEST_CASE("a base parameter the data cannot determine is reported before any effect", "[unit]") {
+  AnalyticForwardModel model;
+  model.blind_base = true;
+  const std::vector<Observation> obs = testing::MakeObservations(&model, 0.5, {{2, 0.8}}, 1);
+  const Diagnosis d = Diagnose(model, obs, testing::Candidates(), DiagnoseOptions{});
+  CHECK_FALSE(d.base_identifiability.Identifiable());
+  CHECK(d.message.rfind("the data do not determine the base parameters", 0) == 0);
+}
+
 TEST_CASE("diagnosis says no missing effect when none is hidden", "[unit]") {
   for (uint64_t seed : {1, 2, 3, 4, 5}) {
     INFO("noise seed " << seed);

@@ -1,0 +1,41 @@
+#pragma once
+// SettleBase: a base fit worth diagnosing (docs/diagnose.md "A base worth diagnosing"). The
+// study's calibration is run with its own budget; when it ends on that budget rather than by its
+// own criterion (calibrate/termination.h: within_noise, converged, out_of_range) it is run again
+// with twice the budget, then four times (kMaxBaseBudgetScale) — the journal reads back the runs
+// already made, so each extension costs only its new candidates. A fit that has not settled then
+// is reported as such and no effect is ranked on it: an unsettled base leaves a gap the
+// calibration itself would have closed, and any effect "explains" it.
+// At the settled fit, the identifiability of the base parameters (calibrate/identifiability.h on
+// the standardised sensitivities): a combination the data leave undetermined is reported
+// before any effect is named, since an effect traded against it is not told apart from it.
+//
+//   BaseFit b = SettleBase(model, observations, 1.0, progress);
+//   if (!b.base.settled) ...;  // DiagnosisTermination::kBaseUnsettled
+//
+// Thread-safety: runs on the calling thread; the model parallelises.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "calibrate/identifiability.h"
+#include "diagnose/gap/observation.h"
+#include "diagnose/loop/forward_model.h"
+
+namespace demcal::diagnose {
+
+// The base budget is extended to at most this multiple of the study's: a cost bound (each
+// doubling at most doubles the base calibration's runs), not a statistical threshold.
+inline constexpr int kMaxBaseBudgetScale = 4;
+
+struct BaseFit {
+  BaseCalibration base;
+  int budget_scale = 1;  // the study's budget times this was used
+  calibrate::IdentifiabilityReport identifiability;
+  std::string summary;   // in words: settled or not, with which budget, what is undetermined
+};
+
+BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observations, double floor_factor,
+                   const std::function<void(const std::string&)>& progress);
+
+}  // namespace demcal::diagnose
