@@ -1,0 +1,281 @@
+#!/usr/bin/env python3
+"""OTHER-ENGINE data: cross-engine datasets for `demcal diagnose`, made with Debian's LIGGGHTS 3.8
+(/usr/bin/liggghts) in the scene the diagnosis examples simulate at --quick. LIGGGHTS-made, never
+measured; demcal did not make them.
+
+  python3 scripts/make_liggghts_datasets.py [--cases control,adhesion,...] [--replicates 4]
+  python3 scripts/make_liggghts_datasets.py --agreement BUILD_DIR   # rolling off in both engines
+  python3 scripts/make_liggghts_datasets.py --check-port DEMCAL_AOR_OUT_DIR
+
+Recipe (datasets/liggghts_crossengine/README.md):
+ 1. The model of examples/diagnose/aor_bp_heap.json (rig 1: the 16 mm slot box),
+    aor_bp_heap_narrow.json (rig 2: the same heap in a 12.5 mm box) and discharge_bp_small.json
+    (the funnel), at their quick fidelity (sizes x5, stiffness x0.01), written as LIGGGHTS decks
+    (scripts/liggghts_decks.py). Base: BP spheres, BP-BP sliding friction 0.5 (the twins' value),
+    rolling friction by LIGGGHTS' own constant-torque law `cdt` at 0.20 between grains (demcal's
+    0.10 at the torque-equivalent coefficient: LIGGGHTS multiplies by R* = R/2, demcal by R) and
+    0.055 against the walls (R* = R there).
+ 2. One effect hidden per case (CASES below), the rest as the base.
+ 3. Runs one at a time under `nice -n 10`, REPLICATES replicates with prime seeds from SEED_BASE.
+    Where the case has no adhesion the coating changes nothing in the model: the heap is simulated
+    once per rig and its mean is the noise-free value of every coating row (the demcal twins used
+    the same seeds at every level too); with adhesion each level is simulated.
+ 4. Observables measured by demcal's own definitions, ported (scripts/liggghts_measure.py).
+ 5. Measurement noise as the demcal twins (scripts/make_diagnose_twins.py): a seeded Gaussian draw
+    (random.Random(NOISE_SEED + case index)) of the stated uncertainty: 1.0 deg angle, 3 % heap
+    height, 0.5 mm crest drop, 3 % discharge time and mass flow, 1 % bulk density.
+Writes datasets/liggghts_crossengine/<case>/measurements.csv (provenance PROVENANCE, source naming
+LIGGGHTS), runs.csv (every replicate, its status and CPU seconds) and truth.json (scoring only).
+"""
+import argparse, csv, json, math, os, random, resource, subprocess, sys, tempfile, time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import liggghts_decks as decks  # noqa: E402
+import liggghts_measure as measure  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+OUT = os.path.join(ROOT, "datasets", "liggghts_crossengine")
+LIGGGHTS = "/usr/bin/liggghts"
+VERSION = "LIGGGHTS-PUBLIC 3.8.0 (Debian liggghts package)"
+# The table reader knows measured/inferred/synthetic; `simulated:liggghts-3.8` once it accepts it.
+PROVENANCE = "synthetic"
+SEED_BASE, REPLICATES, NOISE_SEED = 100000, 4, 200
+COATINGS = [0.0, 1.5, 3.0]
+RIGS = {"slot": ("aor_bp_heap.json", "pseudo-2D heap"),
+        "narrow": ("aor_bp_heap_narrow.json", "narrow pseudo-2D heap")}
+RIG2_COATINGS = [0.0, 3.0]
+BASE = {"sliding_friction": 0.5, "rolling": "cdt", "mur_pp": 0.20, "mur_pw": 0.055}
+# case -> (library effect the diagnosis should name, LIGGGHTS change, sign). Strengths: clear
+# changes of the heap at quick fidelity, not tuned to any diagnosis result.
+CASES = {
+    "control": (None, {}, None),
+    "adhesion": ("jkr_adhesion", {"ced_J_m3_per_wt_pct": 7.5e3}, "+"),
+    "rolling_strong": ("rolling_resistance", {"rolling": "epsd2", "mur_pp": 0.3}, "+"),
+    "elongated": ("particle_shape", {"clump": 2.0}, "+"),
+    "wall_friction_high": ("wall_friction", {"mu_pw": 0.9}, "+"),
+    "wide_psd": ("size_polydispersity", {"diameter_range_m": [0.000200, 0.000725]}, "+"),
+    "rolling_low": ("rolling_resistance", {"mur_pp": 0.05}, "-"),
+}
+NOISE = {"angle_deg": ("deg", lambda v: 1.0), "heap_height_m": ("m", lambda v: 0.03 * v),
+         "crest_drop_m": ("m", lambda v: 0.0005), "discharge_time_s": ("s", lambda v: 0.03 * v),
+         "mass_flow_kg_s": ("kg/s", lambda v: 0.03 * v), "bulk_density_kg_m3": ("kg/m3", lambda v: 0.01 * v)}
+HEAP_OBS = ("angle_deg", "heap_height_m", "crest_drop_m")
+FUNNEL_OBS = ("discharge_time_s", "mass_flow_kg_s", "bulk_density_kg_m3")
+
+
+def experiment(name):
+    return json.load(open(os.path.join(ROOT, "examples", "diagnose", name)))
+
+
+def model_for(exp, case, coating, rolling_off=False):
+    q = exp["quick_fidelity"]
+    m = decks.Model(exp, q["size_scale"], q["stiffness_scale"])
+    change = CASES[case][1] if case else {}
+    m.mu_pp = BASE["sliding_friction"]
+    m.rolling, m.mur_pp, m.mur_pw = change.get("rolling", BASE["rolling"]), change.get("mur_pp", BASE["mur_pp"]), BASE["mur_pw"]
+    if rolling_off:
+        m.rolling, m.mur_pp, m.mur_pw = None, 0.0, 0.0
+    m.mu_pw = change.get("mu_pw", m.mu_pw)
+    m.ced_J_m3 = change.get("ced_J_m3_per_wt_pct", 0.0) * coating
+    m.clump = change.get("clump")
+    if "diameter_range_m" in change:
+        m.d_range = [q["size_scale"] * d for d in change["diameter_range_m"]]
+    return m
+
+
+def seeds(case_index, cond, rep):
+    return decks.primes_from(SEED_BASE + 1000 * (100 * case_index + 10 * cond + rep), 8)
+
+
+RUN_LIMIT_S = 1800  # wall clock per run on a loaded machine; LIGGGHTS can hang after an ERROR
+
+
+def run_deck(deck, work):
+    path = os.path.join(work, "in.deck")
+    open(path, "w").write(deck)
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    wall = time.time()
+    try:
+        subprocess.run(["nice", "-n", "10", LIGGGHTS, "-in", "in.deck", "-log", "log.deck", "-echo", "none"],
+                       cwd=work, stdout=subprocess.DEVNULL, stderr=subprocess.STDOUT, check=False,
+                       timeout=RUN_LIMIT_S)
+    except subprocess.TimeoutExpired:
+        pass  # the missing dump or outflow record reports it
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    log = open(os.path.join(work, "log.deck"), errors="replace").read() if os.path.exists(os.path.join(work, "log.deck")) else ""
+    return log, cpu, time.time() - wall
+
+
+def heap_run(m, aor, sd):
+    with tempfile.TemporaryDirectory() as work:
+        deck = decks.heap_deck(m, aor, sd, random.Random(sd[0]), "heap.dump")
+        log, cpu, wall = run_deck(deck, work)
+        dump = os.path.join(work, "heap.dump")
+        if "ERROR" in log or not os.path.exists(dump):
+            return {"status": "liggghts_error", "message": _error(log), "cpu_s": cpu, "wall_s": wall}
+        rows = measure.read_dump(dump)
+    base = [r for r in rows if r["type"] == 2]
+    heap = [(r["x"], r["z"], r["radius"]) for r in rows if r["type"] == 1]
+    out = measure.slot_heap(heap, 1.125 * m.base_d) if base else {"ok": False, "message": "no base"}
+    status = "not_settled" if "DEMCAL_STATUS not_settled" in log else "ok" if out["ok"] else "no_angle"
+    return {"status": status, "message": out.get("message", ""), "cpu_s": cpu, "wall_s": wall,
+            "particles": len(heap), **{k: out.get(k) for k in HEAP_OBS}}
+
+
+def funnel_run(m, dis, sd):
+    with tempfile.TemporaryDirectory() as work:
+        deck = decks.funnel_deck(m, dis, sd, os.path.join(work, "hopper.stl"), "outflow.txt", "fill.dump")
+        log, cpu, wall = run_deck(deck, work)
+        try:
+            rows = measure.read_dump(os.path.join(work, "fill.dump"))
+            samples = [tuple(map(float, l.split())) for l in open(os.path.join(work, "outflow.txt"))
+                       if l.strip() and not l.startswith("t")]
+        except OSError:
+            return {"status": "liggghts_error", "message": _error(log), "cpu_s": cpu, "wall_s": wall}
+    # LIGGGHTS gives a multisphere grain's member atoms their spheres' masses, which overlap: the
+    # atoms' masses are scaled so that they sum to the inserted feed mass (the grains' masses).
+    atoms_kg = sum(r["mass"] for r in rows)
+    scale = dis["feed"]["mass_kg"] / atoms_kg if m.clump and atoms_kg > 0 else 1.0
+    fill = scale * sum(r["mass"] for r in rows if r["z"] > 0)
+    t0 = samples[0][0] if samples else 0.0
+    flow = measure.discharge([(t - t0, scale * x) for t, x in samples], fill)
+    grains = [(r["x"], r["y"], r["z"], scale * r["mass"]) for r in rows]
+    dmax = m.d_range[1]
+    status = ("jammed" if "DEMCAL_STATUS jammed" in log else "not_empty" if "DEMCAL_STATUS not_empty" in log
+              else "not_settled" if "DEMCAL_STATUS not_settled" in log else "ok" if flow["ok"] else "no_metrics")
+    left = fill - scale * (samples[-1][1] if samples else 0.0)
+    message = (f"no outflow for {dis['stall_s']} s with {left:.3g} kg ({100 * left / fill:.0f}% of the fill) "
+               "left in the hopper" if status == "jammed" else flow.get("message", ""))
+    res = {"status": status, "message": message, "cpu_s": cpu, "wall_s": wall, "particles": len(rows),
+           "bulk_density_kg_m3": measure.bulk_density(grains, dis["hopper"], dmax)}
+    if status == "ok":
+        res.update({k: flow[k] for k in ("discharge_time_s", "mass_flow_kg_s")})
+    return res
+
+
+def _error(log):
+    return next((l for l in log.splitlines() if "ERROR" in l), "LIGGGHTS wrote no output")
+
+
+def mean_sd(runs, key):
+    v = [r[key] for r in runs if r["status"] == "ok" and r.get(key) is not None]
+    if not v:
+        return None, None, 0
+    mu = sum(v) / len(v)
+    return mu, (math.sqrt(sum((x - mu) ** 2 for x in v) / (len(v) - 1)) if len(v) > 1 else None), len(v)
+
+
+def simulate(case, replicates, log):
+    """Every run of a case: list of (rig or 'funnel', coating, replicate, result)."""
+    ci = list(CASES).index(case)
+    adhesive = "ced_J_m3_per_wt_pct" in CASES[case][1]
+    runs = []
+    for r_i, (rig, (name, _)) in enumerate(RIGS.items()):
+        exp = experiment(name)
+        levels = (COATINGS if rig == "slot" else RIG2_COATINGS) if adhesive else [None]
+        for w in levels:
+            for rep in range(replicates):
+                res = heap_run(model_for(exp, case, w or 0.0), exp["aor"], seeds(ci, 3 * r_i + round((w or 0) / 1.5), rep))
+                runs.append((rig, w, rep, res))
+                log(f"{case} {rig} w={w} r{rep}: {res['status']} {res.get('angle_deg')} cpu {res['cpu_s']:.1f} s")
+    exp = experiment("discharge_bp_small.json")
+    for rep in range(replicates):
+        res = funnel_run(model_for(exp, case, 0.0), exp["discharge"], seeds(ci, 9, rep))
+        runs.append(("funnel", 0.0, rep, res))
+        log(f"{case} funnel r{rep}: {res['status']} {res.get('discharge_time_s')} cpu {res['cpu_s']:.1f} s")
+    return runs
+
+
+def write_case(case, runs, replicates, provenance):
+    ci = list(CASES).index(case)
+    rng = random.Random(NOISE_SEED + ci)
+    out_dir = os.path.join(OUT, case)
+    os.makedirs(out_dir, exist_ok=True)
+    recipe = (f"LIGGGHTS-MADE (other engine, not measured): {VERSION}, quick-fidelity scene of examples/diagnose, "
+              f"case {case}; mean of {replicates} replicates plus seeded Gaussian noise of the stated uncertainty; "
+              f"scripts/make_liggghts_datasets.py")
+    rows, noise_free, notes = [], {}, []
+    for rig, (name, test) in RIGS.items():
+        depth = experiment(name)["aor"]["depth_m"]
+        for w in (COATINGS if rig == "slot" else RIG2_COATINGS):
+            group = [r for g, lv, _, r in runs if g == rig and (lv == w or lv is None)]
+            for obs in HEAP_OBS:
+                rows.append((obs, w, test, depth, mean_sd(group, obs), group))
+    group = [r for g, _, _, r in runs if g == "funnel"]
+    for obs in FUNNEL_OBS:
+        rows.append((obs, 0.0, "funnel", None, mean_sd(group, obs), group))
+    with open(os.path.join(out_dir, "measurements.csv"), "w") as f:
+        f.write("observable,unit,material,coating_PEG_wt_pct,test,box_depth_m,value,uncertainty,repeats,provenance,source\n")
+        for obs, w, test, depth, (mu, sd, n), group in rows:
+            if mu is None:
+                bad = sorted({r["status"] for r in group if r["status"] != "ok"})
+                notes.append(f"{obs} at {w:g} wt% ({test}): no value, runs {', '.join(bad)}; row left out")
+                continue
+            unit, u = NOISE[obs][0], NOISE[obs][1](mu)
+            noise_free[f"{obs}|{w:g}|{test}"] = {"mean": mu, "sd": sd, "n": n}
+            dcol = "" if depth is None else f"{depth:g}"
+            f.write(f'{obs},{unit},BP,{w:g},{test},{dcol},{mu + rng.gauss(0, u):.6g},{u:.3g},{n},{provenance},"{recipe}"\n')
+    with open(os.path.join(out_dir, "runs.csv"), "w") as f:
+        f.write("rig,coating_PEG_wt_pct,replicate,status,angle_deg,heap_height_m,crest_drop_m,discharge_time_s,"
+                "mass_flow_kg_s,bulk_density_kg_m3,particles,cpu_s,wall_s,message\n")
+        for g, w, rep, r in runs:
+            vals = ",".join("" if r.get(k) is None else f"{r[k]:.6g}" for k in HEAP_OBS + FUNNEL_OBS)
+            lv = "all" if w is None else f"{w:g}"
+            f.write(f'{g},{lv},{rep},{r["status"]},{vals},{r.get("particles", "")},{r["cpu_s"]:.2f},{r["wall_s"]:.1f},"{r["message"]}"\n')
+    effect, change, sign = CASES[case]
+    json.dump({"case": case, "engine": VERSION, "hidden_effect": effect, "sign": sign, "liggghts_change": change,
+               "base": BASE, "noise_free": noise_free, "notes": notes, "recipe": recipe},
+              open(os.path.join(out_dir, "truth.json"), "w"), indent=2)
+    for n in notes:
+        print(f"{case}: {n}", file=sys.stderr)
+
+
+def write_study(case):
+    """examples/diagnose/crossengine_<case>.json: the twins' study (diagnose_none.json: mu_s fitted,
+    its optimiser and replicates) over every row the case's table holds, both rigs and the funnel."""
+    study = json.load(open(os.path.join(ROOT, "examples", "diagnose", "diagnose_none.json")))
+    files = {"pseudo-2D heap": "aor_bp_heap.json", "narrow pseudo-2D heap": "aor_bp_heap_narrow.json",
+             "funnel": "discharge_bp_small.json"}
+    targets = []
+    with open(os.path.join(OUT, case, "measurements.csv")) as f:
+        for row in csv.DictReader(f):
+            w = float(row["coating_PEG_wt_pct"])
+            targets.append({"experiment_file": files[row["test"]], "observable": row["observable"],
+                            "measurement": {"material": "BP", "conditions": {
+                                "coating_PEG_wt_pct": int(w) if w == int(w) else w, "test": row["test"]}}})
+    study["description"] = (f"Diagnosis on OTHER-ENGINE data: LIGGGHTS-made (not measured, not made by demcal), "
+                            f"case {case} of datasets/liggghts_crossengine/ (scripts/make_liggghts_datasets.py). "
+                            "Base model as the twins' studies: BP spheres, BP-BP sliding friction fitted; rig 1 "
+                            "(16 mm slot heap) at 0, 1.5 and 3 wt% PEG, rig 2 (12.5 mm slot heap) at 0 and 3 wt%, "
+                            "the funnel at 0 wt%. Run with --quick, the fidelity the data were made at.")
+    study["measurements"] = f"../../datasets/liggghts_crossengine/{case}/measurements.csv"
+    study["targets"] = targets
+    path = os.path.join(ROOT, "examples", "diagnose", f"crossengine_{case}.json")
+    json.dump(study, open(path, "w"), indent=2)
+    open(path, "a").write("\n")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--cases", default=",".join(CASES))
+    ap.add_argument("--replicates", type=int, default=REPLICATES)
+    ap.add_argument("--provenance", default=PROVENANCE)
+    ap.add_argument("--agreement", metavar="BUILD_DIR")
+    ap.add_argument("--check-port", metavar="DEMCAL_AOR_OUT_DIR")
+    a = ap.parse_args()
+    log = lambda s: print(time.strftime("%H:%M:%S ") + s, file=sys.stderr, flush=True)  # noqa: E731
+    if a.check_port or a.agreement:
+        import liggghts_agreement
+        return liggghts_agreement.main(a, log)
+    for case in a.cases.split(","):
+        if case not in CASES:
+            sys.exit(f"--cases: unknown case '{case}' (known: {', '.join(CASES)})")
+        runs = simulate(case, a.replicates, log)
+        write_case(case, runs, a.replicates, a.provenance)
+        write_study(case)
+        log(f"{case}: written to {os.path.join(OUT, case)}")
+
+
+if __name__ == "__main__":
+    main()
