@@ -73,8 +73,13 @@ void TakeReady(const Message& m) {
 
 // A message that has no place at this point of the program.
 [[noreturn]] void Unexpected(const Message& m, const std::string& where) {
-  wire::Abort(Text("rank %llu got message %llu from rank %llu ", State().rank, m.tag, m.source) +
-              where + " (the ranks no longer run the same program)");
+  static const char* const kNames[] = {"?",    "ready", "task",     "result",
+                                       "batch end", "stop", "finished", "rendezvous"};
+  const char* name = m.tag >= 1 && m.tag <= wire::kRendezvous ? kNames[m.tag] : "?";
+  wire::Abort(Text("rank %llu got '", State().rank) + name +
+              Text("' from rank %llu ", m.source) + where +
+              " (the ranks no longer run the same program; run without mpirun to see a "
+              "rank's own error)");
 }
 
 double Seconds() {
@@ -128,7 +133,7 @@ void ManagerBatch(const Job& job, const Options& options) {
         job.load(static_cast<int>(t), results[t]);
         if (job.done) job.done(static_cast<int>(t));
       } else {
-        Unexpected(m, Text("in batch %llu", batch));
+        Unexpected(m, Text("in batch %llu", batch));  // e.g. a worker ended on an error
       }
     }
     // Hand the queue out to free slots, then copy overdue runs to free slots of other ranks.
@@ -214,7 +219,7 @@ void WorkerBatch(const Job& job, const Options& options) {
       join();
       StopHere(m);
     }
-    if (m.tag != wire::kTask && m.tag != wire::kBatchEnd) Unexpected(m, "expecting a task");
+    if (m.tag != wire::kTask && m.tag != wire::kBatchEnd) Unexpected(m, "while expecting a task");
     if (in.U64() != batch) Unexpected(m, Text("in batch %llu", batch));
     const uint64_t number = in.U64();  // the task, or the batch's task count
     if (m.tag == wire::kTask) {
@@ -291,7 +296,7 @@ void Rendezvous(uint64_t fingerprint) {
       TakeReady(m);
       continue;
     }
-    if (m.tag != wire::kRendezvous) Unexpected(m, "waiting for every rank");
+    if (m.tag != wire::kRendezvous) Unexpected(m, "while waiting for every rank");
     Reader in(m.bytes);
     if (in.U64() != id || in.U64() != fingerprint)
       wire::Abort(Text("rank %llu read other data than rank 0 (rendezvous %llu); every rank "
