@@ -32,7 +32,7 @@ constexpr demcal::apps::CommandFactory kCommands[] = {
 
 // The commands whose runs are farmed over the ranks of an MPI job (objectives/farm/farm.h); the
 // others would have every rank write the same outputs.
-bool Farmable(const std::string& name) { return name == "calibrate"; }
+bool Farmable(const std::string& name) { return name == "calibrate" || name == "diagnose"; }
 
 int RunCommandLine(int argc, char** argv) {
   using namespace demcal::apps;
@@ -92,9 +92,5 @@ int RunCommandLine(int argc, char** argv) {
 int main(int argc, char** argv) {
   // Under mpirun every rank runs the same command; only rank 0 speaks (farm.h).
   demcal::objectives::farm::Session session(&argc, &argv);
-  if (!demcal::objectives::farm::IsManager()) {
-    std::cout.rdbuf(nullptr);
-    std::cerr.rdbuf(nullptr);
-  }
   return session.Finish(RunCommandLine(argc, argv));
 }

@@ -251,6 +251,7 @@ Session::Session(int* argc, char*** argv) {
   JobState& s = State();
   s.active = wire::Init(argc, argv, &s.rank, &s.size);
   if (s.active && s.rank == 0) Books().workers.assign(s.size, Worker{});
+  if (s.active && s.rank != 0) wire::MuteOutput();  // they run the same program as rank 0
 }
 
 Session::~Session() {
