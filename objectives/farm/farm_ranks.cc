@@ -138,7 +138,8 @@ void ManagerBatch(const Job& job, const Options& options) {
     }
     // Hand the queue out to free slots, then copy overdue runs to free slots of other ranks.
     for (size_t r = 1; r < books.workers.size(); ++r)
-      for (Worker& w = books.workers[r]; w.ready == batch && w.busy < w.slots && next < job.count;) {
+      for (Worker& w = books.workers[r];
+           w.ready == batch && w.busy < w.slots && next < job.count;) {
         wire::Send(static_cast<int>(r), wire::kTask, Writer().U64(batch).U64(next).Take());
         running.push_back({next++, static_cast<int>(r), Seconds()});
         ++w.busy;

@@ -1,9 +1,9 @@
 // farm_selftest: the MPI farm (objectives/farm/farm.h) on tasks with known results and times, run
 // under `mpirun -np 3` by tests/objectives/farm/CMakeLists.txt.
 //   farm_selftest copy DIR: task 0 sleeps 4 s the first time it runs anywhere (a marker file in
-//     DIR named after the job, removed at the end), then 0.05 s; with a 0.5 s run-time limit the manager copies it to the other
-//     worker and ends the batch long before 4 s. Every rank must end both batches with every
-//     task's result; exit 0 when so.
+//     DIR named after the job, removed at the end), then 0.05 s; with a 0.5 s run-time limit
+//     the manager copies it to the other worker and ends the batch long before 4 s. Every rank
+//     must end both batches with every task's result; exit 0 when so.
 //   farm_selftest diverge: rank 2 derives other tasks; the job must abort with a message.
 #include <fcntl.h>
 #include <unistd.h>
