@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# `mpirun -np 3 demcal calibrate` gives the local run's results, and a killed manager resumes
-# from the journal with nothing lost or repeated (docs/scale.md). The smallest study: the BP
+# `mpirun -np 3 demcal calibrate` gives the local run's results, and a job whose manager or a
+# worker was killed resumes from the journal with nothing lost or repeated (docs/scale.md). The smallest study: the BP
 # rolling-friction heap at its quick fidelity, 2 replicates, 2 candidates (4 heaps).
 # Usage: mpi_calibrate_test.sh DEMCAL REPO_ROOT
 set -euo pipefail
@@ -62,33 +62,34 @@ same "$work/local" "$work/mpi"
 "$demcal" journal-stats "$work/mpi" | grep -q "^rank 2 on " || {
   echo "journal-stats: no runs of rank 2"; exit 1; }
 
-# The manager (rank 0) killed after the first heap is in the journal; the job ends (Open MPI
-# aborts it) and the same command resumes.
-"${mpi[@]}" "$demcal" calibrate "${args[@]}" --quiet --out "$work/killed" > "$work/killed.log" 2>&1 &
-launcher=$!
-manager=""
-for _ in $(seq 600); do
-  if [[ -z $manager ]]; then
-    for p in $(pgrep -P "$launcher" || true); do
-      tr '\0' '\n' < "/proc/$p/environ" 2>/dev/null | grep -qx OMPI_COMM_WORLD_RANK=0 && manager=$p
-    done
-  fi
-  lines=$(wc -l 2>/dev/null < "$work/killed/journal.jsonl" || echo 0)
-  [[ -n $manager && $lines -ge 2 ]] && break
-  sleep 0.1
-done
-[[ -n $manager ]] || { echo "rank 0 not found"; exit 1; }
-kill -9 "$manager"
-if wait "$launcher"; then echo "the job went on after its manager was killed"; exit 1; fi
-kept=$(($(wc -l < "$work/killed/journal.jsonl") - 1))
-echo "manager killed with $kept heap(s) in the journal"
-resume_rc=0
-"${mpi[@]}" "$demcal" calibrate "${args[@]}" --out "$work/killed" 2> "$work/resume.log" || resume_rc=$?
-[[ $resume_rc == "$local_rc" ]] || { echo "resumed run: exit code $resume_rc"; exit 1; }
-grep -q "resuming: $kept replicate runs" "$work/resume.log" || {
-  echo "the resumed run did not read the journal:"; cat "$work/resume.log"; exit 1; }
-# result.json's replicates_reused differs after a resume: compare the records and parameters.
-python3 - "$work/local" "$work/killed" <<'PY'
+# A rank killed (kill -9) once the first heap is in the journal: Open MPI ends the job, and the
+# same command resumes with every finished run read back and none repeated.
+kill_and_resume() {
+  local rank=$1 out=$work/killed_$1 victim="" launcher lines kept resume_rc=0
+  "${mpi[@]}" "$demcal" calibrate "${args[@]}" --quiet --out "$out" > "$out.log" 2>&1 &
+  launcher=$!
+  for _ in $(seq 600); do
+    if [[ -z $victim ]]; then
+      for p in $(pgrep -P "$launcher" || true); do
+        tr '\0' '\n' < "/proc/$p/environ" 2>/dev/null | grep -qx "OMPI_COMM_WORLD_RANK=$rank" &&
+          victim=$p
+      done
+    fi
+    lines=$(wc -l 2>/dev/null < "$out/journal.jsonl" || echo 0)
+    [[ -n $victim && $lines -ge 2 ]] && break
+    sleep 0.1
+  done
+  [[ -n $victim ]] || { echo "rank $rank not found"; exit 1; }
+  kill -9 "$victim"
+  if wait "$launcher"; then echo "the job went on after rank $rank was killed"; exit 1; fi
+  kept=$(($(wc -l < "$out/journal.jsonl") - 1))
+  echo "rank $rank killed with $kept heap(s) in the journal"
+  "${mpi[@]}" "$demcal" calibrate "${args[@]}" --out "$out" 2> "$out.resume.log" || resume_rc=$?
+  [[ $resume_rc == "$local_rc" ]] || { echo "resumed run: exit code $resume_rc"; exit 1; }
+  grep -q "resuming: $kept replicate runs" "$out.resume.log" || {
+    echo "the resumed run did not read the journal:"; cat "$out.resume.log"; exit 1; }
+  # result.json's replicates_reused differs after a resume: compare the records and parameters.
+  python3 - "$work/local" "$out" <<'PY'
 import json, sys
 a, b = sys.argv[1], sys.argv[2]
 rec = lambda d: sorted(json.dumps({k: v for k, v in json.loads(l).items() if k in
@@ -99,3 +100,6 @@ assert ra == rb, f"resumed journal differs from the local run's (lost or repeate
 assert open(f"{a}/calibrated_params.json").read() == open(f"{b}/calibrated_params.json").read()
 print(f"resumed: {len(rb)} journal records, none lost or repeated; calibrated_params.json same")
 PY
+}
+kill_and_resume 0  # the manager
+kill_and_resume 1  # a worker
