@@ -28,8 +28,12 @@ Command AddCalibrateCommand(CLI::App& parent) {
   app->add_option("--max-evaluations", options->max_evaluations,
                   "candidate budget (default: the study's optimiser.max_evaluations)")
       ->check(CliRange<int>(limits::kMaxEvaluations));
-  app->add_option("--threads", options->threads, "replicates run side by side on this many cores (0: all)")
+  app->add_option("--threads", options->threads, "replicates run side by side on this many cores (0: all; under mpirun: per rank, 0: 1)")
       ->check(CliRange<int>(limits::kThreads));
+  app->add_option("--run-time-limit-s", options->run_time_limit_s,
+                  "under mpirun: a run going longer is copied to another rank, the first result "
+                  "kept (0: 4 x the median run time)")
+      ->check(CLI::Range(0.0, 1e7));  // only this option reads it: not in the limits table
   app->add_flag("--quiet", options->quiet, "no progress lines on stderr");
   return {app, [options] { return RunCalibrate(*options, std::cerr); }};
 }

@@ -16,6 +16,7 @@
 #include "apps/reproduce_command.h"
 #include "apps/simulate_command.h"
 #include "core/version.h"
+#include "objectives/farm/farm.h"
 #include "outputs/exit_codes.h"
 
 namespace {
@@ -31,9 +32,11 @@ constexpr demcal::apps::CommandFactory kCommands[] = {
     &demcal::apps::AddExportCommand,
 };
 
-}  // namespace
+// The commands whose runs are farmed over the ranks of an MPI job (objectives/farm/farm.h); the
+// others would have every rank write the same outputs.
+bool Farmable(const std::string& name) { return name == "calibrate" || name == "diagnose"; }
 
-int main(int argc, char** argv) {
+int RunCommandLine(int argc, char** argv) {
   using namespace demcal::apps;
   using namespace demcal::workflow;
   CLI::App app{"demcal: discrete element simulation and calibration of powders"};
@@ -65,8 +68,15 @@ int main(int argc, char** argv) {
     return code == 0 ? kExitOk : kExitInvalidInput;
   }
   try {
-    for (const Command& c : commands)
-      if (c.app->parsed()) return c.run();
+    for (const Command& c : commands) {
+      if (!c.app->parsed()) continue;
+      if (demcal::objectives::farm::Farmed() && !Farmable(c.app->get_name())) {
+        std::cerr << "error: demcal " << c.app->get_name() << " does not farm its runs over MPI "
+                  << "ranks; run it without mpirun (--threads sets its cores)\n";
+        return kExitInvalidInput;
+      }
+      return c.run();
+    }
   } catch (const std::bad_alloc&) {
     // Input validation bounds what a scene may ask for; running out anyway is the machine's
     // limit, not a bug.
@@ -77,4 +87,12 @@ int main(int argc, char** argv) {
     return kExitInternalError;
   }
   return kExitInvalidInput;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // Under mpirun every rank runs the same command; only rank 0 speaks (farm.h).
+  demcal::objectives::farm::Session session(&argc, &argv);
+  return session.Finish(RunCommandLine(argc, argv));
 }

@@ -8,6 +8,7 @@
 #include "diagnose/effects/effect_registry.h"
 #include "diagnose/report/diagnosis_outputs.h"
 #include "files/measurement_table.h"
+#include "objectives/farm/farm.h"
 #include "outputs/exit_codes.h"
 #include "workflow/calibration/study_file.h"
 #include "outputs/output_lock.h"
@@ -64,7 +65,9 @@ int RunDiagnose(const DiagnoseCommandOptions& o, std::ostream& log) {
   if (!ChooseEffects(o.effects, &effects, &error) || !MakeEffectContext(study, o.species, &context, &error))
     return log << "error: " << error << "\n", kExitInvalidInput;
   OutputLock lock;
-  if (!LockOutputDirectory(o.out_dir, "demcal diagnose " + o.study_path, &lock, &error))
+  // Under mpirun rank 0 locks and writes; the other ranks run simulations (farm.h).
+  const bool writer = objectives::farm::IsManager();
+  if (writer && !LockOutputDirectory(o.out_dir, "demcal diagnose " + o.study_path, &lock, &error))
     return log << "error: --out: " << error << "\n", kExitInvalidInput;
   std::vector<CandidateEffect> candidates;
   for (const Effect* e : effects) candidates.push_back({e->Key(), e->Description(), e->Parameters(context)});
@@ -80,7 +83,7 @@ int RunDiagnose(const DiagnoseCommandOptions& o, std::ostream& log) {
         << candidates.size() << " candidate effects\n";
   const Diagnosis d = Diagnose(*model, model->Observations(), candidates, o.diagnose, progress);
   if (d.termination == DiagnosisTermination::kInvalid) return log << "error: " << d.message << "\n", kExitInvalidInput;
-  if (!WriteDiagnosisOutputs(o.out_dir, RunInfo(o, study, context, candidates, d, *model), d, &error))
+  if (writer && !WriteDiagnosisOutputs(o.out_dir, RunInfo(o, study, context, candidates, d, *model), d, &error))
     return log << "error: " << error << "\n", kExitOutputError;
   std::ostringstream times;
   for (const PhaseTime& p : d.phases) times << " " << p.phase << " " << p.simulations << " runs " << p.wall_time_s << " s;";

@@ -5,6 +5,7 @@ packages=(g++ cmake ninja-build pkg-config libeigen3-dev libtbb-dev libnlopt-cxx
           libcli11-dev catch2 nlohmann-json3-dev gnuplot-nox
           chromium  # chromium: headless browser test of the HTML reports (html_report.browser)
           liggghts  # liggghts: exported decks run in LIGGGHTS-PUBLIC 3.8 (export.liggghts_runs)
+          libopenmpi-dev openmpi-bin  # the MPI farm of demcal calibrate (DEMCAL_MPI, docs/scale.md)
           python3)  # python3: docs.links and the checkpoint corpus (tests/bad_inputs/ckpt_edit.py)
 # scripts/fuzz.sh and scripts/sanitize.sh: clang with libFuzzer and the sanitizer runtimes.
 if [[ "${1:-}" == "--fuzz" ]]; then packages+=(clang-14 libclang-rt-14-dev); fi

@@ -9,3 +9,8 @@ bash scripts/install_deps.sh
 bash scripts/build.sh
 filter=${1:-"[long]"}
 "${BUILD_DIR:-build}/tests/demcal_tests" "$filter" --durations yes
+# The MPI farm on a diagnosis (tests/objectives/farm/mpi_diagnose_test.sh), where mpirun exists
+# and no filter was given.
+if [[ -z ${1:-} ]] && command -v mpirun > /dev/null; then
+  bash tests/objectives/farm/mpi_diagnose_test.sh "${BUILD_DIR:-build}/apps/demcal" "$PWD"
+fi

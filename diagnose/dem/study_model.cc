@@ -8,6 +8,8 @@
 
 #include "calibrate/calibration.h"
 #include "calibrate/response_surface.h"
+#include "core/math/fnv1a.h"
+#include "objectives/farm/farm.h"
 
 namespace demcal::diagnose {
 namespace {
@@ -47,7 +49,7 @@ std::unique_ptr<StudyModel> StudyModel::Create(const workflow::StudyFile& study,
   m->pool_squares_.assign(study.targets.size(), 0.0);
   m->pool_dof_.assign(study.targets.size(), 0);
   std::error_code ec;
-  std::filesystem::create_directories(options.out_dir + "/journal", ec);
+  if (objectives::farm::IsManager()) std::filesystem::create_directories(options.out_dir + "/journal", ec);
   if (ec) return *error = "--out: cannot create '" + options.out_dir + "/journal': " + ec.message(), nullptr;
   return m;
 }
@@ -92,10 +94,15 @@ StudyModel::Setting* StudyModel::SettingFor(const std::vector<ActiveEffect>& eff
   const std::string path =
       options_.out_dir + (key.empty() ? "/journal/base.jsonl" : "/journal/" + Hex(key) + ".jsonl");
   s.journal = std::make_unique<calibrate::EvaluationJournal>();
-  if (!s.journal->Open(path, runs_.fingerprint + "|effects:" + key, error, study_.space.Size())) {
+  // The other ranks of an MPI farm read the journal; rank 0 appends once all have read it.
+  if (!s.journal->Open(path, runs_.fingerprint + "|effects:" + key, error, study_.space.Size(),
+                       !objectives::farm::IsManager())) {
     settings_.erase(key);
     return nullptr;
   }
+  core::Fnv1a64 loaded;
+  loaded.Text(path), loaded.Field(s.journal->LoadedRecords());
+  objectives::farm::Rendezvous(loaded.digest());
   s.evaluator = std::make_unique<calibrate::TargetEvaluator>(
       study_.space, std::move(groups), runs_.bindings,
       calibrate::TargetEvaluatorOptions{.replicates = replicates_, .seed = seed_, .workers = options_.threads},

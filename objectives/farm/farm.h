@@ -8,7 +8,7 @@
 // (a free slot takes the next index, so long and short runs mix), each worker runs its task and
 // sends back the result as bytes (Job::save), and at the end the manager sends every result to
 // every worker (Job::load), so all ranks leave the batch with the same state. Only the manager
-// writes files; the other ranks' stdout and stderr are muted (apps/main.cc). Each batch starts
+// writes files; the other ranks' stdout and stderr go to /dev/null (Session). Each batch starts
 // with a check that every rank derived the same tasks (Job::fingerprint); a rank that differs
 // aborts the job with a message rather than computing something else.
 //
@@ -43,6 +43,7 @@ const std::string& HostName();
 double UnixNow();
 
 // Joins the MPI job when the process was started by mpirun (in an MPI build); otherwise nothing.
+// On ranks other than 0, stdout and stderr then go to /dev/null (the farm's errors still show).
 class Session {
  public:
   Session(int* argc, char*** argv);

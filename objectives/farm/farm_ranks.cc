@@ -73,8 +73,13 @@ void TakeReady(const Message& m) {
 
 // A message that has no place at this point of the program.
 [[noreturn]] void Unexpected(const Message& m, const std::string& where) {
-  wire::Abort(Text("rank %llu got message %llu from rank %llu ", State().rank, m.tag, m.source) +
-              where + " (the ranks no longer run the same program)");
+  static const char* const kNames[] = {"?",    "ready", "task",     "result",
+                                       "batch end", "stop", "finished", "rendezvous"};
+  const char* name = m.tag >= 1 && m.tag <= wire::kRendezvous ? kNames[m.tag] : "?";
+  wire::Abort(Text("rank %llu got '", State().rank) + name +
+              Text("' from rank %llu ", m.source) + where +
+              " (the ranks no longer run the same program; run without mpirun to see a "
+              "rank's own error)");
 }
 
 double Seconds() {
@@ -128,12 +133,13 @@ void ManagerBatch(const Job& job, const Options& options) {
         job.load(static_cast<int>(t), results[t]);
         if (job.done) job.done(static_cast<int>(t));
       } else {
-        Unexpected(m, Text("in batch %llu", batch));
+        Unexpected(m, Text("in batch %llu", batch));  // e.g. a worker ended on an error
       }
     }
     // Hand the queue out to free slots, then copy overdue runs to free slots of other ranks.
     for (size_t r = 1; r < books.workers.size(); ++r)
-      for (Worker& w = books.workers[r]; w.ready == batch && w.busy < w.slots && next < job.count;) {
+      for (Worker& w = books.workers[r];
+           w.ready == batch && w.busy < w.slots && next < job.count;) {
         wire::Send(static_cast<int>(r), wire::kTask, Writer().U64(batch).U64(next).Take());
         running.push_back({next++, static_cast<int>(r), Seconds()});
         ++w.busy;
@@ -214,7 +220,7 @@ void WorkerBatch(const Job& job, const Options& options) {
       join();
       StopHere(m);
     }
-    if (m.tag != wire::kTask && m.tag != wire::kBatchEnd) Unexpected(m, "expecting a task");
+    if (m.tag != wire::kTask && m.tag != wire::kBatchEnd) Unexpected(m, "while expecting a task");
     if (in.U64() != batch) Unexpected(m, Text("in batch %llu", batch));
     const uint64_t number = in.U64();  // the task, or the batch's task count
     if (m.tag == wire::kTask) {
@@ -246,6 +252,7 @@ Session::Session(int* argc, char*** argv) {
   JobState& s = State();
   s.active = wire::Init(argc, argv, &s.rank, &s.size);
   if (s.active && s.rank == 0) Books().workers.assign(s.size, Worker{});
+  if (s.active && s.rank != 0) wire::MuteOutput();  // they run the same program as rank 0
 }
 
 Session::~Session() {
@@ -291,7 +298,7 @@ void Rendezvous(uint64_t fingerprint) {
       TakeReady(m);
       continue;
     }
-    if (m.tag != wire::kRendezvous) Unexpected(m, "waiting for every rank");
+    if (m.tag != wire::kRendezvous) Unexpected(m, "while waiting for every rank");
     Reader in(m.bytes);
     if (in.U64() != id || in.U64() != fingerprint)
       wire::Abort(Text("rank %llu read other data than rank 0 (rendezvous %llu); every rank "

@@ -1,5 +1,8 @@
 #include "objectives/farm/farm_wire.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -28,6 +31,31 @@ std::string Reader::Text() {
   std::string s = bytes_.substr(at_, n);
   at_ += n;
   return s;
+}
+
+namespace {
+
+int& MessageFd() {
+  static int fd = 2;  // stderr, or its copy once the rank is muted
+  return fd;
+}
+
+void PrintError(const std::string& message) {
+  ::dprintf(MessageFd(), "error: MPI farm: %s\n", message.c_str());
+}
+
+}  // namespace
+
+void MuteOutput() {
+  const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+  const int kept = ::dup(2);
+  if (null < 0 || kept < 0) return;
+  std::fflush(stdout);
+  std::fflush(stderr);
+  MessageFd() = kept;
+  ::dup2(null, 1);
+  ::dup2(null, 2);
+  ::close(null);
 }
 
 Message Wait(int from) {
@@ -114,8 +142,7 @@ bool Poll(int from, Message* message) {
 }
 
 void Abort(const std::string& message) {
-  std::fprintf(stderr, "error: MPI farm: %s\n", message.c_str());
-  std::fflush(stderr);
+  PrintError(message);
   MPI_Abort(MPI_COMM_WORLD, 1);
   std::abort();
 }
@@ -129,7 +156,7 @@ void Flush() {}
 void Drain() {}
 bool Poll(int, Message*) { return false; }
 void Abort(const std::string& message) {
-  std::fprintf(stderr, "error: MPI farm: %s\n", message.c_str());
+  PrintError(message);
   std::abort();
 }
 

@@ -70,6 +70,10 @@ bool Poll(int from, Message* message);
 // Waits for the next message, sleeping between polls (a waiting rank leaves its core to runs).
 Message Wait(int from);
 
+// Sends this process's stdout and stderr (std::cout, printf, the optimisers' logs) to /dev/null,
+// for the ranks other than 0, which run the same program; Abort still reaches the terminal.
+void MuteOutput();
+
 // Prints "error: MPI farm: <message>" and ends the whole job with exit code 1.
 [[noreturn]] void Abort(const std::string& message);
 

@@ -9,6 +9,8 @@
 #include "calibrate/evaluation_journal.h"
 #include "calibrate/parameter_covariance.h"
 #include "calibrate/response_surface.h"
+#include "core/math/fnv1a.h"
+#include "objectives/farm/farm.h"
 #include "workflow/calibration/calibration_outputs.h"
 #include "workflow/calibration/clump_count_table.h"
 #include "workflow/calibration/study_runs.h"
@@ -138,23 +140,35 @@ Outcome CalibrateInto(const StudyFile& st, const CalibrateSettings& o, int clump
     log << "error: " << error << "\n";
     return Failed(CalibrationStatus::kInvalidInput);
   }
+  namespace farm = objectives::farm;
   std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
+  if (farm::IsManager()) std::filesystem::create_directories(dir, ec);
   if (ec) {
     log << "error: --out: cannot create '" << dir << "': " << ec.message() << "\n";
     return Failed(CalibrationStatus::kOutputError);
   }
   calibrate::EvaluationJournal journal;
-  if (!journal.Open(dir + "/journal.jsonl", runs.fingerprint, &error, st.space.Size())) {
+  // The other ranks of a farm read the journal, never write it (rank 0 appends every result).
+  if (!journal.Open(dir + "/journal.jsonl", runs.fingerprint, &error, st.space.Size(),
+                    !farm::IsManager())) {
     log << "error: " << error << "\n";
     return Failed(CalibrationStatus::kInvalidInput);
+  }
+  {  // rank 0 appends only once every rank has read the same records
+    core::Fnv1a64 loaded;
+    loaded.Text(runs.fingerprint), loaded.Field(journal.LoadedRecords());
+    farm::Rendezvous(loaded.digest());
   }
   if (!o.quiet && journal.LoadedRecords() > 0)
     log << "calibrate: resuming: " << journal.LoadedRecords() << " replicate runs in " << journal.path() << "\n";
   const uint64_t seed = st.has_seed ? st.seed : st.experiment().seed;
   const int replicates = st.replicates > 0 ? st.replicates : st.experiment().replicates;
   calibrate::TargetEvaluator inner(st.space, runs.groups, runs.bindings,
-                                   {.replicates = replicates, .seed = seed, .workers = o.threads}, &journal);
+                                   {.replicates = replicates,
+                                    .seed = seed,
+                                    .workers = o.threads,
+                                    .run_time_limit_s = o.run_time_limit_s},
+                                   &journal);
   StudyEvaluator evaluator(&inner, st.targets.size());
   calibrate::CalibrationOptions options = st.options;
   if (o.max_evaluations > 0) options.optimiser_options.max_evaluations = o.max_evaluations;
@@ -173,7 +187,7 @@ Outcome CalibrateInto(const StudyFile& st, const CalibrateSettings& o, int clump
                           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                           clumps, &inner, CandidateGains(st, summary, evaluator)};
   if (!o.quiet) log << summary.BriefReport(st.space);
-  if (!WriteCalibrationOutputs(dir, info, summary, &error)) {
+  if (farm::IsManager() && !WriteCalibrationOutputs(dir, info, summary, &error)) {
     log << "error: " << error << "\n";
     return Failed(CalibrationStatus::kOutputError, summary);
   }
@@ -206,7 +220,7 @@ CalibrationResult RunClumpCountLoop(const StudyFile& st, const CalibrateSettings
   }
   const ClumpCountVerdict verdict = JudgeClumpCounts(rows);
   std::string error;
-  if (!WriteClumpCountOutputs(o.out_dir, st, rows, verdict, &error)) {
+  if (objectives::farm::IsManager() && !WriteClumpCountOutputs(o.out_dir, st, rows, verdict, &error)) {
     log << "error: " << error << "\n";
     return Failed(CalibrationStatus::kOutputError).result;
   }
@@ -227,7 +241,8 @@ CalibrationResult CalibrateStudy(const StudyFile& study, const CalibrateSettings
                                  std::ostream& log) {
   OutputLock lock;  // one process per output directory (this also creates it)
   std::string error;
-  if (!LockOutputDirectory(settings.out_dir, "demcal calibrate " + study.source, &lock, &error)) {
+  // Under mpirun the job is one process: rank 0 holds the lock (farm.h).
+  if (objectives::farm::IsManager() && !LockOutputDirectory(settings.out_dir, "demcal calibrate " + study.source, &lock, &error)) {
     log << "error: --out: " << error << "\n";
     CalibrationResult refused;
     refused.status = CalibrationStatus::kOutputUnavailable;
@@ -249,7 +264,8 @@ int RunCalibrate(const CalibrateOptions& options, std::ostream& log) {
                                    .quick = options.quick,
                                    .max_evaluations = options.max_evaluations,
                                    .threads = options.threads,
-                                   .quiet = options.quiet};
+                                   .quiet = options.quiet,
+                                   .run_time_limit_s = options.run_time_limit_s};
   return ExitCodeOf(CalibrateStudy(study, settings, log).status);
 }
 

@@ -34,8 +34,8 @@ void WriteJob(const demcal::testing::ScratchDir& dir) {
       << Record("a", 1, 100, 104, 100) << Record("a", 1, 104, 106, 100)
       << Record("a", 2, 100, 103, 100) << Record("a", 1, 110, 113, 108)
       << Record("a", 2, 110, 112, 108)
-      << R"({"parameters": [0.7], "replicate": 0, "seed": 1, "status": "ok", "value": 31.0, "wall_time_s": 2.5})"
-      << "\n";
+      << R"({"parameters": [0.7], "replicate": 0, "seed": 1, "status": "ok", "value": 31.0, )"
+      << R"("wall_time_s": 2.5})" << "\n";
   // Two runs side by side on one rank (--threads 2): busy 5 s of the span, 7 s of runs.
   std::ofstream(dir.str("journal/0123abcd.jsonl"))
       << kHeader << "\n" << Record("b", 0, 100, 105, 100) << Record("b", 0, 101, 103, 100);
