@@ -11,11 +11,11 @@
 //
 //   ExportRun run;
 //   if (!ExportRunOf(file, fidelity, &run, &error)) ...;
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "core/scene/scene.h"
 #include "experiments/common/experiment_file.h"
-#include "nlohmann/json.hpp"
 #include "objectives/common/fidelity.h"
 #include "objectives/common/settled_run.h"
 
