@@ -15,12 +15,15 @@
 #   LIGGGHTS_MU_R=     if set, overrides the deck's BP-BP coefficient (LIGGGHTS' convention), to
 #                      find the one that matches
 #   REPS=4  MAX_TIME_S=1.2  BUILD_DIR=build  WORK=(temp dir, kept)
+#   CHECK=0            1: exit 1 unless the two means agree within 3 combined standard errors
+#                      (the [long] test liggghts_heap_long_test.cc runs ROLLING=none CHECK=1)
 set -euo pipefail
 SCRIPT_DIR=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 REPO_ROOT=$(cd "$SCRIPT_DIR/.." && pwd)
 ROLLING=${ROLLING:-cdt}
 MU_R=${MU_R:-0.10}
 CONVERSION=${CONVERSION:-torque}
+CHECK=${CHECK:-0}
 LIGGGHTS_MU_R=${LIGGGHTS_MU_R:-}
 REPS=${REPS:-4}
 MAX_TIME_S=${MAX_TIME_S:-1.2}
@@ -82,3 +85,15 @@ echo "demcal angles: $(tr '\n' ' ' < "$WORK/demcal_angles.txt")"
 echo "liggghts angles: $(tr '\n' ' ' < "$WORK/liggghts_angles.txt")"
 echo "demcal angle (deg): $(stats < "$WORK/demcal_angles.txt")"
 echo "liggghts angle (deg): $(stats < "$WORK/liggghts_angles.txt")"
+if [[ "$CHECK" == 1 ]]; then
+  python3 - "$WORK/demcal_angles.txt" "$WORK/liggghts_angles.txt" <<'PY'
+import statistics as st, sys
+a, b = ([float(x) for x in open(p).read().split()] for p in sys.argv[1:])
+if len(a) < 2 or len(b) < 2:
+    sys.exit(f"too few angles: demcal {len(a)}, liggghts {len(b)}")
+sem = (st.variance(a) / len(a) + st.variance(b) / len(b)) ** 0.5
+diff = st.mean(b) - st.mean(a)
+print(f"difference (deg): {diff:.2f} +- {sem:.2f}; within 3 standard errors: {abs(diff) <= 3 * sem}")
+sys.exit(0 if abs(diff) <= 3 * sem else 1)
+PY
+fi

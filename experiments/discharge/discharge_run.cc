@@ -24,14 +24,6 @@ double SecondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// When the fill is complete: the end of the pour, or the collapse of a placed lattice (its top
-// falls by about a third of the fill height).
-double FillEndS(const core::Scene& model, const DischargeSettings& s) {
-  if (s.fill == DischargeSettings::Fill::kPour) return s.feed.EndS();
-  const double g = std::sqrt(Dot(model.gravity_m_s2, model.gravity_m_s2));
-  return std::sqrt(2 * FillTopM(model, s) / 3 / g);
-}
-
 core::Simulation::Observer Every(const core::Simulation& sim, double interval_s,
                                  std::function<bool(const core::Simulation&)> callback) {
   return {std::max<int64_t>(1, std::llround(interval_s / sim.timestep_s())), std::move(callback)};

@@ -165,4 +165,10 @@ double HopperBulkDensity(const core::Particles& p, const HopperGeometry& h, doub
   return volume > 0 ? mass / volume : 0;
 }
 
+double FillEndS(const core::Scene& model, const DischargeSettings& s) {
+  if (s.fill == DischargeSettings::Fill::kPour) return s.feed.EndS();
+  const double g = std::sqrt(Dot(model.gravity_m_s2, model.gravity_m_s2));
+  return std::sqrt(2 * FillTopM(model, s) / 3 / g);
+}
+
 }  // namespace demcal::objectives

@@ -32,6 +32,10 @@ std::vector<core::ParticleSpec> PlacedFill(const core::Scene& model,
 // Highest point a fill starts from: the top of the pour region, or of the placed lattice.
 double FillTopM(const core::Scene& model, const DischargeSettings& settings);
 
+// When the fill is complete: the end of the pour, or the collapse of a placed lattice (its top
+// falls by about a third of the fill height).
+double FillEndS(const core::Scene& model, const DischargeSettings& settings);
+
 // Grains of `component` in a placed fill: its mass over the species' mean grain mass.
 int64_t PlacedCount(const core::Scene& model, const Feed& feed, const FeedComponent& component);
 

@@ -5,9 +5,47 @@
 #include "calibrate/pair_property.h"
 #include "experiments/aor/aor_experiment.h"
 #include "experiments/aor/aor_section.h"
+#include "experiments/discharge/discharge_experiment.h"
+#include "experiments/discharge/discharge_section.h"
+#include "experiments/discharge/hopper_fill.h"
 #include "objectives/common/glued_base.h"
 
 namespace demcal::workflow {
+namespace {
+
+bool DischargeRunOf(const ExperimentFile& file, const core::Scene& model, ExportRun* out,
+                    std::string* error) {
+  objectives::DischargeSettings settings;
+  std::string why;
+  if (!ParseDischargeSection(file.section, file.source, model, &settings, error)) return false;
+  if (!settings.IsValid(model, &why)) {
+    *error = file.source + ": " + why;
+    return false;
+  }
+  out->scene = objectives::BuildDischargeScene(model, settings, file.seed);
+  for (core::Wall& w : out->scene.walls) {
+    if (w.name != "gate") continue;
+    w.velocity_m_s = {};  // taken away instead (see the header)
+    out->open_wall = w.name;
+  }
+  if (out->open_wall.empty()) {
+    *error = file.source + ": the discharge scene has no wall named 'gate'";
+    return false;
+  }
+  if (!out->scene.IsValid(&why)) {
+    *error = file.source + ": the discharge scene is invalid: " + why;
+    return false;
+  }
+  out->open_at_s = settings.gate_open_s;
+  out->settle = settings.gate_open_s <= 0;
+  out->settle_criteria = settings.settle;
+  out->settle_criteria.feed_end_s = objectives::FillEndS(model, settings);
+  out->after_open_max_s = settings.max_discharge_s;
+  out->empty_above_z_m = 0;  // the orifice plane
+  return true;
+}
+
+}  // namespace
 
 bool ExportRunOf(const ExperimentFile& file, const objectives::Fidelity& fidelity, ExportRun* out,
                  std::string* error) {
@@ -19,10 +57,11 @@ bool ExportRunOf(const ExperimentFile& file, const objectives::Fidelity& fidelit
   }
   core::Scene model = file.model;
   objectives::ApplyFidelity(fidelity, &model);
+  if (file.experiment == "discharge") return DischargeRunOf(file, model, out, error);
   if (file.experiment != "aor") {
-    *error = file.source + ": experiment '" + file.experiment + "' is not exported: its run is " +
-             "driven between steps (a gate opened once the fill settles, grains tracked) in " +
-             "ways a LIGGGHTS deck cannot say; aor is exported";
+    *error = file.source + ": experiment '" + file.experiment + "' is not exported: its " +
+             "outputs need grains tracked between steps, which a LIGGGHTS deck cannot say; aor " +
+             "and discharge are exported";
     return false;
   }
   objectives::AorSettings settings;

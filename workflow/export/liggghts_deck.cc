@@ -77,6 +77,54 @@ std::string StiffnessRange(const core::Scene& s) {
   return std::string(soft ? "soft_particles yes\n" : "") + (hard ? "hard_particles yes\n" : "");
 }
 
+// A loop of at most `max_runs` runs of `every` steps that ends early once `condition` holds:
+// LIGGGHTS' `if ... then "jump SELF <label>_done"` out of a `variable <label> loop`.
+void LoopUntil(const std::string& label, int64_t max_runs, int64_t every,
+               const std::string& condition, std::ostream& out) {
+  if (max_runs <= 0) return;
+  out << "variable " << label << " loop " << max_runs << "\nlabel " << label << "_next\nrun "
+      << std::max<int64_t>(1, every) << "\nif \"" << condition << "\" then \"jump SELF " << label
+      << "_done\"\nnext " << label << "\njump SELF " << label << "_next\nlabel " << label
+      << "_done\n";
+}
+
+// The runs: to a settled state or a set time or the scene's duration, then (with a wall to
+// take away) the opening and the run until nothing is left above the given height.
+bool RunSection(const ExportRun& run, const LiggghtsWallSet& walls, double dt, std::ostream& out,
+                std::string* error) {
+  std::multimap<double, std::string> events(walls.removals.begin(), walls.removals.end());
+  double now = 0;
+  const objectives::SettleCriteria& c = run.settle_criteria;
+  const int64_t check_steps = Steps(c.check_interval_s, dt);
+  if (run.settle) {
+    const double first = std::min(c.feed_end_s + c.min_settle_s, c.max_time_s);
+    out << "# settle: until the moving grains' specific kinetic energy is below "
+        << Num(c.specific_kinetic_J_kg) << " J/kg, checked every " << Num(c.check_interval_s)
+        << " s, or " << Num(c.max_time_s) << " s\n";
+    RunTo(&now, first, dt, &events, out);
+    LoopUntil("settle",
+              static_cast<int64_t>(std::ceil((c.max_time_s - first) / c.check_interval_s)),
+              check_steps, "${specific_ke} < " + Num(c.specific_kinetic_J_kg), out);
+  } else {
+    RunTo(&now, run.open_wall.empty() ? run.scene.time.duration_s : run.open_at_s, dt, &events,
+          out);
+  }
+  if (run.open_wall.empty()) return true;
+  std::string ids;
+  for (size_t k = 0; k < run.scene.walls.size(); ++k)
+    if (run.scene.walls[k].name == run.open_wall) ids = walls.fix_ids[k];
+  if (ids.empty()) {
+    *error = "no wall named '" + run.open_wall + "' to open";
+    return false;
+  }
+  out << "\n# open: wall '" << run.open_wall
+      << "' taken away; then until no grain is above z = " << Num(run.empty_above_z_m) << " m, or "
+      << Num(run.after_open_max_s) << " s\nunfix " << ids << "\n";
+  LoopUntil("discharge", static_cast<int64_t>(std::ceil(run.after_open_max_s / c.check_interval_s)),
+            check_steps, "${left} == 0", out);
+  return true;
+}
+
 }  // namespace
 
 bool LiggghtsDeck(const ExportRun& run, const ExportOptions& options,
@@ -123,41 +171,30 @@ bool LiggghtsDeck(const ExportRun& run, const ExportOptions& options,
   out << (particles.clumps ? "fix integrate flow multisphere allow_group_and_set yes\n"
                            : "fix integrate flow nve/sphere\n");
   const int64_t dump_every = std::max<int64_t>(1, Steps(options.dump_interval_s, dt));
-  const double check_s =
-      run.settle ? run.settle_criteria.check_interval_s : options.dump_interval_s;
+  const double check_s = run.settle || !run.open_wall.empty() ? run.settle_criteria.check_interval_s
+                                                              : options.dump_interval_s;
   out << "\n# outputs\ncompute ke flow ke\n"
       << "compute rke flow erotate/sphere\n"
       << "variable specific_ke equal (c_ke+c_rke)/(mass(flow)+1e-300)   # J/kg\n"
       << "variable time equal step*dt   # s\n"
-      << "thermo_style custom step v_time atoms v_specific_ke cpu\nthermo "
+      << (run.open_wall.empty()
+              ? std::string()
+              : "region above block INF INF INF INF " + Num(run.empty_above_z_m) +
+                    " INF units box\nvariable left equal count(flow,above)\n"
+                    "variable mass_above equal mass(flow,above)   # kg, the outflow's complement\n")
+      << "thermo_style custom step v_time atoms v_specific_ke"
+      << (run.open_wall.empty() ? "" : " v_mass_above") << " cpu\nthermo "
       << std::max<int64_t>(1, Steps(check_s, dt)) << "\nthermo_modify lost ignore norm no\n"
       << "dump particles all custom " << dump_every
       << " post/dump_*.liggghts id type x y z vx vy vz omegax omegay omegaz radius mass\n\n";
-  std::multimap<double, std::string> events(walls.removals.begin(), walls.removals.end());
-  double now = 0;
-  const objectives::SettleCriteria& c = run.settle_criteria;
-  int64_t max_checks = 0;
-  if (run.settle) {
-    const double first = std::min(c.feed_end_s + c.min_settle_s, c.max_time_s);
-    out << "# pour, then settle: until the moving grains' specific kinetic energy is below "
-        << Num(c.specific_kinetic_J_kg) << " J/kg, checked every " << Num(c.check_interval_s)
-        << " s, or " << Num(c.max_time_s) << " s\n";
-    RunTo(&now, first, dt, &events, out);
-    max_checks = static_cast<int64_t>(std::ceil((c.max_time_s - first) / c.check_interval_s));
-    if (max_checks > 0)
-      out << "variable check loop " << max_checks << "\nlabel settle\nrun "
-          << std::max<int64_t>(1, Steps(c.check_interval_s, dt)) << "\nif \"${specific_ke} < "
-          << Num(c.specific_kinetic_J_kg) << "\" then \"jump SELF settled\"\nnext check\n"
-          << "jump SELF settle\nlabel settled\n";
-  } else {
-    RunTo(&now, s.time.duration_s, dt, &events, out);
-  }
+  if (!RunSection(run, walls, dt, out, error)) return false;
   out << "write_dump all custom post/final.liggghts id type x y z vx vy vz radius mass\n"
       << "print \"demcal export: run finished\"\n";
   *deck = out.str();
   files->clear();
   if (!particles.data_file.empty()) files->emplace_back("particles.data", particles.data_file);
   for (const auto& f : walls.stl_files) files->push_back(f);
+  const objectives::SettleCriteria& c = run.settle_criteria;
   nlohmann::ordered_json j;
   j["timestep_s"] = dt;
   j["contact_law"] = law.model;
@@ -171,8 +208,14 @@ bool LiggghtsDeck(const ExportRun& run, const ExportOptions& options,
                    {"specific_kinetic_J_kg", c.specific_kinetic_J_kg},
                    {"check_interval_s", c.check_interval_s},
                    {"max_time_s", c.max_time_s}};
-  else
+  else if (run.open_wall.empty())
     j["duration_s"] = s.time.duration_s;
+  if (!run.open_wall.empty())
+    j["opening"] = {{"wall", run.open_wall},
+                    {"at_s", run.open_at_s > 0 ? nlohmann::ordered_json(run.open_at_s)
+                                               : nlohmann::ordered_json("settled")},
+                    {"max_after_s", run.after_open_max_s},
+                    {"until_none_above_z_m", run.empty_above_z_m}};
   j["dump_interval_s"] = dump_every * dt;
   *summary = j;
   return true;

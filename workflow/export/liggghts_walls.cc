@@ -82,6 +82,7 @@ bool LiggghtsWalls(const core::Scene& scene, const std::string& law, LiggghtsWal
                    std::string* error) {
   *out = {};
   std::ostringstream cmd;
+  std::vector<std::string> meshes;
   const char* axis_name = "xyz";
   for (size_t k = 0; k < scene.walls.size(); ++k) {
     const core::Wall& w = scene.walls[k];
@@ -136,11 +137,22 @@ bool LiggghtsWalls(const core::Scene& scene, const std::string& law, LiggghtsWal
     if (!stl.empty()) {
       const std::string path = "meshes/" + FileStem(w, k) + ".stl";
       out->stl_files.emplace_back(path, stl);
-      cmd << "fix " << id << "_mesh all mesh/surface file " << path << " type " << type << "\n"
-          << head << " mesh n_meshes 1 meshes " << id << "_mesh\n";
+      cmd << "fix " << id << "_mesh all mesh/surface file " << path << " type " << type << "\n";
+      meshes.push_back(id + "_mesh");
+      if (std::isfinite(w.remove_at_s)) {
+        // LIGGGHTS touches every mesh through one fix wall/gran, which cannot drop one mesh.
+        *error = WallName(w, k) + ": a mesh wall taken away during the run is not exported";
+        return false;
+      }
     }
-    if (std::isfinite(w.remove_at_s))
-      out->removals.emplace_back(w.remove_at_s, stl.empty() ? id : id + " " + id + "_mesh");
+    out->fix_ids.push_back(stl.empty() ? id : id + "_mesh");
+    if (std::isfinite(w.remove_at_s)) out->removals.emplace_back(w.remove_at_s, id);
+  }
+  // LIGGGHTS allows one fix wall/gran of type mesh, holding every mesh.
+  if (!meshes.empty()) {
+    cmd << "fix meshes all wall/gran " << law << " mesh n_meshes " << meshes.size() << " meshes";
+    for (const std::string& m : meshes) cmd << " " << m;
+    cmd << "\n";
   }
   out->commands = cmd.str();
   return true;

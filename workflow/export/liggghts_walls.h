@@ -5,10 +5,12 @@
 //  c2`;
 //  - anything else (a finite cylinder, a cone frustum such as a funnel, a triangle mesh): an ASCII
 //    STL file meshes/<wall>.stl (cylinders and cones cut into kMeshSegments facets around) read
-//    by `fix mesh/surface` and touched through `fix wall/gran ... mesh`.
+//    by `fix mesh/surface`; all of them touched through one `fix meshes ... wall/gran ... mesh`
+//    (LIGGGHTS allows one mesh wall fix).
 // Type T = demcal material index + 1. LIGGGHTS' primitive walls and meshes are two-sided.
 // A wall removed at a time (a plug) gets an `unfix` there (LiggghtsWallSet::removals).
-// Refused (false with *error naming the wall): moving walls, oblique planes.
+// Refused (false with *error naming the wall): moving walls, oblique planes, a mesh wall taken
+// away during the run.
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,6 +26,7 @@ struct LiggghtsWallSet {
   std::vector<std::pair<std::string, std::string>> stl_files;  // (relative path, contents)
   std::vector<std::pair<double, std::string>> removals;        // (time s, fix ids to unfix)
   std::vector<int> materials;                                  // the walls' materials (indices)
+  std::vector<std::string> fix_ids;  // per wall: its fix ("w3"; a mesh: its mesh/surface fix)
 };
 
 // `law` is the granular model string (LiggghtsLaw::model).

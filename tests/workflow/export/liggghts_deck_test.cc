@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -121,13 +122,31 @@ TEST_CASE("export: cdt without the torque option and JKR are refused, naming the
   CHECK_THAT(e.deck, Catch::Contains("cohesionEnergyDensity"));
 }
 
-TEST_CASE("export: discharge and segregation are refused with the reason", "[unit][export]") {
-  ExperimentFile file = AorBp();
-  file.experiment = "discharge";
-  ExportRun run;
+TEST_CASE("export: the discharge deck fills, opens the gate, runs until the hopper is empty",
+          "[unit][export]") {
+  ExperimentFile file;
   std::string error;
+  REQUIRE(LoadExperimentFile((testing::RepoRoot() / "examples/discharge_bp.json").string(), &file,
+                             &error));
+  const Exported e = Export(file, TorqueConversion());
+  REQUIRE(e.ok);
+  // The funnel's cone and cylinder as STL meshes behind one wall fix; the gate a primitive.
+  REQUIRE(e.files.size() >= 2);
+  CHECK_THAT(e.deck, Catch::Contains("mesh/surface file meshes/wall1_hopper_cone.stl"));
+  CHECK_THAT(e.deck, Catch::Contains("fix meshes all wall/gran ") &&
+                         Catch::Contains(" mesh n_meshes 2 meshes w1_mesh w2_mesh\n"));
+  const size_t settled = e.deck.find("label settle_done\n");
+  const size_t open = e.deck.find("unfix w3\n");
+  REQUIRE(settled != std::string::npos);
+  REQUIRE(open != std::string::npos);
+  CHECK(settled < open);
+  CHECK_THAT(e.deck, Catch::Contains("if \"${left} == 0\" then \"jump SELF discharge_done\""));
+  CHECK(e.summary["opening"]["wall"] == "gate");
+  // Segregation is not exported, and says why.
+  file.experiment = "segregation";
+  ExportRun run;
   CHECK_FALSE(ExportRunOf(file, file.quick_fidelity, &run, &error));
-  CHECK_THAT(error, Catch::Contains("'discharge' is not exported"));
+  CHECK_THAT(error, Catch::Contains("'segregation' is not exported"));
 }
 
 TEST_CASE("export: walls as primitives or STL meshes; moving walls refused", "[unit][export]") {
@@ -139,7 +158,7 @@ TEST_CASE("export: walls as primitives or STL meshes; moving walls refused", "[u
       core::Wall("funnel", 0,
                  core::ConeFrustumSurface{
                      .height0_m = 0, .radius0_m = 0.005, .height1_m = 0.05, .radius1_m = 0.03}));
-  s.walls.back().remove_at_s = 0.5;
+  s.walls.front().remove_at_s = 0.5;
   LiggghtsWallSet w;
   std::string error;
   REQUIRE(LiggghtsWalls(s, "model hertz", &w, &error));
@@ -148,8 +167,9 @@ TEST_CASE("export: walls as primitives or STL meshes; moving walls refused", "[u
                  "fix w1 all wall/gran model hertz primitive type 1 zcylinder 0.05 0.1 0.2\n"));
   CHECK_THAT(w.commands,
              Catch::Contains("fix w2_mesh all mesh/surface file meshes/wall2_funnel.stl type 1\n"));
-  CHECK_THAT(w.commands,
-             Catch::Contains("fix w2 all wall/gran model hertz mesh n_meshes 1 meshes w2_mesh\n"));
+  CHECK_THAT(
+      w.commands,
+      Catch::Contains("fix meshes all wall/gran model hertz mesh n_meshes 1 meshes w2_mesh\n"));
   REQUIRE(w.stl_files.size() == 1);
   // Two facets per segment around; every vertex on the cone (r = 0.005 + 0.5 h).
   size_t facets = 0, pos = 0;
@@ -166,7 +186,12 @@ TEST_CASE("export: walls as primitives or STL meshes; moving walls refused", "[u
   }
   REQUIRE(w.removals.size() == 1);
   CHECK(w.removals[0].first == 0.5);
-  CHECK(w.removals[0].second == "w2 w2_mesh");
+  CHECK(w.removals[0].second == "w1");
+  // One fix wall/gran holds every mesh in LIGGGHTS: a mesh cannot be taken away alone.
+  s.walls.back().remove_at_s = 0.5;
+  CHECK_FALSE(LiggghtsWalls(s, "model hertz", &w, &error));
+  CHECK_THAT(error, Catch::Contains("wall 'funnel'") && Catch::Contains("mesh wall taken away"));
+  s.walls.back().remove_at_s = std::numeric_limits<double>::infinity();
   s.walls[0].velocity_m_s = {0, 0, 0.01};
   CHECK_FALSE(LiggghtsWalls(s, "model hertz", &w, &error));
   CHECK_THAT(error, Catch::Contains("wall 'silo'") && Catch::Contains("moving"));
