@@ -44,8 +44,11 @@ BUILD_DIR=${BUILD_DIR:-build}
 DEMCAL_BIN=$BUILD_DIR/bench/demcal_bench
 KEEP_WORK=${KEEP_WORK:-0}
 BENCH_NICE=${BENCH_NICE:-}
+# shellcheck disable=SC2034  # read by lib_compare.sh
 NOISE_MAX=100   # report the other load, never wait for an idle machine (lib_compare.sh)
+# shellcheck disable=SC2034
 IDLE_WAIT=0
+# shellcheck disable=SC2034
 MAX_RETRY=0
 
 # shellcheck source=bench/lib_compare.sh

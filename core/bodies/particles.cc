@@ -1,5 +1,8 @@
 #include "core/bodies/particles.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <numbers>
 
 namespace demcal::core {
@@ -28,7 +31,9 @@ namespace {
 template <typename T>
 void ApplyOrder(std::vector<T>& v, const std::vector<uint32_t>& order) {
   std::vector<T> out(order.size());
-  for (size_t k = 0; k < order.size(); ++k) out[k] = v[order[k]];
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, order.size(), 4096), [&](const auto& range) {
+    for (size_t k = range.begin(); k != range.end(); ++k) out[k] = v[order[k]];
+  });
   v.swap(out);
 }
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -177,9 +178,14 @@ void ContactForces::PlanChunks(const NeighbourList& list) {
     return;
   }
   chunks_.Plan(list, chunks);
-  uint32_t longest_row = 0;
-  for (size_t i = 0; i < list.FirstFixed(); ++i)
-    longest_row = std::max(longest_row, list.RowEnd(i) - list.RowBegin(i));
+  const uint32_t longest_row = tbb::parallel_reduce(
+      tbb::blocked_range<size_t>(0, list.FirstFixed()), uint32_t{0},
+      [&](const auto& range, uint32_t longest) {
+        for (size_t i = range.begin(); i != range.end(); ++i)
+          longest = std::max(longest, list.RowEnd(i) - list.RowBegin(i));
+        return longest;
+      },
+      [](uint32_t a, uint32_t b) { return std::max(a, b); });
   row_scratch_.resize(chunks);
   for (RowScratch& s : row_scratch_) {
     s.touching.resize(longest_row + 1);

@@ -1,10 +1,12 @@
 #include "core/neighbours/neighbour_list.h"
 
+#include "core/neighbours/bucket_index.h"
 #include "core/neighbours/neighbour_list_search.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <cmath>
@@ -17,10 +19,26 @@ NeighbourList::Grid NeighbourList::MakeGrid(const Settings& s, const std::vector
   // The grid spans the moving particles' bounding box (within the domain), so a few particles
   // in a large domain, or a stream over a wide frozen base, do not pay for millions of empty
   // cells. Fixed spheres more than a cut-off outside that box can be no one's partner.
-  Vec3 lo = s.domain_max_m, hi = s.domain_min_m;
-  for (size_t i = 0; i < moving; ++i)
-    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], x[i][a]), hi[a] = std::max(hi[a], x[i][a]);
-  return MakeGrid(s, lo, hi, moving < x.size());
+  // Minima and maxima are exact in any order: the parallel reduction gives the serial box.
+  using Box = std::pair<Vec3, Vec3>;
+  const Box box = tbb::parallel_reduce(
+      tbb::blocked_range<size_t>(0, moving), Box{s.domain_max_m, s.domain_min_m},
+      [&](const auto& range, Box b) {
+        for (size_t i = range.begin(); i != range.end(); ++i)
+          for (int a = 0; a < 3; ++a) {
+            b.first[a] = std::min(b.first[a], x[i][a]);
+            b.second[a] = std::max(b.second[a], x[i][a]);
+          }
+        return b;
+      },
+      [](Box a, const Box& b) {
+        for (int k = 0; k < 3; ++k) {
+          a.first[k] = std::min(a.first[k], b.first[k]);
+          a.second[k] = std::max(a.second[k], b.second[k]);
+        }
+        return a;
+      });
+  return MakeGrid(s, box.first, box.second, moving < x.size());
 }
 
 NeighbourList::Grid NeighbourList::MakeGrid(const Settings& s, Vec3 lo, Vec3 hi,
@@ -62,13 +80,7 @@ void NeighbourList::BinParticles(const Grid& grid, const std::vector<Vec3>& x, s
     for (size_t i = range.begin(); i != range.end(); ++i)
       cell_of_particle_[i] = i < moving || within_reach(x[i]) ? grid.CellOf(x[i]) : -1;
   });
-  cell_start_.assign(cells + 1, 0);
-  for (size_t i = 0; i < n; ++i) cell_start_[cell_of_particle_[i] + 1] += cell_of_particle_[i] >= 0;
-  for (size_t c = 0; c < cells; ++c) cell_start_[c + 1] += cell_start_[c];
-  cell_particles_.resize(cell_start_[cells]);
-  std::vector<uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
-  for (size_t i = 0; i < n; ++i)
-    if (cell_of_particle_[i] >= 0) cell_particles_[fill[cell_of_particle_[i]]++] = i;
+  BucketIndex(cell_of_particle_, cells, cell_start_, cell_particles_);
 }
 
 bool NeighbourList::SearchOnce(const Grid& grid, const Settings& s, const std::vector<Vec3>& x,
@@ -150,12 +162,7 @@ void NeighbourList::Build(const Settings& s, const std::vector<Vec3>& x,
 void NeighbourList::Finish(const Settings& s) {
   const size_t n = row_start_.size() - 1;
   // Reverse index: for each j, the entries (in ascending order) whose partner is j.
-  reverse_start_.assign(n + 1, 0);
-  for (uint32_t j : partner_) ++reverse_start_[j + 1];
-  for (size_t j = 0; j < n; ++j) reverse_start_[j + 1] += reverse_start_[j];
-  reverse_entry_.resize(partner_.size());
-  std::vector<uint32_t> fill(reverse_start_.begin(), reverse_start_.end() - 1);
-  for (uint32_t k = 0; k < partner_.size(); ++k) reverse_entry_[fill[partner_[k]]++] = k;
+  BucketIndex(partner_, n, reverse_start_, reverse_entry_);
   half_skin2_ = 0.25 * s.skin_m * s.skin_m;
   ++builds_;
 }
@@ -197,10 +204,16 @@ std::vector<uint32_t> NeighbourList::CellOrder(const Settings& s,
                                                const std::vector<Vec3>& x) const {
   const Grid grid = MakeGrid(s, x, x.size());
   std::vector<std::pair<int, uint32_t>> keyed(x.size());
-  for (uint32_t i = 0; i < x.size(); ++i) keyed[i] = {grid.CellOf(x[i]), i};
-  std::sort(keyed.begin(), keyed.end());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, x.size()), [&](const auto& range) {
+    for (size_t i = range.begin(); i != range.end(); ++i)
+      keyed[i] = {grid.CellOf(x[i]), static_cast<uint32_t>(i)};
+  });
+  // The keys are unique (slot i), so any sort gives the one order: parallel where it can be.
+  tbb::parallel_sort(keyed.begin(), keyed.end());
   std::vector<uint32_t> order(x.size());
-  for (size_t k = 0; k < x.size(); ++k) order[k] = keyed[k].second;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, x.size()), [&](const auto& range) {
+    for (size_t k = range.begin(); k != range.end(); ++k) order[k] = keyed[k].second;
+  });
   return order;
 }
 

@@ -260,14 +260,15 @@ void Simulation::ComputeForces(double time_s) {
                   scene_.gravity_m_s2, dt_);
 }
 
-void Simulation::Step() {
+void Simulation::Step(bool defer_kick) {
   auto last = std::chrono::steady_clock::now();
   auto lap = [&](double& phase_s) {
     const auto now = std::chrono::steady_clock::now();
     phase_s += std::chrono::duration<double>(now - last).count();
     last = now;
   };
-  system_.KickDrift(dt_, list_.FirstFixed());
+  system_.KickDrift(dt_, list_.FirstFixed(), kick_pending_);
+  kick_pending_ = false;
   if (list_settings_.periodic.Any()) system_.WrapPeriodic(list_settings_.periodic);
   lap(phases_.integrate_s);
   const double t = time_s_ + dt_;  // the time of the drifted positions
@@ -291,7 +292,8 @@ void Simulation::Step() {
   ComputeForces(t);
   AddWallWork(t);
   lap(phases_.forces_s);
-  system_.ReduceAndKick(scene_.gravity_m_s2, dt_, list_.FirstFixed());
+  system_.ReduceAndKick(scene_.gravity_m_s2, dt_, list_.FirstFixed(), defer_kick);
+  kick_pending_ = defer_kick;
   lap(phases_.integrate_s);
   time_s_ += dt_;
   ++steps_;
@@ -316,14 +318,17 @@ RunSummary Simulation::Run(double duration_s, const Observer& observer) {
   s.message = "completed";
   arena_->execute([&] {
     for (int64_t k = 0; k < n_steps; ++k) {
-      Step();
+      const bool last = k + 1 == n_steps;
+      const bool check_due = (k + 1) % options_.check_every_steps == 0 || last;
+      const bool observer_due = observer.callback && observer.every_steps > 0 &&
+                                (steps_ + 1) % observer.every_steps == 0;
+      Step(/*defer_kick=*/!check_due && !observer_due);
       const auto checks_start = std::chrono::steady_clock::now();
       const auto add_check_time = [&] {
         phases_.checks_s += std::chrono::duration<double>(std::chrono::steady_clock::now() -
                                                           checks_start).count();
       };
-      const bool last = k + 1 == n_steps;
-      if ((k + 1) % options_.check_every_steps == 0 || last) {
+      if (check_due) {
         s.termination = Check(&s.message);
         if (s.termination == Termination::kOk && scene_.max_wall_time_s > 0 &&
             elapsed() > scene_.max_wall_time_s) {

@@ -119,7 +119,10 @@ class Simulation {
   void CreateFactories();
   // Runs the factories due now; true if particles were added.
   bool InsertFromFactories();
-  void Step();
+  // One step. `defer_kick`: leave the free spheres' second half kick to the next step's first
+  // pass (ParticleSystem::ReduceAndKick); only when that step follows with nothing in between
+  // that reads velocities (no check, observer or end of Run).
+  void Step(bool defer_kick);
   // Translates the moving walls to where they are at time t.
   void PlaceWalls(double time_s);
   // Adds the work the moving walls did on the particles this step to the energy budget.
@@ -167,6 +170,7 @@ class Simulation {
   double dt_ = 0;
   double time_s_ = 0;
   int64_t steps_ = 0;
+  bool kick_pending_ = false;  // the last Step deferred its spheres' second half kick
   uint64_t rebuilds_since_reorder_ = 0;
   PhaseTimes phases_;
   double energy_budget_J_ = 0;   // initial KE + PE (+ inserted energy)
