@@ -32,6 +32,7 @@ struct Observation {
   double simulated = 0;
   double sem = 0;    // simulation standard error of the mean, >= 0
   double floor = 0;  // model-discrepancy noise floor, >= 0
+  double scatter = 0;  // the simulation's single-run scatter (the floors' unit), >= 0
 
   double Sigma() const { return std::sqrt(uncertainty * uncertainty + sem * sem + floor * floor); }
   double Residual() const { return (simulated - measured) / Sigma(); }

@@ -23,11 +23,13 @@ Eigen::VectorXd ToVector(const std::vector<double>& v) { return Eigen::Map<const
 struct Frame {
   const std::vector<Observation>* observations;
   Eigen::VectorXd sigma, r0;
+  Eigen::VectorXd q;  // single-run scatter per sigma (the estimated floor's shape)
   Eigen::MatrixXd J;
   std::vector<double> delta_lower, delta_upper;
   int fitted = 0;
   double chi2_base = 0;
   double significance = 0.01;
+  double per_candidate = 0.01;  // significance over the candidates of the step (Bonferroni)
   int n() const { return static_cast<int>(r0.size()); }
 };
 
@@ -35,6 +37,7 @@ Frame MakeFrame(const std::vector<Observation>& observations, const FitState& fi
   Frame f{&observations};
   const std::vector<Observation> at = WithPrediction(observations, fit.prediction, o.discrepancy_floor);
   f.sigma = Sigmas(at);
+  f.q = ScatterPerSigma(at);
   f.r0 = StandardisedResiduals(observations, fit.prediction.mean, f.sigma);
   f.J = f.sigma.cwiseInverse().asDiagonal() * fit.jacobian;
   const std::vector<double> c = fit.Coordinates();
@@ -67,15 +70,19 @@ LinearRefitResult Refit(const Frame& f, const EffectParameter& p, const Eigen::V
   return LinearRefit(f.r0, f.J, S, {p.lower}, {p.upper}, f.delta_lower, f.delta_upper);
 }
 
-void Fill(const Frame& f, const Work& w, const std::vector<CandidateEffect>& candidates, RankingEntry* e) {
+// The evidence with the discrepancy floor in the variance (evidence.h), at the significance
+// over the step's candidates: the step names at most one of K, so each is held to α/K and a
+// model that fits names none with probability ≥ 1 − α (Bonferroni).
+void Fill(const Frame& f, const Work& w, const std::vector<CandidateEffect>& candidates, const Eigen::VectorXd& r,
+          RankingEntry* e) {
   const int k = static_cast<int>(candidates[w.candidate].parameters.size());
   e->candidate = w.candidate;
   e->key = candidates[w.candidate].key;
   e->chi2_linear = w.refit.chi2;
-  e->linear = EvidenceOf(f.chi2_base, w.refit.chi2, k, f.n(), f.significance);
+  e->linear = EvidenceWithFloor(f.r0, w.refit.residuals, f.q, k, f.fitted, f.per_candidate);
   e->simulated = w.simulated;
   e->chi2 = w.simulated ? w.best_chi2 : w.refit.chi2;
-  e->evidence = EvidenceOf(f.chi2_base, e->chi2, k, f.n(), f.significance);
+  e->evidence = EvidenceWithFloor(f.r0, r, f.q, k, f.fitted, f.per_candidate);
   e->chi2_per_dof = e->chi2 / std::max(1, f.n() - f.fitted - k);
   e->signature_match = SignatureMatch(f.r0, f.J, f.sigma.cwiseInverse().cwiseProduct(w.signature));
   if (w.best_point.effects.empty()) e->values = {w.refit.t(0)};
@@ -111,11 +118,11 @@ void SimulateRefits(ForwardModel& model, const Frame& f, const FitState& fit,
 // Entry i of the step and its residuals at the refit (simulated when there is one).
 void Record(const Frame& f, const Work& w, const std::vector<CandidateEffect>& candidates, int i, DiagnosisStep* step) {
   RankingEntry& e = step->entries[i];
-  Fill(f, w, candidates, &e);
-  if (!w.probe_ok) e.note = "signature run failed: " + w.probe_status;
-  else if (e.signature_match == 0) e.note = "redundant with the fitted parameters";
   const Eigen::VectorXd r = w.simulated ? StandardisedResiduals(*f.observations, w.best_prediction.mean, f.sigma)
                                         : w.refit.residuals;
+  Fill(f, w, candidates, r, &e);
+  if (!w.probe_ok) e.note = "signature run failed: " + w.probe_status;
+  else if (e.signature_match == 0) e.note = "redundant with the fitted parameters";
   step->refit_residuals[i].assign(r.data(), r.data() + r.size());
 }
 
@@ -241,7 +248,8 @@ StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>
                              const std::vector<CandidateEffect>& candidates, const std::vector<int>& remaining,
                              const FitState& fit, const DiagnoseOptions& options, const DiagnoseProgress& progress) {
   StepOutcome out;
-  const Frame f = MakeFrame(observations, fit, options);
+  Frame f = MakeFrame(observations, fit, options);
+  f.per_candidate = options.significance / std::max<size_t>(1, remaining.size());
   const int sims0 = model.SimulationsRun();
   auto start = Clock::now();
   std::vector<ModelPoint> probes;

@@ -6,6 +6,7 @@
 #include "diagnose/loop/base_fit.h"
 #include "diagnose/loop/candidate_step.h"
 #include "diagnose/loop/fit_state.h"
+#include "diagnose/ranking/discrepancy_floor.h"
 #include "objectives/common/input_limits.h"
 
 namespace demcal::diagnose {
@@ -55,6 +56,20 @@ FitState StartingFit(const BaseCalibration& base, int observations) {
   return fit;
 }
 
+// The discrepancy floor the residuals of a fit with `fitted` parameters carry (discrepancy_floor.h).
+double EstimatedFloor(const std::vector<Observation>& at, int fitted) {
+  const std::vector<double> r = Residuals(at);
+  return EstimateFloor(Eigen::Map<const Eigen::VectorXd>(r.data(), r.size()), ScatterPerSigma(at),
+                       static_cast<int>(at.size()) - fitted);
+}
+
+std::string FloorText(double phi) {
+  std::ostringstream s;
+  s.precision(3);
+  s << phi;
+  return s.str();
+}
+
 std::string Names(const std::vector<int>& named, const std::vector<CandidateEffect>& candidates) {
   std::string s;
   for (int c : named) s += (s.empty() ? "" : " + ") + candidates[c].key;
@@ -79,6 +94,7 @@ void Finish(const std::vector<Observation>& observations, const FitState& fit, c
   d->fitted_parameters_after = fit.Fitted();
   d->after = WithPrediction(observations, fit.prediction, options.discrepancy_floor);
   d->gap_after = TestGap(d->after, fit.Fitted(), {options.significance});
+  d->floor_after = EstimatedFloor(d->after, fit.Fitted());
   std::ostringstream m;
   if (!d->base_identifiability.Identifiable() && !d->base_identifiability.singular_values.empty()) {
     m << "the data do not determine the base parameters (";
@@ -97,7 +113,10 @@ void Finish(const std::vector<Observation>& observations, const FitState& fit, c
     m << "added " << Signed(fit.point, candidates) << " but a gap remains (" << d->gap_after.summary
       << "), not explained by the library";
   } else {
-    m << "gap remains, not explained by the library: " << d->gap_before.summary;
+    m << "model-form offset: the base model misses the data by a discrepancy floor of "
+      << FloorText(d->floor_before) << " single-run scatter(s) beyond the fixed "
+      << options.discrepancy_floor << ", and no effect of the library explains more than that floor "
+      << "allows (gap not explained by the library: " << d->gap_before.summary << ")";
   }
   d->message = m.str();
 }
@@ -131,10 +150,11 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
   FitState fit = StartingFit(d.base, static_cast<int>(observations.size()));
   d.before = WithPrediction(observations, fit.prediction, options.discrepancy_floor);
   d.gap_before = TestGap(d.before, fit.Fitted(), {options.significance});
+  d.floor_before = EstimatedFloor(d.before, fit.Fitted());
   if (progress) progress("base model: " + d.gap_before.summary);
   bool gap = d.gap_before.gap_detected;
   d.termination =
-      gap ? DiagnosisTermination::kGapUnexplained : DiagnosisTermination::kNoMissingEffect;
+      gap ? DiagnosisTermination::kModelFormOffset : DiagnosisTermination::kNoMissingEffect;
   if (gap && !d.base.settled) {  // an unsettled base leaves a gap its own calibration would close
     d.termination = DiagnosisTermination::kBaseUnsettled;
     gap = false;
@@ -151,7 +171,7 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
     d.steps.push_back(s.step);
     if (progress) progress("ranking: " + s.step.ranking.message);
     if (!s.has_winner) {
-      d.termination = d.named.empty() ? DiagnosisTermination::kGapUnexplained
+      d.termination = d.named.empty() ? DiagnosisTermination::kModelFormOffset
                                       : DiagnosisTermination::kGapRemains;
       break;
     }

@@ -40,7 +40,7 @@ namespace demcal::diagnose {
 // Allowed ranges: objectives/common/input_limits.h (kSignificance, kDiscrepancyFloor, ...).
 struct DiagnoseOptions {
   double significance = 0.01;    // the gap test's and the evidence's level
-  double discrepancy_floor = 1;  // model-discrepancy floor, in single-run scatters
+  double discrepancy_floor = 1;  // the fixed part of the floor, in single-run scatters (one packing)
   int dem_refits = 2;            // candidates refitted by simulation per iteration
   int max_effects = 2;           // effects added at most
   int extra_refits = 4;          // re-centred refit points per refitted candidate beyond two
@@ -80,6 +80,9 @@ struct Diagnosis {
   std::string base_summary;         // settled or not, budget, undetermined base parameters
   std::vector<Observation> before;  // at the base calibration
   GapReport gap_before;
+  // The discrepancy floor estimated from the residuals (discrepancy_floor.h), in single-run
+  // scatters beyond the fixed one: at the base fit and at the final fit.
+  double floor_before = 0, floor_after = 0;
   std::vector<DiagnosisStep> steps;
   std::vector<int> named;           // candidate indices added, in order
   ModelPoint final_point;

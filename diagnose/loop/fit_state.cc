@@ -25,6 +25,7 @@ std::vector<Observation> WithPrediction(const std::vector<Observation>& observat
     out[i].simulated = p.mean[i];
     out[i].sem = p.sem[i];
     out[i].floor = floor_factor * p.spread[i];
+    out[i].scatter = p.spread[i];
   }
   return out;
 }
@@ -33,6 +34,12 @@ Eigen::VectorXd Sigmas(const std::vector<Observation>& observations) {
   Eigen::VectorXd s(observations.size());
   for (size_t i = 0; i < observations.size(); ++i) s(i) = observations[i].Sigma();
   return s;
+}
+
+Eigen::VectorXd ScatterPerSigma(const std::vector<Observation>& observations) {
+  Eigen::VectorXd q(observations.size());
+  for (size_t i = 0; i < observations.size(); ++i) q(i) = observations[i].scatter / observations[i].Sigma();
+  return q;
 }
 
 Eigen::VectorXd StandardisedResiduals(const std::vector<Observation>& observations, const std::vector<double>& mean,

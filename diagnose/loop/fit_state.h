@@ -31,6 +31,8 @@ struct FitState {
 std::vector<Observation> WithPrediction(const std::vector<Observation>& observations, const Prediction& p,
                                         double floor_factor);
 Eigen::VectorXd Sigmas(const std::vector<Observation>& observations);
+// Per observation its single-run scatter over its sigma (the estimated floor's unit per σ).
+Eigen::VectorXd ScatterPerSigma(const std::vector<Observation>& observations);
 // (mean − measured) / sigma with fixed sigmas.
 Eigen::VectorXd StandardisedResiduals(const std::vector<Observation>& observations, const std::vector<double>& mean,
                                       const Eigen::VectorXd& sigma);

@@ -34,7 +34,7 @@ bool RankingTable(const DiagnosisRunInfo& info, const DiagnosisStep& s, workflow
                   std::string* error) {
   workflow::HtmlTable t{s.ranking.message,
                         {"rank", "effect", "parameter = value", "direction", "refit", "χ²/dof after", "ΔBIC", "LR p",
-                         "signature match", "note"}};
+                         "floor [scatters]", "signature match", "note"}};
   int rank = 1;
   for (int i : s.ranking.order) {
     const RankingEntry& e = s.entries[i];
@@ -43,7 +43,8 @@ bool RankingTable(const DiagnosisRunInfo& info, const DiagnosisStep& s, workflow
                       p.name + " = " + (e.values.empty() ? "" : Num(e.values[0], 3)) + " " + p.unit,
                       e.values.empty() ? "" : EffectDirection(p, e.values[0]),
                       e.simulated ? "simulated" : "linearised", Num(e.chi2_per_dof, 3),
-                      Num(e.evidence.delta_bic, 3), Num(e.evidence.lr_p_value, 3), Num(e.signature_match, 3), e.note});
+                      Num(e.evidence.delta_bic, 3), Num(e.evidence.lr_p_value, 3), Num(e.evidence.floor, 3),
+                      Num(e.signature_match, 3), e.note});
   }
   return report->Table(t, error);
 }
@@ -65,6 +66,11 @@ bool WriteDiagnosisHtml(const std::string& path, const DiagnosisRunInfo& info, c
   report.Section("Verdict", syn);
   report.Paragraph(d.message, syn);
   report.Paragraph("Base fit: " + d.base_summary + ".", syn);
+  report.Paragraph("Discrepancy floor estimated from the data: " + Num(d.floor_before, 3) +
+                       " single-run scatter(s) at the base fit, " + Num(d.floor_after, 3) + " after (beyond the fixed " +
+                       Num(info.options.discrepancy_floor) + "); an effect is named only when it explains more than "
+                       "this floor allows (docs/diagnose.md).",
+                   syn);
   report.Paragraph("Before: " + d.gap_before.summary + ". After: " + d.gap_after.summary + ".", syn);
   report.Section("Gap before and after", syn);
   if (!report.Figure(objectives::RenderSvg(GapPlot(d)), "standardised residuals before (base model) and after",

@@ -1,5 +1,6 @@
 #include "diagnose/report/diagnosis_json.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/version.h"
@@ -58,7 +59,8 @@ Json CandidateJson(const DiagnosisRunInfo& info, const RankingEntry& e, int rank
           {"chi2_per_dof_after", Number(e.chi2_per_dof)}, {"delta_bic", Number(e.evidence.delta_bic)},
           {"likelihood_ratio_p", Number(e.evidence.lr_p_value)}, {"significant", e.evidence.significant},
           {"chi2_linearised", Number(e.chi2_linear)}, {"delta_bic_linearised", Number(e.linear.delta_bic)},
-          {"signature_match", Number(e.signature_match)}, {"winner", winner}, {"note", e.note}};
+          {"signature_match", Number(e.signature_match)},
+          {"discrepancy_floor_single_run_scatters", Number(e.evidence.floor)}, {"winner", winner}, {"note", e.note}};
 }
 
 Json StepJson(const DiagnosisRunInfo& info, const DiagnosisStep& s) {
@@ -96,6 +98,13 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
   j["named_effects"] = named;
   j["named_effects_signed"] = signed_effects;
   j["chi2_per_dof_after"] = Number(d.gap_after.chi2_per_dof);
+  const size_t tried = d.steps.empty() ? info.candidates.size() : d.steps.front().entries.size();
+  j["discrepancy_floor"] = {
+      {"fixed_single_run_scatters", info.options.discrepancy_floor},
+      {"estimated_single_run_scatters_before", Number(d.floor_before)},
+      {"estimated_single_run_scatters_after", Number(d.floor_after)},
+      {"estimator", "Paule-Mandel: the floored chi2 equals n - p (docs/diagnose.md)"},
+      {"significance_per_candidate", info.options.significance / static_cast<double>(std::max<size_t>(1, tried))}};
   j["gap_detected_after"] = d.gap_after.gap_detected;
   j["candidates"] = d.steps.empty() ? Json::array() : StepJson(info, d.steps.front())["candidates"];
   Json steps = Json::array();

@@ -132,16 +132,19 @@ class AnalyticForwardModel final : public ForwardModel {
 };
 
 // Measurements of the truth (mu plus hidden effects, plus `foreign` of the unknown effect) with
-// seeded Gaussian noise of the stated uncertainties.
+// seeded Gaussian noise of the stated uncertainties. offset_scatters > 0 adds a model-form
+// offset: per observation a fixed shift of offset_scatters single-run scatters times a standard
+// normal drawn once per dataset (another engine's differences: no pattern an effect has).
 inline std::vector<Observation> MakeObservations(AnalyticForwardModel* model, double mu,
                                                  const std::vector<std::pair<int, double>>& hidden, uint64_t noise_seed,
-                                                 double foreign = 0) {
+                                                 double foreign = 0, double offset_scatters = 0) {
   std::vector<Observation> obs;
   model->measured.clear();
   for (int i = 0; i < AnalyticForwardModel::Count(); ++i) {
     const int k = AnalyticForwardModel::Kind(i);
     const double y = AnalyticForwardModel::Exact(i, mu, hidden, model->curvature, model->angle_saturation) +
                      AnalyticForwardModel::Foreign(i, foreign) +
+                     offset_scatters * kScatter[k] * calibrate::testing::Normal(noise_seed + 7919, i) +
                      kUncertainty[k] * calibrate::testing::Normal(noise_seed, i);
     model->measured.push_back(y);
     Observation o{kKinds[k] + " w=" + std::to_string(AnalyticForwardModel::Coating(i)), kKinds[k],
