@@ -25,6 +25,32 @@ bool ChooseEffects(const std::vector<std::string>& keys, std::vector<const Effec
   return true;
 }
 
+// Whether the study fits the property of the pair (subject material, one of `others`).
+bool Fits(const workflow::StudyFile& study, calibrate::PairProperty property, const std::string& material,
+          const std::vector<std::string>& others) {
+  const core::Scene& model = study.experiment().model;
+  const int m = model.MaterialIndex(material);
+  for (const calibrate::Parameter& p : study.space.parameters) {
+    if (p.property != property || p.curve >= 0) continue;
+    for (const std::string& other : others) {
+      const int o = model.MaterialIndex(other);
+      if ((p.material_i == m && p.material_j == o) || (p.material_i == o && p.material_j == m)) return true;
+    }
+  }
+  return false;
+}
+
+// A candidate that shifts a property the study already fits is a copy of a fitted parameter:
+// guarded like the control, never named (docs/diagnose.md "Ambiguity and the control").
+bool CopiesFittedParameter(const std::string& key, const workflow::StudyFile& study, const EffectContext& c) {
+  using calibrate::PairProperty;
+  if (key == "sliding_friction_control") return true;
+  if (key == "rolling_resistance") return Fits(study, PairProperty::kRollingFriction, c.material, {c.material});
+  if (key == "jkr_adhesion") return Fits(study, PairProperty::kInterfacialEnergy, c.material, {c.material});
+  if (key == "wall_friction") return Fits(study, PairProperty::kSlidingFriction, c.material, c.wall_materials);
+  return false;
+}
+
 DiagnosisRunInfo RunInfo(const DiagnoseCommandOptions& o, const workflow::StudyFile& study, const EffectContext& c,
                          const std::vector<CandidateEffect>& candidates, const Diagnosis& d, const StudyModel& m) {
   DiagnosisRunInfo info{o.study_path, study.description};
@@ -67,7 +93,9 @@ int RunDiagnose(const DiagnoseCommandOptions& o, std::ostream& log) {
   if (!LockOutputDirectory(o.out_dir, "demcal diagnose " + o.study_path, &lock, &error))
     return log << "error: --out: " << error << "\n", kExitInvalidInput;
   std::vector<CandidateEffect> candidates;
-  for (const Effect* e : effects) candidates.push_back({e->Key(), e->Description(), e->Parameters(context)});
+  for (const Effect* e : effects)
+    candidates.push_back({e->Key(), e->Description(), e->Parameters(context),
+                          CopiesFittedParameter(e->Key(), study, context)});
   StudyModelOptions mo{o.out_dir, o.quick, o.threads, o.max_evaluations, o.quiet ? nullptr : &log};
   std::unique_ptr<StudyModel> model = StudyModel::Create(study, effects, context, mo, &error);
   if (!model) return log << "error: " << error << "\n", kExitInvalidInput;

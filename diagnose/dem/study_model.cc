@@ -54,8 +54,11 @@ std::unique_ptr<StudyModel> StudyModel::Create(const workflow::StudyFile& study,
 
 std::vector<Observation> StudyModel::Observations() const {
   std::vector<Observation> out;
-  for (const workflow::StudyTarget& t : study_.targets)
+  for (const workflow::StudyTarget& t : study_.targets) {
     out.push_back({t.target.name, t.target.observable, t.condition, t.target.value, t.target.uncertainty});
+    if (t.experiment >= 0 && t.experiment < static_cast<int>(study_.experiments.size()))
+      out.back().experiment = std::filesystem::path(study_.experiments[t.experiment].path).filename().string();
+  }
   return out;
 }
 

@@ -84,6 +84,7 @@ void Fill(const Frame& f, const Work& w, const std::vector<CandidateEffect>& can
   e->chi2 = w.simulated ? w.best_chi2 : w.refit.chi2;
   e->evidence = EvidenceWithFloor(f.r0, r, f.q, k, f.fitted, f.per_candidate);
   e->chi2_per_dof = e->chi2 / std::max(1, f.n() - f.fitted - k);
+  e->control = candidates[w.candidate].control;
   e->signature_match = SignatureMatch(f.r0, f.J, f.sigma.cwiseInverse().cwiseProduct(w.signature));
   if (w.best_point.effects.empty()) e->values = {w.refit.t(0)};
   else e->values = w.best_point.effects.back().values;
@@ -306,6 +307,13 @@ StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>
   const Eigen::VectorXd rw = ToVector(out.step.refit_residuals[win]);
   const Eigen::VectorXd rr = runner >= 0 ? ToVector(out.step.refit_residuals[runner]) : Eigen::VectorXd();
   out.step.carried = Carried(f, observations, rw, runner >= 0 ? &rr : nullptr);
+  if (out.step.ranking.tied >= 0) {
+    const int t = out.step.ranking.tied;
+    const Eigen::VectorXd sa = f.sigma.cwiseInverse().cwiseProduct(work[win].signature);
+    const Eigen::VectorXd sb = f.sigma.cwiseInverse().cwiseProduct(work[t].signature);
+    out.step.separating = FindSeparatingMeasurement(f.J, sa, sb, rw, ToVector(out.step.refit_residuals[t]), f.sigma,
+                                                    observations, out.step.entries[win].key, out.step.entries[t].key);
+  }
   out.has_winner = true;
   out.next.point = w.best_point;
   out.next.prediction = w.best_prediction;

@@ -70,6 +70,22 @@ std::string FloorText(double phi) {
   return s.str();
 }
 
+// "jkr_adhesion or particle_shape (delta BIC -12.1 and -11.4, within 2)" from the last step.
+std::string TieText(const Diagnosis& d, const std::vector<CandidateEffect>& candidates) {
+  std::ostringstream s;
+  s.precision(3);
+  const DiagnosisStep& step = d.steps.back();
+  const RankingEntry& a = step.entries[step.ranking.winner];
+  const RankingEntry& b = step.entries[step.ranking.tied];
+  auto one = [&candidates](const RankingEntry& e) {
+    const EffectParameter& p = candidates[e.candidate].parameters[0];
+    return e.key + " (" + (e.values.empty() ? "" : EffectDirection(p, e.values[0])) + ")";
+  };
+  s << one(a) << " or " << one(b) << " explain the gap about equally (delta BIC " << a.evidence.delta_bic << " and "
+    << b.evidence.delta_bic << ", within " << kBicIndistinct << ")";
+  return s.str();
+}
+
 std::string Names(const std::vector<int>& named, const std::vector<CandidateEffect>& candidates) {
   std::string s;
   for (int c : named) s += (s.empty() ? "" : " + ") + candidates[c].key;
@@ -109,9 +125,17 @@ void Finish(const std::vector<Observation>& observations, const FitState& fit, c
     m << "no missing effect found: the base model fits within noise (" << d->gap_before.summary << ")";
   } else if (d->termination == DiagnosisTermination::kEffectFound) {
     m << "missing effect: " << Signed(fit.point, candidates) << "; after adding it " << d->gap_after.summary;
+  } else if (d->termination == DiagnosisTermination::kNotToldApart) {
+    m << "not told apart: " << TieText(*d, candidates) << "; " << d->separating.description;
   } else if (d->termination == DiagnosisTermination::kGapRemains) {
     m << "added " << Signed(fit.point, candidates) << " but a gap remains (" << d->gap_after.summary
       << "), not explained by the library";
+    if (!d->not_told_apart.empty()) m << "; next, not told apart: " << TieText(*d, candidates) << "; " << d->separating.description;
+    if (!d->control_note.empty()) m << "; " << d->control_note;
+  } else if (!d->control_note.empty()) {
+    m << "model-form offset / no missing effect: " << d->control_note << " (discrepancy floor "
+      << FloorText(d->floor_before) << " single-run scatter(s) beyond the fixed " << options.discrepancy_floor
+      << "; " << d->gap_before.summary << ")";
   } else {
     m << "model-form offset: the base model misses the data by a discrepancy floor of "
       << FloorText(d->floor_before) << " single-run scatter(s) beyond the fixed "
@@ -170,6 +194,18 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
     d.phases.insert(d.phases.end(), s.phases.begin(), s.phases.end());
     d.steps.push_back(s.step);
     if (progress) progress("ranking: " + s.step.ranking.message);
+    if (s.step.ranking.control_first) {
+      d.termination = d.named.empty() ? DiagnosisTermination::kModelFormOffset : DiagnosisTermination::kGapRemains;
+      d.control_note = s.step.ranking.message;
+      break;
+    }
+    if (s.has_winner && s.step.ranking.tied >= 0) {
+      d.termination = d.named.empty() ? DiagnosisTermination::kNotToldApart : DiagnosisTermination::kGapRemains;
+      d.not_told_apart = {s.step.entries[s.step.ranking.winner].candidate,
+                          s.step.entries[s.step.ranking.tied].candidate};
+      d.separating = s.step.separating;
+      break;
+    }
     if (!s.has_winner) {
       d.termination = d.named.empty() ? DiagnosisTermination::kModelFormOffset
                                       : DiagnosisTermination::kGapRemains;

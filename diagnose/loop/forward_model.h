@@ -20,6 +20,9 @@ struct CandidateEffect {
   std::string key;
   std::string description;
   std::vector<EffectParameter> parameters;
+  // A copy of a fitted base parameter (the sliding-friction control; rolling resistance when the
+  // study fits the rolling friction): guarded, never named (ranking.h).
+  bool control = false;
 };
 
 struct ActiveEffect {
@@ -67,7 +70,7 @@ class ForwardModel {
   // Per base parameter: its name and SI units per unit-cube step at the unit point (reports).
   virtual std::vector<std::string> BaseParameterNames() const {
     std::vector<std::string> names;
-    for (int j = 0; j < BaseParameters(); ++j) names.push_back("u" + std::to_string(j));
+    for (int j = 0; j < BaseParameters(); ++j) names.push_back(std::to_string(j)), names.back().insert(0, "u");
     return names;
   }
   virtual std::vector<double> BaseSiPerUnit(const std::vector<double>&) const {

@@ -60,10 +60,21 @@ Json CandidateJson(const DiagnosisRunInfo& info, const RankingEntry& e, int rank
           {"likelihood_ratio_p", Number(e.evidence.lr_p_value)}, {"significant", e.evidence.significant},
           {"chi2_linearised", Number(e.chi2_linear)}, {"delta_bic_linearised", Number(e.linear.delta_bic)},
           {"signature_match", Number(e.signature_match)},
-          {"discrepancy_floor_single_run_scatters", Number(e.evidence.floor)}, {"winner", winner}, {"note", e.note}};
+          {"discrepancy_floor_single_run_scatters", Number(e.evidence.floor)}, {"control", e.control},
+          {"winner", winner}, {"note", e.note}};
 }
 
-Json StepJson(const DiagnosisRunInfo& info, const DiagnosisStep& s) {
+Json SeparatingJson(const std::vector<Observation>& obs, const SeparatingMeasurement& m) {
+  if (m.observation < 0 || m.observation >= static_cast<int>(obs.size())) return nullptr;
+  const Observation& o = obs[m.observation];
+  return {{"observable", o.observable}, {"condition", ConditionJson(o.condition)}, {"experiment", o.experiment},
+          {"name", o.name}, {"prediction_first", Number(m.prediction_a)}, {"prediction_second", Number(m.prediction_b)},
+          {"difference_sigma", Number(m.difference_sigma)}, {"sigma_shrink_first", Number(m.shrink_a)},
+          {"sigma_shrink_second", Number(m.shrink_b)}, {"lifts_valley", m.lifts_valley},
+          {"separates", m.separates}, {"description", m.description}};
+}
+
+Json StepJson(const DiagnosisRunInfo& info, const std::vector<Observation>& obs, const DiagnosisStep& s) {
   Json candidates = Json::array();
   int rank = 1;
   for (int i : s.ranking.order) candidates.push_back(CandidateJson(info, s.entries[i], rank++, i == s.ranking.winner));
@@ -73,7 +84,11 @@ Json StepJson(const DiagnosisRunInfo& info, const DiagnosisStep& s) {
                        {"chi2_gain_over_base", Number(o.against_base)}});
   return {{"candidates", candidates},
           {"winner", s.ranking.winner >= 0 ? Json(s.entries[s.ranking.winner].key) : Json(nullptr)},
-          {"distinguished", s.ranking.distinguished}, {"message", s.ranking.message},
+          {"distinguished", s.ranking.distinguished},
+          {"not_told_apart_from", s.ranking.tied >= 0 ? Json(s.entries[s.ranking.tied].key) : Json(nullptr)},
+          {"control_first", s.ranking.control_first},
+          {"separating_measurement", s.ranking.tied >= 0 ? SeparatingJson(obs, s.separating) : Json(nullptr)},
+          {"message", s.ranking.message},
           {"observables_carried", carried}, {"simulations", s.simulations}, {"wall_time_s", s.wall_time_s}};
 }
 
@@ -106,9 +121,14 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
       {"estimator", "Paule-Mandel: the floored chi2 equals n - p (docs/diagnose.md)"},
       {"significance_per_candidate", info.options.significance / static_cast<double>(std::max<size_t>(1, tried))}};
   j["gap_detected_after"] = d.gap_after.gap_detected;
-  j["candidates"] = d.steps.empty() ? Json::array() : StepJson(info, d.steps.front())["candidates"];
+  j["candidates"] = d.steps.empty() ? Json::array() : StepJson(info, d.before, d.steps.front())["candidates"];
+  Json tie = Json::array();
+  for (int c : d.not_told_apart) tie.push_back(info.candidates[c].key);
+  j["not_told_apart"] = tie;
+  j["separating_measurement"] = d.not_told_apart.empty() ? Json(nullptr) : SeparatingJson(d.before, d.separating);
+  j["control_guard"] = d.control_note.empty() ? Json(nullptr) : Json(d.control_note);
   Json steps = Json::array();
-  for (const DiagnosisStep& s : d.steps) steps.push_back(StepJson(info, s));
+  for (const DiagnosisStep& s : d.steps) steps.push_back(StepJson(info, d.before, s));
   j["steps"] = steps;
   j["gap_before"] = GapJson(d.gap_before);
   j["gap_after"] = GapJson(d.gap_after);

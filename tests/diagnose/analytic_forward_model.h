@@ -31,6 +31,7 @@ inline double EffectChange(int e, int kind, double w, double v) {
     case 2: return v * std::vector<double>{10, 6e-3, -5e-4}[kind];      // shape
     case 3: return v * std::vector<double>{-5, -3e-3, 2e-4}[kind];      // polydispersity
     case 4: return v * std::vector<double>{10, 1e-3, -1e-3}[kind];      // control: like mu
+    case 5: return v * std::vector<double>{29, 3.9e-3, -1.1e-4}[kind];  // roughness: nearly rolling's
   }
   return 0;
 }
@@ -42,7 +43,15 @@ inline std::vector<CandidateEffect> Candidates() {
                             "less rolling resistance than assumed"}}},
           {"shape", "", {{"t", "", 0, 2, 0.5}}},
           {"polydispersity", "", {{"t", "", 0, 1.5, 0.5}}},
-          {"control", "", {{"t", "", -0.5, 0.5, 0.2}}}};
+          {"control", "", {{"t", "", -0.5, 0.5, 0.2}}, true}};
+}
+
+// The library plus "roughness", whose signature is within a few per cent of rolling's: the
+// two cannot be told apart on these observables.
+inline std::vector<CandidateEffect> AmbiguousCandidates() {
+  std::vector<CandidateEffect> c = Candidates();
+  c.push_back({"roughness", "", {{"t", "", 0, 1, 0.2, "more roughness", ""}}});
+  return c;
 }
 
 class AnalyticForwardModel final : public ForwardModel {

@@ -1,6 +1,7 @@
 #include "diagnose/loop/diagnosis.h"
 
 #include <catch2/catch.hpp>
+#include <set>
 
 #include "diagnose/analytic_forward_model.h"
 
@@ -173,6 +174,41 @@ TEST_CASE("refits re-estimate the sensitivities where they are, past a base fit 
   CHECK(std::abs(0.2 + 0.8 * more.final_point.base_unit[0] - 0.5) < 0.02);  // mu back down to 0.5
   CHECK(more.gap_after.chi2 <= two.gap_after.chi2 - 10);
   CHECK(more.gap_after.chi2_per_dof <= 1.5);
+}
+
+TEST_CASE("two effects that explain the gap equally are not told apart, with what would separate them",
+          "[unit]") {
+  for (uint64_t seed : {1, 2, 3}) {
+    INFO("noise seed " << seed);
+    AnalyticForwardModel model;
+    const std::vector<Observation> obs = testing::MakeObservations(&model, 0.5, {{1, 0.35}}, seed);
+    const std::vector<CandidateEffect> candidates = testing::AmbiguousCandidates();
+    const Diagnosis d = Diagnose(model, obs, candidates, DiagnoseOptions{});
+    CHECK(d.termination == DiagnosisTermination::kNotToldApart);
+    CHECK(d.named.empty());  // neither is named as the answer
+    REQUIRE(d.not_told_apart.size() == 2);
+    std::set<std::string> pair = {candidates[d.not_told_apart[0]].key, candidates[d.not_told_apart[1]].key};
+    CHECK(pair == std::set<std::string>{"rolling", "roughness"});
+    CHECK(d.message.rfind("not told apart: ", 0) == 0);
+    CHECK(d.separating.observation >= 0);
+    CHECK(d.message.find("measure ") != std::string::npos);
+  }
+}
+
+TEST_CASE("the control guard: a control that explains the gap best is never named", "[unit]") {
+  // Shape hidden, and shape flagged as a copy of a fitted parameter: it would win, so the answer
+  // must be a model-form offset, never the control.
+  std::vector<CandidateEffect> candidates = testing::Candidates();
+  candidates[2].control = true;
+  for (uint64_t seed : {1, 2, 3}) {
+    AnalyticForwardModel model;
+    const std::vector<Observation> obs = testing::MakeObservations(&model, 0.5, {{2, 0.8}}, seed);
+    const Diagnosis d = Diagnose(model, obs, candidates, DiagnoseOptions{});
+    CHECK(d.named.empty());
+    CHECK(d.termination == DiagnosisTermination::kModelFormOffset);
+    CHECK(d.message.find("model-form offset / no missing effect") != std::string::npos);
+    CHECK(d.message.find("the control shape") != std::string::npos);
+  }
 }
 
 }  // namespace demcal::diagnose
