@@ -8,26 +8,30 @@
 namespace demcal::diagnose {
 
 bool SettledTermination(const std::string& termination) {
-  return termination == "within_noise" || termination == "converged" || termination == "out_of_range";
+  return termination == "within_noise" || termination == "converged" ||
+         termination == "out_of_range";
 }
 
-BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observations, double floor_factor,
-                   const std::function<void(const std::string&)>& progress) {
+BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observations,
+                   double floor_factor, const std::function<void(const std::string&)>& progress) {
   BaseFit b;
   for (b.budget_scale = 1;; b.budget_scale *= 2) {
     b.base = model.CalibrateBase(b.budget_scale);
     if (!b.base.ok || b.base.settled || b.budget_scale >= kMaxBaseBudgetScale) break;
     if (progress)
       progress("the base calibration ended on its budget (" + b.base.termination + ", " +
-               std::to_string(b.base.max_evaluations) + " evaluations): again with twice the budget");
+               std::to_string(b.base.max_evaluations) +
+               " evaluations): again with twice the budget");
   }
   std::ostringstream s;
-  s << "base calibration " << b.base.termination << " with " << b.base.max_evaluations << " evaluations"
+  s << "base calibration " << b.base.termination << " with " << b.base.max_evaluations
+    << " evaluations"
     << (b.budget_scale > 1 ? " (" + std::to_string(b.budget_scale) + "x the study's budget)" : "");
   if (!b.base.ok) return b.summary = s.str(), b;
   if (!b.base.settled) s << ": not settled by the calibration's own criterion";
   const std::vector<Observation> at = WithPrediction(observations, b.base.prediction, floor_factor);
-  const int n = static_cast<int>(observations.size()), p = static_cast<int>(b.base.base_unit.size());
+  const int n = static_cast<int>(observations.size()),
+            p = static_cast<int>(b.base.base_unit.size());
   Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n, p);
   for (int i = 0; i < n && i < static_cast<int>(b.base.jacobian.size()); ++i)
     for (int j = 0; j < p && j < static_cast<int>(b.base.jacobian[i].size()); ++j)
@@ -37,7 +41,8 @@ BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observat
                                                           model.BaseSiPerUnit(b.base.base_unit));
     if (!b.identifiability.Identifiable()) {
       s << "; the data do not determine the base parameters:";
-      for (const calibrate::UndeterminedDirection& u : b.identifiability.undetermined) s << " " << u.description;
+      for (const calibrate::UndeterminedDirection& u : b.identifiability.undetermined)
+        s << " " << u.description;
     }
   }
   b.summary = s.str();

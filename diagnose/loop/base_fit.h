@@ -32,10 +32,10 @@ struct BaseFit {
   BaseCalibration base;
   int budget_scale = 1;  // the study's budget times this was used
   calibrate::IdentifiabilityReport identifiability;
-  std::string summary;   // in words: settled or not, with which budget, what is undetermined
+  std::string summary;  // in words: settled or not, with which budget, what is undetermined
 };
 
-BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observations, double floor_factor,
-                   const std::function<void(const std::string&)>& progress);
+BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observations,
+                   double floor_factor, const std::function<void(const std::string&)>& progress);
 
 }  // namespace demcal::diagnose

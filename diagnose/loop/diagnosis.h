@@ -44,11 +44,12 @@ namespace demcal::diagnose {
 
 // Allowed ranges: objectives/common/input_limits.h (kSignificance, kDiscrepancyFloor, ...).
 struct DiagnoseOptions {
-  double significance = 0.01;    // the gap test's and the evidence's level
-  double discrepancy_floor = 1;  // the fixed part of the floor, in single-run scatters (one packing)
-  int dem_refits = 2;            // candidates refitted by simulation per iteration
-  int max_effects = 2;           // effects added at most
-  int extra_refits = 4;          // re-centred refit points per refitted candidate beyond two
+  double significance = 0.01;  // the gap test's and the evidence's level
+  double discrepancy_floor =
+      1;                 // the fixed part of the floor, in single-run scatters (one packing)
+  int dem_refits = 2;    // candidates refitted by simulation per iteration
+  int max_effects = 2;   // effects added at most
+  int extra_refits = 4;  // re-centred refit points per refitted candidate beyond two
   bool IsValid(std::string* error) const;
 };
 
@@ -61,12 +62,14 @@ struct ObservableShare {
 };
 
 struct DiagnosisStep {
-  std::vector<RankingEntry> entries;               // one per candidate tried
-  std::vector<std::vector<double>> signatures;     // [entry][observation]: simulated change at the probe
-  std::vector<std::vector<double>> refit_residuals;  // [entry][observation]: standardised, at its refit
+  std::vector<RankingEntry> entries;  // one per candidate tried
+  std::vector<std::vector<double>>
+      signatures;  // [entry][observation]: simulated change at the probe
+  std::vector<std::vector<double>>
+      refit_residuals;  // [entry][observation]: standardised, at its refit
   Ranking ranking;
-  std::vector<ObservableShare> carried;            // when there is a winner
-  SeparatingMeasurement separating;                // when the winner is not told apart (ranking.tied)
+  std::vector<ObservableShare> carried;  // when there is a winner
+  SeparatingMeasurement separating;      // when the winner is not told apart (ranking.tied)
   int simulations = 0;
   double wall_time_s = 0;
 };
@@ -81,7 +84,7 @@ struct Diagnosis {
   DiagnosisTermination termination = DiagnosisTermination::kFailed;
   std::string message = "Diagnose was not called";
   BaseCalibration base;
-  int base_budget_scale = 1;        // the study's budget times this (base_fit.h)
+  int base_budget_scale = 1;  // the study's budget times this (base_fit.h)
   calibrate::IdentifiabilityReport base_identifiability;
   std::string base_summary;         // settled or not, budget, undetermined base parameters
   std::vector<Observation> before;  // at the base calibration
@@ -90,12 +93,12 @@ struct Diagnosis {
   // scatters beyond the fixed one: at the base fit and at the final fit.
   double floor_before = 0, floor_after = 0;
   std::vector<DiagnosisStep> steps;
-  std::vector<int> named;           // candidate indices added, in order
-  std::vector<int> not_told_apart;  // candidate indices of the last step's tie (kNotToldApart)
-  SeparatingMeasurement separating; // the measurement that would tell them apart
-  std::string control_note;         // why the control guard held (a model-form offset)
+  std::vector<int> named;            // candidate indices added, in order
+  std::vector<int> not_told_apart;   // candidate indices of the last step's tie (kNotToldApart)
+  SeparatingMeasurement separating;  // the measurement that would tell them apart
+  std::string control_note;          // why the control guard held (a model-form offset)
   ModelPoint final_point;
-  std::vector<Observation> after;   // at the final point
+  std::vector<Observation> after;  // at the final point
   GapReport gap_after;
   int fitted_parameters_after = 0;
   std::vector<PhaseTime> phases;

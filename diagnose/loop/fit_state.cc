@@ -18,8 +18,8 @@ ModelPoint FitState::Step(const Eigen::VectorXd& delta, const ActiveEffect* adde
   return next;
 }
 
-std::vector<Observation> WithPrediction(const std::vector<Observation>& observations, const Prediction& p,
-                                        double floor_factor) {
+std::vector<Observation> WithPrediction(const std::vector<Observation>& observations,
+                                        const Prediction& p, double floor_factor) {
   std::vector<Observation> out = observations;
   for (size_t i = 0; i < out.size() && i < p.mean.size(); ++i) {
     out[i].simulated = p.mean[i];
@@ -38,14 +38,17 @@ Eigen::VectorXd Sigmas(const std::vector<Observation>& observations) {
 
 Eigen::VectorXd ScatterPerSigma(const std::vector<Observation>& observations) {
   Eigen::VectorXd q(observations.size());
-  for (size_t i = 0; i < observations.size(); ++i) q(i) = observations[i].scatter / observations[i].Sigma();
+  for (size_t i = 0; i < observations.size(); ++i)
+    q(i) = observations[i].scatter / observations[i].Sigma();
   return q;
 }
 
-Eigen::VectorXd StandardisedResiduals(const std::vector<Observation>& observations, const std::vector<double>& mean,
+Eigen::VectorXd StandardisedResiduals(const std::vector<Observation>& observations,
+                                      const std::vector<double>& mean,
                                       const Eigen::VectorXd& sigma) {
   Eigen::VectorXd r(observations.size());
-  for (size_t i = 0; i < observations.size(); ++i) r(i) = (mean[i] - observations[i].measured) / sigma(i);
+  for (size_t i = 0; i < observations.size(); ++i)
+    r(i) = (mean[i] - observations[i].measured) / sigma(i);
   return r;
 }
 

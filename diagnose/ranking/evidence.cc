@@ -20,8 +20,8 @@ Evidence EvidenceOf(double chi2_base, double chi2_effect, int k, int n, double s
   return e;
 }
 
-Evidence EvidenceWithFloor(const Eigen::VectorXd& r_base, const Eigen::VectorXd& r_effect, const Eigen::VectorXd& q,
-                           int k, int fitted, double significance) {
+Evidence EvidenceWithFloor(const Eigen::VectorXd& r_base, const Eigen::VectorXd& r_effect,
+                           const Eigen::VectorXd& q, int k, int fitted, double significance) {
   const int n = static_cast<int>(r_base.size());
   const int dof = std::max(1, n - fitted - k);
   Evidence e;

@@ -36,8 +36,8 @@ struct Evidence {
 Evidence EvidenceOf(double chi2_base, double chi2_effect, int k, int n, double significance);
 // r_base, r_effect: standardised residuals of the base and the effect's fit (fixed σ); q: the
 // single-run scatter over σ per observation; fitted: the base's fitted coordinates p.
-Evidence EvidenceWithFloor(const Eigen::VectorXd& r_base, const Eigen::VectorXd& r_effect, const Eigen::VectorXd& q,
-                           int k, int fitted, double significance);
+Evidence EvidenceWithFloor(const Eigen::VectorXd& r_base, const Eigen::VectorXd& r_effect,
+                           const Eigen::VectorXd& q, int k, int fitted, double significance);
 
 // Kass & Raftery's (1995) "not worth more than a bare mention": |ΔBIC| below this.
 constexpr double kBicIndistinct = 2.0;

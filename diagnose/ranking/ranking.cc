@@ -27,15 +27,18 @@ Ranking RankCandidates(const std::vector<RankingEntry>& entries) {
       if (entries[i].simulated && first_simulated < 0) first_simulated = i;
     for (int i : r.order)
       if (i != r.winner && entries[i].simulated && entries[i].control &&
-          std::fabs(entries[i].evidence.delta_bic - entries[r.winner].evidence.delta_bic) < kBicIndistinct)
+          std::fabs(entries[i].evidence.delta_bic - entries[r.winner].evidence.delta_bic) <
+              kBicIndistinct)
         control_level = i;
-    const int control = entries[r.winner].control ? r.winner
+    const int control = entries[r.winner].control          ? r.winner
                         : entries[first_simulated].control ? first_simulated
                                                            : control_level;
     if (control >= 0) {
       r.control_first = true;
-      m << "the control " << entries[control].key << " (a copy of a fitted parameter) explains the gap as well as "
-        << "any effect (delta BIC " << entries[control].evidence.delta_bic << "): model-form offset, no missing "
+      m << "the control " << entries[control].key
+        << " (a copy of a fitted parameter) explains the gap as well as "
+        << "any effect (delta BIC " << entries[control].evidence.delta_bic
+        << "): model-form offset, no missing "
         << "effect named";
       r.winner = -1;
       r.message = m.str();
@@ -47,15 +50,16 @@ Ranking RankCandidates(const std::vector<RankingEntry>& entries) {
     r.message = m.str();
     return r;
   }
-  m << entries[r.winner].key << " (delta BIC " << entries[r.winner].evidence.delta_bic << ", likelihood-ratio p "
-    << entries[r.winner].evidence.lr_p_value << ")";
+  m << entries[r.winner].key << " (delta BIC " << entries[r.winner].evidence.delta_bic
+    << ", likelihood-ratio p " << entries[r.winner].evidence.lr_p_value << ")";
   for (int i : r.order) {
     if (i == r.winner) continue;
-    if (entries[i].simulated &&
-        std::fabs(entries[i].evidence.delta_bic - entries[r.winner].evidence.delta_bic) < kBicIndistinct) {
+    if (entries[i].simulated && std::fabs(entries[i].evidence.delta_bic -
+                                          entries[r.winner].evidence.delta_bic) < kBicIndistinct) {
       r.distinguished = false;
       if (r.tied < 0) r.tied = i;
-      m << "; not told apart from " << entries[i].key << " (delta BIC " << entries[i].evidence.delta_bic << ")";
+      m << "; not told apart from " << entries[i].key << " (delta BIC "
+        << entries[i].evidence.delta_bic << ")";
     }
   }
   r.message = m.str();

@@ -8,11 +8,11 @@
 
 namespace demcal::diagnose {
 
-SeparatingMeasurement FindSeparatingMeasurement(const Eigen::MatrixXd& Js, const Eigen::VectorXd& sa,
-                                                const Eigen::VectorXd& sb, const Eigen::VectorXd& ra,
-                                                const Eigen::VectorXd& rb, const Eigen::VectorXd& sigma,
-                                                const std::vector<Observation>& observations,
-                                                const std::string& name_a, const std::string& name_b) {
+SeparatingMeasurement FindSeparatingMeasurement(
+    const Eigen::MatrixXd& Js, const Eigen::VectorXd& sa, const Eigen::VectorXd& sb,
+    const Eigen::VectorXd& ra, const Eigen::VectorXd& rb, const Eigen::VectorXd& sigma,
+    const std::vector<Observation>& observations, const std::string& name_a,
+    const std::string& name_b) {
   SeparatingMeasurement m;
   const Eigen::Index n = sa.size(), p = Js.cols();
   if (n == 0 || static_cast<Eigen::Index>(observations.size()) != n) return m;
@@ -33,7 +33,8 @@ SeparatingMeasurement FindSeparatingMeasurement(const Eigen::MatrixXd& Js, const
   for (Eigen::Index i = 0; i < n && i < static_cast<Eigen::Index>(gains.size()); ++i) {
     largest_difference = std::max(largest_difference, std::fabs(ra(i) - rb(i)));
     const calibrate::TargetGain& g = gains[i];
-    const double shrink = (std::isfinite(g.shrink[p]) ? g.shrink[p] : 1) * (std::isfinite(g.shrink[p + 1]) ? g.shrink[p + 1] : 1);
+    const double shrink = (std::isfinite(g.shrink[p]) ? g.shrink[p] : 1) *
+                          (std::isfinite(g.shrink[p + 1]) ? g.shrink[p + 1] : 1);
     const double score = shrink - (g.lifts_valley ? 1 : 0);  // a target that lifts the valley first
     if (score < best) best = score, m.observation = static_cast<int>(i);
   }
@@ -50,12 +51,14 @@ SeparatingMeasurement FindSeparatingMeasurement(const Eigen::MatrixXd& Js, const
   std::ostringstream s;
   s.precision(3);
   s << "measure " << o.observable << " at " << calibrate::DescribeCondition(o.condition)
-    << (o.experiment.empty() ? "" : " (" + o.experiment + ")") << " again or more precisely (now " << o.measured
-    << " +- " << o.uncertainty << "): " << name_a << "'s refit predicts " << m.prediction_a << ", " << name_b
-    << "'s " << m.prediction_b << " (" << m.difference_sigma << " sigma apart); one more such value would shrink the "
+    << (o.experiment.empty() ? "" : " (" + o.experiment + ")") << " again or more precisely (now "
+    << o.measured << " +- " << o.uncertainty << "): " << name_a << "'s refit predicts "
+    << m.prediction_a << ", " << name_b << "'s " << m.prediction_b << " (" << m.difference_sigma
+    << " sigma apart); one more such value would shrink the "
     << "sigma of their parameters to " << m.shrink_a << " and " << m.shrink_b << " of now";
   if (!m.separates)
-    s << ". No observation of this study has their refits more than one sigma apart: a new observable, "
+    s << ". No observation of this study has their refits more than one sigma apart: a new "
+         "observable, "
          "condition or experiment is needed to tell them apart";
   m.description = s.str();
   return m;

@@ -24,23 +24,23 @@
 namespace demcal::diagnose {
 
 struct SeparatingMeasurement {
-  int observation = -1;       // index into the observations (-1: none)
-  double prediction_a = 0;    // the effects' refits' simulated values there
+  int observation = -1;     // index into the observations (-1: none)
+  double prediction_a = 0;  // the effects' refits' simulated values there
   double prediction_b = 0;
-  double difference_sigma = 0;  // |a − b| / σ there
+  double difference_sigma = 0;        // |a − b| / σ there
   double shrink_a = 1, shrink_b = 1;  // σ after / σ before of each effect's parameter
   bool lifts_valley = false;
-  bool separates = false;     // the largest difference over the observations is ≥ 1 σ
+  bool separates = false;  // the largest difference over the observations is ≥ 1 σ
   std::string description;
 };
 
 // Js: standardised sensitivities to the fitted parameters (n × p); sa, sb: the two effects'
 // standardised signatures per unit parameter; ra, rb: the standardised residuals at their
 // refits; sigma: each observation's σ; names: the two effects' keys.
-SeparatingMeasurement FindSeparatingMeasurement(const Eigen::MatrixXd& Js, const Eigen::VectorXd& sa,
-                                                const Eigen::VectorXd& sb, const Eigen::VectorXd& ra,
-                                                const Eigen::VectorXd& rb, const Eigen::VectorXd& sigma,
-                                                const std::vector<Observation>& observations,
-                                                const std::string& name_a, const std::string& name_b);
+SeparatingMeasurement FindSeparatingMeasurement(
+    const Eigen::MatrixXd& Js, const Eigen::VectorXd& sa, const Eigen::VectorXd& sb,
+    const Eigen::VectorXd& ra, const Eigen::VectorXd& rb, const Eigen::VectorXd& sigma,
+    const std::vector<Observation>& observations, const std::string& name_a,
+    const std::string& name_b);
 
 }  // namespace demcal::diagnose

@@ -10,10 +10,11 @@ namespace {
 
 using testing::AnalyticForwardModel;
 
-Diagnosis Run(const std::vector<std::pair<int, double>>& hidden, uint64_t noise_seed, double foreign = 0,
-              int max_effects = 2) {
+Diagnosis Run(const std::vector<std::pair<int, double>>& hidden, uint64_t noise_seed,
+              double foreign = 0, int max_effects = 2) {
   AnalyticForwardModel model;
-  const std::vector<Observation> obs = testing::MakeObservations(&model, 0.5, hidden, noise_seed, foreign);
+  const std::vector<Observation> obs =
+      testing::MakeObservations(&model, 0.5, hidden, noise_seed, foreign);
   DiagnoseOptions o;
   o.max_effects = max_effects;
   return Diagnose(model, obs, testing::Candidates(), o);
@@ -29,7 +30,10 @@ TEST_CASE("diagnosis on analytic stand-ins names the hidden effect and closes th
   // Adhesion at 0.08: named in 50 of 50 noise draws under the familywise rule with the estimated
   // floor (at 0.06, in 43 of 50: the F test on 7 degrees of freedom at 0.01/5 per candidate).
   const std::vector<std::pair<std::string, std::pair<int, double>>> cases = {
-      {"adhesion", {0, 0.08}}, {"rolling", {1, 0.35}}, {"shape", {2, 0.8}}, {"polydispersity", {3, 0.9}}};
+      {"adhesion", {0, 0.08}},
+      {"rolling", {1, 0.35}},
+      {"shape", {2, 0.8}},
+      {"polydispersity", {3, 0.9}}};
   for (uint64_t seed : {1, 2, 3}) {
     for (const auto& [name, hidden] : cases) {
       INFO(name << " noise seed " << seed);
@@ -101,9 +105,11 @@ TEST_CASE("diagnosis says no missing effect when none is hidden", "[unit]") {
 }
 
 TEST_CASE("diagnosis says the gap is not explained by the library for a foreign effect", "[unit]") {
-  const Diagnosis d = Run({}, 1, 40.0);  // flow grows with the coating squared: no candidate does that alone
+  const Diagnosis d =
+      Run({}, 1, 40.0);  // flow grows with the coating squared: no candidate does that alone
   CHECK(d.gap_before.gap_detected);
-  CHECK((d.termination == DiagnosisTermination::kModelFormOffset || d.termination == DiagnosisTermination::kGapRemains));
+  CHECK((d.termination == DiagnosisTermination::kModelFormOffset ||
+         d.termination == DiagnosisTermination::kGapRemains));
   CHECK(d.gap_after.gap_detected);
   CHECK(d.message.find("not explained by the library") != std::string::npos);
 }
@@ -112,7 +118,8 @@ TEST_CASE("diagnosis repeats while a gap remains, up to max_effects", "[unit]") 
   const std::vector<std::pair<int, double>> two = {{0, 0.05}, {2, 0.9}};  // adhesion and shape
   const Diagnosis d = Run(two, 2);
   REQUIRE(d.named.size() == 2);
-  CHECK(((Named(d, 0) == "adhesion" && Named(d, 1) == "shape") || (Named(d, 0) == "shape" && Named(d, 1) == "adhesion")));
+  CHECK(((Named(d, 0) == "adhesion" && Named(d, 1) == "shape") ||
+         (Named(d, 0) == "shape" && Named(d, 1) == "adhesion")));
   CHECK(d.termination == DiagnosisTermination::kEffectFound);
   const Diagnosis one = Run(two, 2, 0, 1);
   CHECK(one.named.size() == 1);
@@ -140,7 +147,8 @@ TEST_CASE("a candidate with a nonlinear signature is refitted on towards the tru
   const Diagnosis two = OneEffect(model, {2, 0.8}, 0), more = OneEffect(model, {2, 0.8}, 4);
   REQUIRE(Named(two) == "shape");
   REQUIRE(Named(more) == "shape");
-  const double v0 = two.final_point.effects.at(0).values[0], v4 = more.final_point.effects.at(0).values[0];
+  const double v0 = two.final_point.effects.at(0).values[0],
+               v4 = more.final_point.effects.at(0).values[0];
   INFO("shape value: ranking refits only " << v0 << ", recalibrated " << v4 << ", truth 0.8");
   CHECK(std::abs(v4 - 0.8) < std::abs(v0 - 0.8));
   CHECK(more.gap_after.chi2 <= two.gap_after.chi2 - 1);
@@ -167,7 +175,8 @@ TEST_CASE("refits re-estimate the sensitivities where they are, past a base fit 
   model.base_step = -0.25;
   const Diagnosis two = OneEffect(model, {1, 0.4}, 0), more = OneEffect(model, {1, 0.4}, 4);
   REQUIRE(Named(more) == "rolling");
-  const double v0 = two.final_point.effects.at(0).values[0], v4 = more.final_point.effects.at(0).values[0];
+  const double v0 = two.final_point.effects.at(0).values[0],
+               v4 = more.final_point.effects.at(0).values[0];
   INFO("rolling value: two base-J points " << v0 << ", re-centred refits " << v4 << ", truth 0.4");
   CHECK(std::abs(v0 - 0.4) > 0.1);  // the scenario stalls without re-centring
   CHECK(std::abs(v4 - 0.4) < 0.02);
@@ -176,8 +185,9 @@ TEST_CASE("refits re-estimate the sensitivities where they are, past a base fit 
   CHECK(more.gap_after.chi2_per_dof <= 1.5);
 }
 
-TEST_CASE("two effects that explain the gap equally are not told apart, with what would separate them",
-          "[unit]") {
+TEST_CASE(
+    "two effects that explain the gap equally are not told apart, with what would separate them",
+    "[unit]") {
   for (uint64_t seed : {1, 2, 3}) {
     INFO("noise seed " << seed);
     AnalyticForwardModel model;
@@ -187,7 +197,8 @@ TEST_CASE("two effects that explain the gap equally are not told apart, with wha
     CHECK(d.termination == DiagnosisTermination::kNotToldApart);
     CHECK(d.named.empty());  // neither is named as the answer
     REQUIRE(d.not_told_apart.size() == 2);
-    std::set<std::string> pair = {candidates[d.not_told_apart[0]].key, candidates[d.not_told_apart[1]].key};
+    std::set<std::string> pair = {candidates[d.not_told_apart[0]].key,
+                                  candidates[d.not_told_apart[1]].key};
     CHECK(pair == std::set<std::string>{"rolling", "roughness"});
     CHECK(d.message.rfind("not told apart: ", 0) == 0);
     CHECK(d.separating.observation >= 0);

@@ -1,13 +1,14 @@
 // The discrepancy floor estimated from the data and the F test that judges an effect against
 // it (discrepancy_floor.h, f_distribution.h, evidence.h), and the floor's false-alarm rate on
 // analytic stand-ins (analytic_forward_model.h): pure noise plus a model-form offset.
+#include "diagnose/ranking/discrepancy_floor.h"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 
 #include "calibrate/chi_square.h"
 #include "diagnose/analytic_forward_model.h"
 #include "diagnose/loop/diagnosis.h"
-#include "diagnose/ranking/discrepancy_floor.h"
 #include "diagnose/ranking/evidence.h"
 #include "diagnose/ranking/f_distribution.h"
 
@@ -26,7 +27,8 @@ TEST_CASE("F distribution tail against tabulated critical values", "[unit]") {
 }
 
 TEST_CASE("the floor is the Paule-Mandel moment estimate, zero within noise", "[unit]") {
-  const Eigen::VectorXd r = Eigen::VectorXd::Constant(10, 2.0), q = Eigen::VectorXd::Constant(10, 0.5);
+  const Eigen::VectorXd r = Eigen::VectorXd::Constant(10, 2.0),
+                        q = Eigen::VectorXd::Constant(10, 0.5);
   // Σ 4 / (1 + φ²/4) = 10 · 1  →  φ² = 12.
   CHECK(EstimateFloor(r, q, 10) == Approx(std::sqrt(12.0)).epsilon(1e-6));
   CHECK(FlooredChi2(r, q, std::sqrt(12.0)) == Approx(10));
@@ -52,7 +54,8 @@ Diagnosis Clean(uint64_t seed, double offset) {
 
 }  // namespace
 
-TEST_CASE("the estimated floor keeps false alarms at the significance on noise plus an offset", "[unit]") {
+TEST_CASE("the estimated floor keeps false alarms at the significance on noise plus an offset",
+          "[unit]") {
   // 200 seeded datasets per offset, significance 0.01: a rule at its nominal level names an
   // effect in at most 7 of 200 but with probability 0.001 (binomial tail; expected 2).
   for (double offset : {0.0, 3.0}) {
@@ -63,8 +66,8 @@ TEST_CASE("the estimated floor keeps false alarms at the significance on noise p
       named += !d.named.empty();
       offsets += d.termination == DiagnosisTermination::kModelFormOffset;
     }
-    INFO("offset " << offset << " scatters: gap " << gaps << ", effect named " << named << ", model-form offset "
-                   << offsets << " of 200");
+    INFO("offset " << offset << " scatters: gap " << gaps << ", effect named " << named
+                   << ", model-form offset " << offsets << " of 200");
     CHECK(named <= 7);
     // The offset is large enough to be a gap in most draws: the floor, not the gap test, keeps
     // them from being called effects.
@@ -77,7 +80,8 @@ TEST_CASE("an effect is still named through the floor of a model-form offset", "
   int named = 0;
   for (uint64_t seed = 1; seed <= 10; ++seed) {
     testing::AnalyticForwardModel model;
-    const std::vector<Observation> obs = testing::MakeObservations(&model, 0.5, {{2, 0.8}}, seed, 0, 3.0);
+    const std::vector<Observation> obs =
+        testing::MakeObservations(&model, 0.5, {{2, 0.8}}, seed, 0, 3.0);
     const Diagnosis d = Diagnose(model, obs, testing::Candidates(), DiagnoseOptions{});
     named += !d.named.empty() && testing::Candidates()[d.named[0]].key == "shape";
     for (int c : d.named) CHECK(testing::Candidates()[c].key != "control");

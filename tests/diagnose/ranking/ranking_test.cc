@@ -6,7 +6,8 @@
 namespace demcal::diagnose {
 namespace {
 
-RankingEntry Entry(const std::string& key, double chi2_base, double chi2, bool simulated, bool control = false) {
+RankingEntry Entry(const std::string& key, double chi2_base, double chi2, bool simulated,
+                   bool control = false) {
   RankingEntry e;
   e.key = key;
   e.control = control;
@@ -31,7 +32,8 @@ TEST_CASE("evidence: ΔBIC with the Schwarz penalty and the Wilks likelihood rat
 }
 
 TEST_CASE("ranking names the best simulated significant candidate and flags a near tie", "[unit]") {
-  std::vector<RankingEntry> entries = {Entry("a", 50, 30, true), Entry("b", 50, 8, true), Entry("c", 50, 2, false)};
+  std::vector<RankingEntry> entries = {Entry("a", 50, 30, true), Entry("b", 50, 8, true),
+                                       Entry("c", 50, 2, false)};
   Ranking r = RankCandidates(entries);
   CHECK(r.order.front() == 2);  // best ΔBIC, but only linearised: cannot win
   REQUIRE(r.winner == 1);
@@ -47,7 +49,8 @@ TEST_CASE("ranking names the best simulated significant candidate and flags a ne
 }
 
 TEST_CASE("ranking: a tie is named, and the control never wins", "[unit]") {
-  std::vector<RankingEntry> entries = {Entry("a", 50, 10, true), Entry("b", 50, 11, true), Entry("c", 50, 30, true)};
+  std::vector<RankingEntry> entries = {Entry("a", 50, 10, true), Entry("b", 50, 11, true),
+                                       Entry("c", 50, 30, true)};
   Ranking r = RankCandidates(entries);
   CHECK(r.winner == 0);
   CHECK(r.tied == 1);

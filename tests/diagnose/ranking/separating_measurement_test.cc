@@ -10,7 +10,8 @@ TEST_CASE("the separating measurement is where the two effects' signatures diffe
   // Four observations; the effects move the first three alike and only b moves the fourth.
   std::vector<Observation> obs;
   for (int i = 0; i < 4; ++i)
-    obs.push_back({"o" + std::to_string(i), "angle_deg", {{"coating_wt_pct", std::to_string(i)}}, 30, 1.0});
+    obs.push_back(
+        {"o" + std::to_string(i), "angle_deg", {{"coating_wt_pct", std::to_string(i)}}, 30, 1.0});
   obs[3].experiment = "aor.json";
   const Eigen::MatrixXd Js = Eigen::MatrixXd::Zero(4, 0);
   Eigen::VectorXd sa(4), sb(4), ra(4), rb(4);
@@ -26,7 +27,8 @@ TEST_CASE("the separating measurement is where the two effects' signatures diffe
   CHECK(m.prediction_b == Approx(31.5));
   CHECK(m.description.find("aor.json") != std::string::npos);
   // Identical refits everywhere: no observation of the study separates them.
-  const SeparatingMeasurement none = FindSeparatingMeasurement(Js, sa, sb, ra, ra, Eigen::VectorXd::Ones(4), obs, "a", "b");
+  const SeparatingMeasurement none =
+      FindSeparatingMeasurement(Js, sa, sb, ra, ra, Eigen::VectorXd::Ones(4), obs, "a", "b");
   CHECK_FALSE(none.separates);
   CHECK(none.description.find("a new observable") != std::string::npos);
 }
