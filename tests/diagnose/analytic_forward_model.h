@@ -124,12 +124,16 @@ class AnalyticForwardModel final : public ForwardModel {
   // cannot determine the base parameter).
   double base_stop_unit = -1, base_step = 0.01;
   int settle_at_scale = 1;
+  double stall_shift = 0;  // > 0: unsettled rounds all stop at 1 − stall_shift (stagnation)
   bool blind_base = false;
   std::vector<int> base_scales;  // the budget scales CalibrateBase was called with
   BaseCalibration CalibrateBase(int budget_scale) override {
     base_scales.push_back(budget_scale);
     const bool settles = budget_scale >= settle_at_scale;
-    const double stop = settles ? base_stop_unit : 1.0;
+    // Unsettled rounds stop nearer the truth each time (as a search given more budget does).
+    const double stop = settles           ? base_stop_unit
+                        : stall_shift > 0 ? 1.0 - stall_shift
+                                          : 1.0 - 0.1 * std::log2(budget_scale);
     double best_u = stop, best = INFINITY;
     for (int g = 0; stop < 0 && g <= 1000; ++g) {
       const double u = g / 1000.0;

@@ -74,7 +74,7 @@ TEST_CASE("an unsettled base calibration gets more budget, and nothing is ranked
   CHECK(d.base_summary.find("2x the study's budget") != std::string::npos);
   CHECK(Named(d) == "shape");
   AnalyticForwardModel never;
-  never.settle_at_scale = 1000;  // stops on its budget at u = 1 every time: a gap it made itself
+  never.settle_at_scale = 1000;  // stops on its budget at u = 1, 0.9, 0.8: far from 0.375
   obs = testing::MakeObservations(&never, 0.5, {}, 1);
   d = Diagnose(never, obs, testing::Candidates(), DiagnoseOptions{});
   CHECK(never.base_scales == std::vector<int>{1, 2, 4});
@@ -82,6 +82,16 @@ TEST_CASE("an unsettled base calibration gets more budget, and nothing is ranked
   CHECK(d.steps.empty());
   CHECK(d.named.empty());
   CHECK(d.message.find("no effect ranked") != std::string::npos);
+  // A search that gains nothing from twice the budget has settled where it is (stagnation).
+  AnalyticForwardModel stalled;
+  stalled.settle_at_scale = 1000;
+  stalled.stall_shift = 0.5;  // every round stops at u = 0.5: mu = 0.6 against the truth 0.5
+  obs = testing::MakeObservations(&stalled, 0.6, {{2, 0.8}}, 1);
+  d = Diagnose(stalled, obs, testing::Candidates(), DiagnoseOptions{});
+  CHECK(stalled.base_scales == std::vector<int>{1, 2});
+  CHECK(d.base.settled);
+  CHECK(d.base_summary.find("lowered chi2 by less than 1") != std::string::npos);
+  CHECK(Named(d) == "shape");
 }
 
 TEST_CASE("a base parameter the data cannot determine is reported before any effect", "[unit]") {
