@@ -10,29 +10,64 @@
 #include "files/measurement_table.h"
 #include "objectives/farm/farm.h"
 #include "outputs/exit_codes.h"
-#include "workflow/calibration/study_file.h"
 #include "outputs/output_lock.h"
+#include "workflow/calibration/study_file.h"
 
 namespace demcal::diagnose {
 namespace {
 
-bool ChooseEffects(const std::vector<std::string>& keys, std::vector<const Effect*>* out, std::string* error) {
+bool ChooseEffects(const std::vector<std::string>& keys, std::vector<const Effect*>* out,
+                   std::string* error) {
   if (keys.empty()) return *out = EffectLibrary(), true;
   for (const std::string& k : keys) {
     const Effect* e = FindEffect(k);
-    if (!e) return *error = "--effects: unknown effect '" + k + "'; the library: " + EffectKeys(), false;
+    if (!e)
+      return *error = "--effects: unknown effect '" + k + "'; the library: " + EffectKeys(), false;
     out->push_back(e);
   }
   return true;
 }
 
-DiagnosisRunInfo RunInfo(const DiagnoseCommandOptions& o, const workflow::StudyFile& study, const EffectContext& c,
-                         const std::vector<CandidateEffect>& candidates, const Diagnosis& d, const StudyModel& m) {
+// Whether the study fits the property of the pair (subject material, one of `others`).
+bool Fits(const workflow::StudyFile& study, calibrate::PairProperty property,
+          const std::string& material, const std::vector<std::string>& others) {
+  const core::Scene& model = study.experiment().model;
+  const int m = model.MaterialIndex(material);
+  for (const calibrate::Parameter& p : study.space.parameters) {
+    if (p.property != property || p.curve >= 0) continue;
+    for (const std::string& other : others) {
+      const int o = model.MaterialIndex(other);
+      if ((p.material_i == m && p.material_j == o) || (p.material_i == o && p.material_j == m))
+        return true;
+    }
+  }
+  return false;
+}
+
+// A candidate that shifts a property the study already fits is a copy of a fitted parameter:
+// guarded like the control, never named (docs/diagnose.md "Ambiguity and the control").
+bool CopiesFittedParameter(const std::string& key, const workflow::StudyFile& study,
+                           const EffectContext& c) {
+  using calibrate::PairProperty;
+  if (key == "sliding_friction_control") return true;
+  if (key == "rolling_resistance")
+    return Fits(study, PairProperty::kRollingFriction, c.material, {c.material});
+  if (key == "jkr_adhesion")
+    return Fits(study, PairProperty::kInterfacialEnergy, c.material, {c.material});
+  if (key == "wall_friction")
+    return Fits(study, PairProperty::kSlidingFriction, c.material, c.wall_materials);
+  return false;
+}
+
+DiagnosisRunInfo RunInfo(const DiagnoseCommandOptions& o, const workflow::StudyFile& study,
+                         const EffectContext& c, const std::vector<CandidateEffect>& candidates,
+                         const Diagnosis& d, const StudyModel& m) {
   DiagnosisRunInfo info{o.study_path, study.description};
   const workflow::ExperimentFile& e = study.experiment();
   for (const workflow::StudyTarget& t : study.targets) {
     info.synthetic = info.synthetic || workflow::IsModelMadeProvenance(t.provenance);
-    if (std::find(info.data_provenance.begin(), info.data_provenance.end(), t.provenance) == info.data_provenance.end())
+    if (std::find(info.data_provenance.begin(), info.data_provenance.end(), t.provenance) ==
+        info.data_provenance.end())
       info.data_provenance.push_back(t.provenance);
   }
   info.fidelity = (o.quick ? e.quick_fidelity : e.fidelity).name;
@@ -43,7 +78,8 @@ DiagnosisRunInfo RunInfo(const DiagnoseCommandOptions& o, const workflow::StudyF
   info.candidates = candidates;
   for (const calibrate::Parameter& p : study.space.parameters) info.base_names.push_back(p.name);
   if (!d.base.base_unit.empty()) info.base_before_si = study.space.FromUnit(d.base.base_unit);
-  if (!d.final_point.base_unit.empty()) info.base_after_si = study.space.FromUnit(d.final_point.base_unit);
+  if (!d.final_point.base_unit.empty())
+    info.base_after_si = study.space.FromUnit(d.final_point.base_unit);
   info.journal_error = m.journal_error();
   return info;
 }
@@ -54,15 +90,19 @@ int RunDiagnose(const DiagnoseCommandOptions& o, std::ostream& log) {
   using namespace demcal::workflow;
   std::string error;
   StudyFile study;
-  if (!LoadStudyFile(o.study_path, &study, &error)) return log << "error: " << error << "\n", kExitInvalidInput;
+  if (!LoadStudyFile(o.study_path, &study, &error))
+    return log << "error: " << error << "\n", kExitInvalidInput;
   study.candidate_targets.clear();  // a diagnosis fits the measured targets only
   if (study.clump_count.enabled())
-    return log << "error: " << o.study_path << ": 'clump_count': not supported by diagnose (the shape is a "
-               << "candidate effect here)\n", kExitInvalidInput;
+    return log << "error: " << o.study_path
+               << ": 'clump_count': not supported by diagnose (the shape is a "
+               << "candidate effect here)\n",
+           kExitInvalidInput;
   if (!o.diagnose.IsValid(&error)) return log << "error: " << error << "\n", kExitInvalidInput;
   std::vector<const Effect*> effects;
   EffectContext context;
-  if (!ChooseEffects(o.effects, &effects, &error) || !MakeEffectContext(study, o.species, &context, &error))
+  if (!ChooseEffects(o.effects, &effects, &error) ||
+      !MakeEffectContext(study, o.species, &context, &error))
     return log << "error: " << error << "\n", kExitInvalidInput;
   OutputLock lock;
   // Under mpirun rank 0 locks and writes; the other ranks run simulations (farm.h).
@@ -70,7 +110,9 @@ int RunDiagnose(const DiagnoseCommandOptions& o, std::ostream& log) {
   if (writer && !LockOutputDirectory(o.out_dir, "demcal diagnose " + o.study_path, &lock, &error))
     return log << "error: --out: " << error << "\n", kExitInvalidInput;
   std::vector<CandidateEffect> candidates;
-  for (const Effect* e : effects) candidates.push_back({e->Key(), e->Description(), e->Parameters(context)});
+  for (const Effect* e : effects)
+    candidates.push_back({e->Key(), e->Description(), e->Parameters(context),
+                          CopiesFittedParameter(e->Key(), study, context)});
   StudyModelOptions mo{o.out_dir, o.quick, o.threads, o.max_evaluations, o.quiet ? nullptr : &log};
   std::unique_ptr<StudyModel> model = StudyModel::Create(study, effects, context, mo, &error);
   if (!model) return log << "error: " << error << "\n", kExitInvalidInput;
@@ -78,19 +120,23 @@ int RunDiagnose(const DiagnoseCommandOptions& o, std::ostream& log) {
     if (!o.quiet) log << "diagnose: " << line << "\n" << std::flush;
   };
   if (!o.quiet)
-    log << "diagnose: " << study.targets.size() << " observations; subject species " << context.species
-        << (context.coating_column.empty() ? "" : "; coating column " + context.coating_column) << "; "
-        << candidates.size() << " candidate effects\n";
+    log << "diagnose: " << study.targets.size() << " observations; subject species "
+        << context.species
+        << (context.coating_column.empty() ? "" : "; coating column " + context.coating_column)
+        << "; " << candidates.size() << " candidate effects\n";
   const Diagnosis d = Diagnose(*model, model->Observations(), candidates, o.diagnose, progress);
-  if (d.termination == DiagnosisTermination::kInvalid) return log << "error: " << d.message << "\n", kExitInvalidInput;
-  if (writer && !WriteDiagnosisOutputs(o.out_dir, RunInfo(o, study, context, candidates, d, *model), d, &error))
+  if (d.termination == DiagnosisTermination::kInvalid)
+    return log << "error: " << d.message << "\n", kExitInvalidInput;
+  if (!WriteDiagnosisOutputs(o.out_dir, RunInfo(o, study, context, candidates, d, *model), d,
+                             &error))
     return log << "error: " << error << "\n", kExitOutputError;
   std::ostringstream times;
-  for (const PhaseTime& p : d.phases) times << " " << p.phase << " " << p.simulations << " runs " << p.wall_time_s << " s;";
+  for (const PhaseTime& p : d.phases)
+    times << " " << p.phase << " " << p.simulations << " runs " << p.wall_time_s << " s;";
   if (!o.quiet)
-    log << "diagnose: " << d.message << "\ndiagnose: " << d.simulations << " simulations (" << d.simulations_reused
-        << " from journal), " << d.wall_time_s << " s:" << times.str() << "\ndiagnose: outputs in " << o.out_dir
-        << " (diagnosis.json)\n";
+    log << "diagnose: " << d.message << "\ndiagnose: " << d.simulations << " simulations ("
+        << d.simulations_reused << " from journal), " << d.wall_time_s << " s:" << times.str()
+        << "\ndiagnose: outputs in " << o.out_dir << " (diagnosis.json)\n";
   return d.termination == DiagnosisTermination::kFailed ? kExitRunFailed : kExitOk;
 }
 

@@ -55,10 +55,10 @@ class RowReader {
     if (row->unit != info->unit) return Fail("unit", "'" + row->unit + "' but " + row->observable + " is in " + info->unit);
     if (row->material.empty()) return Fail("material", "empty");
     if (row->source.empty()) return Fail("source", "empty: every value says where it came from");
-    if (row->provenance != "measured" && row->provenance != "inferred" && row->provenance != "synthetic" &&
-        !IsSimulatedProvenance(row->provenance))
-      return Fail("provenance", "'" + row->provenance + "'; allowed: measured, inferred, synthetic, " +
-                                    "simulated:<engine> (engine: 1 to 40 of a-z, 0-9, '.', '-', '_')");
+    const std::string& p = row->provenance;
+    if (p != "measured" && p != "inferred" && p != "synthetic" && !IsSimulatedProvenance(p))
+      return Fail("provenance", "'" + p + "'; allowed: measured, inferred, synthetic, " +
+                                    "simulated:<engine> (engine: 1 to 40 of a-z, 0-9, . - _)");
     if (!ParseNumber(cells.at("value"), &row->value))
       return Fail("value", "'" + cells.at("value") + "' is not a finite decimal number");
     if (!info->Contains(row->value))
@@ -96,7 +96,8 @@ bool IsSimulatedProvenance(const std::string& provenance, std::string* engine) {
   // Lower case only, so one engine is spelled one way and rows group by it.
   if (name.empty() || name.size() > 40) return false;
   for (char c : name)
-    if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '.' || c == '-' || c == '_')) return false;
+    if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '.' || c == '-' || c == '_'))
+      return false;
   if (engine) *engine = name;
   return true;
 }

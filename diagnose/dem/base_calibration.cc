@@ -1,10 +1,9 @@
 // StudyModel::CalibrateBase: the study's own calibration (Calibration II) with no effect
 // switched on, through the "no effects" setting's evaluator and journal, and the base model's
 // sensitivities from a response surface over the candidates it evaluated.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
-
-#include <algorithm>
 
 #include "calibrate/calibration.h"
 #include "calibrate/parameter_covariance.h"
@@ -15,7 +14,8 @@ namespace demcal::diagnose {
 namespace {
 
 // d mean / d unit per target (observable units), from the evaluated candidates near the best.
-bool Sensitivities(const calibrate::CalibrationSummary& s, const std::vector<calibrate::Target>& targets,
+bool Sensitivities(const calibrate::CalibrationSummary& s,
+                   const std::vector<calibrate::Target>& targets,
                    std::vector<std::vector<double>>* jacobian, std::string* message) {
   std::vector<calibrate::Sample> samples;
   for (const calibrate::Candidate& c : s.candidates) {
@@ -27,7 +27,8 @@ bool Sensitivities(const calibrate::CalibrationSummary& s, const std::vector<cal
     }
     samples.push_back({c.unit, t});
   }
-  const calibrate::ResponseSurface surface = calibrate::FitResponseSurface(samples, s.candidates[s.best].unit);
+  const calibrate::ResponseSurface surface =
+      calibrate::FitResponseSurface(samples, s.candidates[s.best].unit);
   *message = surface.message;
   if (!surface.ok) return false;
   jacobian->assign(targets.size(), std::vector<double>(surface.jacobian.cols()));
@@ -55,7 +56,8 @@ BaseCalibration StudyModel::CalibrateBase(int budget_scale) {
   Setting* s = SettingFor({}, &error);
   if (!s) return base.message = error, base;
   calibrate::CalibrationOptions options = study_.options;
-  if (options_.max_evaluations > 0) options.optimiser_options.max_evaluations = options_.max_evaluations;
+  if (options_.max_evaluations > 0)
+    options.optimiser_options.max_evaluations = options_.max_evaluations;
   options.optimiser_options.max_evaluations *= std::max(1, budget_scale);
   base.max_evaluations = options.optimiser_options.max_evaluations;
   std::vector<calibrate::Target> targets;
@@ -63,11 +65,14 @@ BaseCalibration StudyModel::CalibrateBase(int budget_scale) {
   calibrate::CandidateProgress progress;
   if (options_.log)
     progress = [this](const calibrate::Candidate& c, double elapsed) {
-      *options_.log << "diagnose:   base candidate " << c.index + 1 << " " << study_.space.Describe(c.parameters)
-                    << " -> cost " << (c.trial.ok ? c.trial.Cost() : NAN) << " (" << std::lround(elapsed) << " s)\n"
+      *options_.log << "diagnose:   base candidate " << c.index + 1 << " "
+                    << study_.space.Describe(c.parameters) << " -> cost "
+                    << (c.trial.ok ? c.trial.Cost() : NAN) << " (" << std::lround(elapsed)
+                    << " s)\n"
                     << std::flush;
     };
-  const calibrate::CalibrationSummary summary = calibrate::Calibrate(*s->evaluator, study_.space, targets, options, progress);
+  const calibrate::CalibrationSummary summary =
+      calibrate::Calibrate(*s->evaluator, study_.space, targets, options, progress);
   run_ += summary.replicates_run;
   reused_ += summary.replicates_reused;
   Pool(s);

@@ -37,19 +37,21 @@ void BaseValues(const core::Scene& model, int s, EffectContext* out) {
   using Kind = core::SizeDistribution::Kind;
   out->relative_width = 0;
   if (size.kind == Kind::kUniform && size.max_diameter_m + size.min_diameter_m > 0)
-    out->relative_width =
-        2 * (size.max_diameter_m - size.min_diameter_m) / (size.max_diameter_m + size.min_diameter_m);
+    out->relative_width = 2 * (size.max_diameter_m - size.min_diameter_m) /
+                          (size.max_diameter_m + size.min_diameter_m);
 }
 
 }  // namespace
 
-bool MakeEffectContext(const workflow::StudyFile& study, const std::string& species, EffectContext* out,
-                       std::string* error) {
+bool MakeEffectContext(const workflow::StudyFile& study, const std::string& species,
+                       EffectContext* out, std::string* error) {
   const core::Scene& model = study.experiment().model;
   int s = -1;
   if (!species.empty()) {
     s = model.SpeciesIndex(species);
-    if (s < 0) return *error = "--species: the study's first experiment has no species '" + species + "'", false;
+    if (s < 0)
+      return *error = "--species: the study's first experiment has no species '" + species + "'",
+             false;
   } else if (!study.parameter_materials.empty()) {
     s = SubjectSpecies(model, study.parameter_materials.front().first);
   }
@@ -61,13 +63,15 @@ bool MakeEffectContext(const workflow::StudyFile& study, const std::string& spec
   for (const core::Species& sp : model.species) particle_materials.insert(sp.material);
   out->wall_materials.clear();
   for (size_t m = 0; m < model.materials.size(); ++m)
-    if (!particle_materials.count(static_cast<int>(m))) out->wall_materials.push_back(model.materials[m].name);
+    if (!particle_materials.count(static_cast<int>(m)))
+      out->wall_materials.push_back(model.materials[m].name);
   out->coating_column.clear();
   out->coating_max = 0;
   for (const workflow::StudyTarget& t : study.targets)
     for (const auto& [column, cell] : t.condition) {
       double value = 0;
-      if (column.rfind("coating", 0) != 0 || !calibrate::ParseConditionNumber(cell, &value)) continue;
+      if (column.rfind("coating", 0) != 0 || !calibrate::ParseConditionNumber(cell, &value))
+        continue;
       if (out->coating_column.empty() || out->coating_column == column) {
         out->coating_column = column;
         out->coating_max = std::max(out->coating_max, value);

@@ -40,7 +40,8 @@ StudyModel::StudyModel(const workflow::StudyFile& study, const std::vector<const
 
 std::unique_ptr<StudyModel> StudyModel::Create(const workflow::StudyFile& study,
                                                const std::vector<const Effect*>& effects,
-                                               const EffectContext& context, const StudyModelOptions& options,
+                                               const EffectContext& context,
+                                               const StudyModelOptions& options,
                                                std::string* error) {
   std::unique_ptr<StudyModel> m(new StudyModel(study, effects, context, options));
   if (!workflow::BuildStudyRuns(study, options.quick, 0, &m->runs_, error)) return nullptr;
@@ -49,15 +50,23 @@ std::unique_ptr<StudyModel> StudyModel::Create(const workflow::StudyFile& study,
   m->pool_squares_.assign(study.targets.size(), 0.0);
   m->pool_dof_.assign(study.targets.size(), 0);
   std::error_code ec;
-  if (objectives::farm::IsManager()) std::filesystem::create_directories(options.out_dir + "/journal", ec);
-  if (ec) return *error = "--out: cannot create '" + options.out_dir + "/journal': " + ec.message(), nullptr;
+  if (objectives::farm::IsManager())
+    std::filesystem::create_directories(options.out_dir + "/journal", ec);
+  if (ec)
+    return *error = "--out: cannot create '" + options.out_dir + "/journal': " + ec.message(),
+           nullptr;
   return m;
 }
 
 std::vector<Observation> StudyModel::Observations() const {
   std::vector<Observation> out;
-  for (const workflow::StudyTarget& t : study_.targets)
-    out.push_back({t.target.name, t.target.observable, t.condition, t.target.value, t.target.uncertainty});
+  for (const workflow::StudyTarget& t : study_.targets) {
+    out.push_back(
+        {t.target.name, t.target.observable, t.condition, t.target.value, t.target.uncertainty});
+    if (t.experiment >= 0 && t.experiment < static_cast<int>(study_.experiments.size()))
+      out.back().experiment =
+          std::filesystem::path(study_.experiments[t.experiment].path).filename().string();
+  }
   return out;
 }
 
@@ -67,13 +76,15 @@ std::string StudyModel::DescribeEffects(const std::vector<ActiveEffect>& effects
   for (const ActiveEffect& a : effects) {
     const std::vector<EffectParameter> p = effects_[a.candidate]->Parameters(context_);
     s << (s.tellp() > 0 ? " + " : "") << effects_[a.candidate]->Key() << "(";
-    for (size_t k = 0; k < a.values.size() && k < p.size(); ++k) s << (k ? ", " : "") << p[k].name << "=" << a.values[k];
+    for (size_t k = 0; k < a.values.size() && k < p.size(); ++k)
+      s << (k ? ", " : "") << p[k].name << "=" << a.values[k];
     s << ")";
   }
   return s.str();
 }
 
-StudyModel::Setting* StudyModel::SettingFor(const std::vector<ActiveEffect>& effects, std::string* error) {
+StudyModel::Setting* StudyModel::SettingFor(const std::vector<ActiveEffect>& effects,
+                                            std::string* error) {
   const std::string key = DescribeEffects(effects);
   auto found = settings_.find(key);
   if (found != settings_.end()) return &found->second;
@@ -81,7 +92,8 @@ StudyModel::Setting* StudyModel::SettingFor(const std::vector<ActiveEffect>& eff
   std::vector<calibrate::RunGroup> groups = runs_.groups;
   for (calibrate::RunGroup& g : groups) {
     EffectWriter writer{{}, g.condition, context_};
-    for (const ActiveEffect& a : effects) writer.effects.push_back({effects_[a.candidate], a.values});
+    for (const ActiveEffect& a : effects)
+      writer.effects.push_back({effects_[a.candidate], a.values});
     core::Scene probe = g.model;  // the effects must apply to every group's model
     if (!writer.Apply(&probe, &s.invalid)) break;
     auto fidelity = g.prepare;
@@ -105,7 +117,8 @@ StudyModel::Setting* StudyModel::SettingFor(const std::vector<ActiveEffect>& eff
   objectives::farm::Rendezvous(loaded.digest());
   s.evaluator = std::make_unique<calibrate::TargetEvaluator>(
       study_.space, std::move(groups), runs_.bindings,
-      calibrate::TargetEvaluatorOptions{.replicates = replicates_, .seed = seed_, .workers = options_.threads},
+      calibrate::TargetEvaluatorOptions{
+          .replicates = replicates_, .seed = seed_, .workers = options_.threads},
       s.journal.get());
   return &s;
 }
@@ -135,7 +148,8 @@ Prediction StudyModel::Predict(const calibrate::CandidateResult& result) const {
   p.status = result.status;
   for (size_t k = 0; k < result.targets.size() && k < pool_squares_.size(); ++k) {
     const calibrate::TargetValue& t = result.targets[k];
-    const double spread = pool_dof_[k] > 0 ? std::sqrt(pool_squares_[k] / pool_dof_[k]) : t.sem * std::sqrt(t.replicates);
+    const double spread = pool_dof_[k] > 0 ? std::sqrt(pool_squares_[k] / pool_dof_[k])
+                                           : t.sem * std::sqrt(t.replicates);
     p.mean.push_back(t.mean);
     p.spread.push_back(spread);
     p.sem.push_back(t.replicates > 0 ? spread / std::sqrt(t.replicates) : t.sem);
@@ -149,22 +163,27 @@ std::vector<Prediction> StudyModel::Evaluate(const std::vector<ModelPoint>& poin
     std::string error;
     Setting* s = SettingFor(point.effects, &error);
     Prediction p;
-    if (!s) p.status = "journal: " + error;
-    else if (!s->invalid.empty()) p.status = "effect not applicable: " + s->invalid;
+    if (!s)
+      p.status = "journal: " + error;
+    else if (!s->invalid.empty())
+      p.status = "effect not applicable: " + s->invalid;
     if (!s || !s->invalid.empty()) {
       out.push_back(p);
       continue;
     }
-    const std::vector<calibrate::CandidateResult> r = s->evaluator->EvaluateBatch({study_.space.FromUnit(point.base_unit)});
+    const std::vector<calibrate::CandidateResult> r =
+        s->evaluator->EvaluateBatch({study_.space.FromUnit(point.base_unit)});
     run_ += r[0].replicates_run;
     reused_ += r[0].replicates_reused;
     if (journal_error_.empty()) journal_error_ = r[0].journal_error;
     Pool(s);
     out.push_back(Predict(r[0]));
     if (options_.log)
-      *options_.log << "diagnose:   " << (point.effects.empty() ? "base" : DescribeEffects(point.effects)) << ": "
-                    << (out.back().ok ? "ok" : out.back().status) << " (" << r[0].replicates_run << " runs, "
-                    << r[0].replicates_reused << " from journal)\n" << std::flush;
+      *options_.log << "diagnose:   "
+                    << (point.effects.empty() ? "base" : DescribeEffects(point.effects)) << ": "
+                    << (out.back().ok ? "ok" : out.back().status) << " (" << r[0].replicates_run
+                    << " runs, " << r[0].replicates_reused << " from journal)\n"
+                    << std::flush;
   }
   return out;
 }

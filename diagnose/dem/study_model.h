@@ -24,16 +24,16 @@
 #include "diagnose/effects/effect.h"
 #include "diagnose/gap/observation.h"
 #include "diagnose/loop/forward_model.h"
-#include "workflow/calibration/study_runs.h"
 #include "workflow/calibration/study_file.h"
+#include "workflow/calibration/study_runs.h"
 
 namespace demcal::diagnose {
 
 struct StudyModelOptions {
   std::string out_dir;
   bool quick = false;
-  int threads = 0;          // runs side by side (0: all cores)
-  int max_evaluations = 0;  // base calibration budget (0: the study's)
+  int threads = 0;              // runs side by side (0: all cores)
+  int max_evaluations = 0;      // base calibration budget (0: the study's)
   std::ostream* log = nullptr;  // progress lines (nullptr: quiet)
 };
 
@@ -43,8 +43,8 @@ class StudyModel final : public ForwardModel {
   // the loop's order. Outlive the model.
   static std::unique_ptr<StudyModel> Create(const workflow::StudyFile& study,
                                             const std::vector<const Effect*>& effects,
-                                            const EffectContext& context, const StudyModelOptions& options,
-                                            std::string* error);
+                                            const EffectContext& context,
+                                            const StudyModelOptions& options, std::string* error);
   int BaseParameters() const override { return static_cast<int>(study_.space.Size()); }
   BaseCalibration CalibrateBase(int budget_scale) override;
   std::vector<std::string> BaseParameterNames() const override;
@@ -62,7 +62,7 @@ class StudyModel final : public ForwardModel {
   struct Setting {
     std::unique_ptr<calibrate::EvaluationJournal> journal;
     std::unique_ptr<calibrate::TargetEvaluator> evaluator;
-    size_t pooled = 0;  // history entries already in the pool
+    size_t pooled = 0;    // history entries already in the pool
     std::string invalid;  // why the effects cannot be applied ("" if they can)
   };
   StudyModel(const workflow::StudyFile& study, const std::vector<const Effect*>& effects,

@@ -27,13 +27,14 @@ namespace demcal::diagnose {
 // property can fall without leaving its physical range at the base model's value (μr ≥ 0,
 // Γ ≥ 0, μw ≥ 0, a relative width ≥ 0).
 struct EffectParameter {
-  std::string name;   // unique within the effect, unit in the name ("delta_mu_r")
-  std::string unit;   // "" for a dimensionless one
-  double lower = 0;   // allowed values; 0 (switched off) is inside [lower, upper]
+  std::string name;  // unique within the effect, unit in the name ("delta_mu_r")
+  std::string unit;  // "" for a dimensionless one
+  double lower = 0;  // allowed values; 0 (switched off) is inside [lower, upper]
   double upper = 1;
-  double probe = 0.5; // where the signature is computed, != 0
-  std::string more;   // the direction of a value > 0 in words: "more rolling resistance than assumed"
-  std::string less;   // of a value < 0 ("" when the effect cannot fall below the base)
+  double probe = 0.5;  // where the signature is computed, != 0
+  std::string
+      more;  // the direction of a value > 0 in words: "more rolling resistance than assumed"
+  std::string less;  // of a value < 0 ("" when the effect cannot fall below the base)
 };
 
 // The direction of a value of p in words: p.more, p.less, or "switched off" at 0.
@@ -50,11 +51,11 @@ struct EffectContext {
   double coating_max = 0;      // its largest value among the observations (> 0 when set)
   // The base model's values the signed effects shift (the first experiment file's model): the
   // lower bounds keep each property inside its physical range there.
-  double sliding_friction = 0;     // species' self-contact μs
-  double rolling_friction = 0;     // species' self-contact μr
-  double interfacial_energy = 0;   // species' self-contact Γ, J/m²
-  double wall_friction = 0;        // the smallest μs between the species and a wall material
-  double relative_width = 0;       // (d_max − d_min) / d_mean of its size cut
+  double sliding_friction = 0;    // species' self-contact μs
+  double rolling_friction = 0;    // species' self-contact μr
+  double interfacial_energy = 0;  // species' self-contact Γ, J/m²
+  double wall_friction = 0;       // the smallest μs between the species and a wall material
+  double relative_width = 0;      // (d_max − d_min) / d_mean of its size cut
 };
 
 class Effect {

@@ -1,8 +1,9 @@
 // Size polydispersity: the subject species' size distribution widens (or narrows, down to one
-// diameter) about the same mean diameter. The relative width w = (d_max − d_min) / d_mean of its uniform sieve cut (a single
-// diameter counts as w = 0) becomes w + Δ; diameters stay uniform in [d_mean(1 − w/2),
-// d_mean(1 + w/2)]. A wider distribution packs denser (small grains fill the gaps) and flows
-// differently; the repose angle moves little. Probe Δ = 0.8; w stays below 1.8 (d_min > 0).
+// diameter) about the same mean diameter. The relative width w = (d_max − d_min) / d_mean of its
+// uniform sieve cut (a single diameter counts as w = 0) becomes w + Δ; diameters stay uniform in
+// [d_mean(1 − w/2), d_mean(1 + w/2)]. A wider distribution packs denser (small grains fill the
+// gaps) and flows differently; the repose angle moves little. Probe Δ = 0.8; w stays below 1.8
+// (d_min > 0).
 #include "diagnose/effects/effect_registry.h"
 #include "diagnose/effects/effect_support.h"
 
@@ -15,12 +16,14 @@ class SizePolydispersity final : public Effect {
  public:
   std::string Key() const override { return "size_polydispersity"; }
   std::string Description() const override {
-    return "size polydispersity: relative width (d_max - d_min)/d_mean of the species' size cut widened by "
+    return "size polydispersity: relative width (d_max - d_min)/d_mean of the species' size cut "
+           "widened by "
            "delta_relative_width about the same mean";
   }
   std::vector<EffectParameter> Parameters(const EffectContext& c) const override {
     // Down to a single diameter (w = 0) at the base's width.
-    return {{"delta_relative_width", "", -c.relative_width, 1.4, 0.8, "a wider size distribution than assumed",
+    return {{"delta_relative_width", "", -c.relative_width, 1.4, 0.8,
+             "a wider size distribution than assumed",
              c.relative_width > 0 ? "a narrower size distribution than assumed" : ""}};
   }
   bool Apply(const std::vector<double>& v, const calibrate::Condition&, const EffectContext& c,
@@ -30,12 +33,15 @@ class SizePolydispersity final : public Effect {
     if (v[0] == 0) return true;
     core::SizeDistribution& size = model->species[s].size;
     using Kind = core::SizeDistribution::Kind;
-    if (size.kind == Kind::kTable) return *why = "species '" + c.species + "' has a size table", false;
+    if (size.kind == Kind::kTable)
+      return *why = "species '" + c.species + "' has a size table", false;
     const double lo = size.kind == Kind::kFixed ? size.diameter_m : size.min_diameter_m;
     const double hi = size.kind == Kind::kFixed ? size.diameter_m : size.max_diameter_m;
     const double mean = 0.5 * (lo + hi), width = (hi - lo) / mean + v[0];
     if (!(width >= 0 && width < kMaxWidth))
-      return *why = "relative width " + std::to_string(width) + " outside [0, " + std::to_string(kMaxWidth) + ")", false;
+      return *why = "relative width " + std::to_string(width) + " outside [0, " +
+                    std::to_string(kMaxWidth) + ")",
+             false;
     size.kind = Kind::kUniform;
     size.min_diameter_m = mean * (1 - 0.5 * width);
     size.max_diameter_m = mean * (1 + 0.5 * width);

@@ -15,11 +15,13 @@ class SlidingFrictionControl final : public Effect {
  public:
   std::string Key() const override { return "sliding_friction_control"; }
   std::string Description() const override {
-    return "control: sliding friction of the species' self-contact shifted by delta_mu_s (redundant when the study "
+    return "control: sliding friction of the species' self-contact shifted by delta_mu_s "
+           "(redundant when the study "
            "fits it)";
   }
   std::vector<EffectParameter> Parameters(const EffectContext& c) const override {
-    return {{"delta_mu_s", "", -std::min(0.5, c.sliding_friction), 0.8, 0.2, "more sliding friction than assumed",
+    return {{"delta_mu_s", "", -std::min(0.5, c.sliding_friction), 0.8, 0.2,
+             "more sliding friction than assumed",
              c.sliding_friction > 0 ? "less sliding friction than assumed" : ""}};
   }
   bool Apply(const std::vector<double>& v, const calibrate::Condition&, const EffectContext& c,

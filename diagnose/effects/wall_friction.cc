@@ -12,7 +12,8 @@ class WallFriction final : public Effect {
  public:
   std::string Key() const override { return "wall_friction"; }
   std::string Description() const override {
-    return "particle-wall friction: sliding friction between the species and every wall material shifted by delta_mu_w";
+    return "particle-wall friction: sliding friction between the species and every wall material "
+           "shifted by delta_mu_w";
   }
   std::vector<EffectParameter> Parameters(const EffectContext& c) const override {
     // Down to μw = 0 on the smoothest wall.
@@ -27,7 +28,8 @@ class WallFriction final : public Effect {
     for (const std::string& wall : c.wall_materials) {
       int w = 0;
       if (!FindMaterial(*model, wall, &w, why)) return false;
-      if (!ShiftPairProperty(calibrate::PairProperty::kSlidingFriction, m, w, v[0], model, why)) return false;
+      if (!ShiftPairProperty(calibrate::PairProperty::kSlidingFriction, m, w, v[0], model, why))
+        return false;
     }
     return true;
   }

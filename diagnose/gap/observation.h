@@ -30,8 +30,10 @@ struct Observation {
   double measured = 0;
   double uncertainty = 1;  // measurement standard uncertainty, > 0
   double simulated = 0;
-  double sem = 0;    // simulation standard error of the mean, >= 0
-  double floor = 0;  // model-discrepancy noise floor, >= 0
+  double sem = 0;          // simulation standard error of the mean, >= 0
+  double floor = 0;        // model-discrepancy noise floor, >= 0
+  double scatter = 0;      // the simulation's single-run scatter (the floors' unit), >= 0
+  std::string experiment;  // the experiment file that measures it ("" when not known)
 
   double Sigma() const { return std::sqrt(uncertainty * uncertainty + sem * sem + floor * floor); }
   double Residual() const { return (simulated - measured) / Sigma(); }

@@ -3,7 +3,10 @@
 // study's calibration is run with its own budget; when it ends on that budget rather than by its
 // own criterion (calibrate/termination.h: within_noise, converged, out_of_range) it is run again
 // with twice the budget, then four times (kMaxBaseBudgetScale) — the journal reads back the runs
-// already made, so each extension costs only its new candidates. A fit that has not settled then
+// already made, so each extension costs only its new candidates. It also counts as settled when
+// twice the budget lowered the best χ² by less than 1 (stagnation: a noisy DEM objective may
+// never meet the optimiser's tolerance, yet more evaluations no longer move the fit by one
+// standard deviation of a fitted parameter). A fit that has not settled then
 // is reported as such and no effect is ranked on it: an unsettled base leaves a gap the
 // calibration itself would have closed, and any effect "explains" it.
 // At the settled fit, the identifiability of the base parameters (calibrate/identifiability.h on
@@ -30,12 +33,13 @@ inline constexpr int kMaxBaseBudgetScale = 4;
 
 struct BaseFit {
   BaseCalibration base;
-  int budget_scale = 1;  // the study's budget times this was used
+  int budget_scale = 1;    // the study's budget times this was used
+  bool stagnated = false;  // settled because twice the budget lowered χ² by less than 1
   calibrate::IdentifiabilityReport identifiability;
-  std::string summary;   // in words: settled or not, with which budget, what is undetermined
+  std::string summary;  // in words: settled or not, with which budget, what is undetermined
 };
 
-BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observations, double floor_factor,
-                   const std::function<void(const std::string&)>& progress);
+BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observations,
+                   double floor_factor, const std::function<void(const std::string&)>& progress);
 
 }  // namespace demcal::diagnose

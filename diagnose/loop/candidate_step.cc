@@ -15,26 +15,35 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double Since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+double Since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
 
-Eigen::VectorXd ToVector(const std::vector<double>& v) { return Eigen::Map<const Eigen::VectorXd>(v.data(), v.size()); }
+Eigen::VectorXd ToVector(const std::vector<double>& v) {
+  return Eigen::Map<const Eigen::VectorXd>(v.data(), v.size());
+}
 
 // What a step works with: the fixed sigmas, the residuals at the fit and the standardised J.
 struct Frame {
   const std::vector<Observation>* observations;
   Eigen::VectorXd sigma, r0;
+  Eigen::VectorXd q;  // single-run scatter per sigma (the estimated floor's shape)
   Eigen::MatrixXd J;
   std::vector<double> delta_lower, delta_upper;
   int fitted = 0;
   double chi2_base = 0;
   double significance = 0.01;
+  double per_candidate = 0.01;  // significance over the candidates of the step (Bonferroni)
   int n() const { return static_cast<int>(r0.size()); }
 };
 
-Frame MakeFrame(const std::vector<Observation>& observations, const FitState& fit, const DiagnoseOptions& o) {
+Frame MakeFrame(const std::vector<Observation>& observations, const FitState& fit,
+                const DiagnoseOptions& o) {
   Frame f{&observations};
-  const std::vector<Observation> at = WithPrediction(observations, fit.prediction, o.discrepancy_floor);
+  const std::vector<Observation> at =
+      WithPrediction(observations, fit.prediction, o.discrepancy_floor);
   f.sigma = Sigmas(at);
+  f.q = ScatterPerSigma(at);
   f.r0 = StandardisedResiduals(observations, fit.prediction.mean, f.sigma);
   f.J = f.sigma.cwiseInverse().asDiagonal() * fit.jacobian;
   const std::vector<double> c = fit.Coordinates();
@@ -52,7 +61,8 @@ Frame MakeFrame(const std::vector<Observation>& observations, const FitState& fi
 struct Work {
   int candidate = 0;
   Eigen::VectorXd signature;  // raw units per unit of the parameter
-  Eigen::MatrixXd jacobian;   // the base sensitivities re-estimated near its refit (empty: the fit's)
+  Eigen::MatrixXd
+      jacobian;  // the base sensitivities re-estimated near its refit (empty: the fit's)
   LinearRefitResult refit;
   ModelPoint best_point;
   Prediction best_prediction;
@@ -62,24 +72,32 @@ struct Work {
   std::string probe_status;
 };
 
-LinearRefitResult Refit(const Frame& f, const EffectParameter& p, const Eigen::VectorXd& signature) {
+LinearRefitResult Refit(const Frame& f, const EffectParameter& p,
+                        const Eigen::VectorXd& signature) {
   const Eigen::MatrixXd S = f.sigma.cwiseInverse().cwiseProduct(signature);
   return LinearRefit(f.r0, f.J, S, {p.lower}, {p.upper}, f.delta_lower, f.delta_upper);
 }
 
-void Fill(const Frame& f, const Work& w, const std::vector<CandidateEffect>& candidates, RankingEntry* e) {
+// The evidence with the discrepancy floor in the variance (evidence.h), at the significance
+// over the step's candidates: the step names at most one of K, so each is held to α/K and a
+// model that fits names none with probability ≥ 1 − α (Bonferroni).
+void Fill(const Frame& f, const Work& w, const std::vector<CandidateEffect>& candidates,
+          const Eigen::VectorXd& r, RankingEntry* e) {
   const int k = static_cast<int>(candidates[w.candidate].parameters.size());
   e->candidate = w.candidate;
   e->key = candidates[w.candidate].key;
   e->chi2_linear = w.refit.chi2;
-  e->linear = EvidenceOf(f.chi2_base, w.refit.chi2, k, f.n(), f.significance);
+  e->linear = EvidenceWithFloor(f.r0, w.refit.residuals, f.q, k, f.fitted, f.per_candidate);
   e->simulated = w.simulated;
   e->chi2 = w.simulated ? w.best_chi2 : w.refit.chi2;
-  e->evidence = EvidenceOf(f.chi2_base, e->chi2, k, f.n(), f.significance);
+  e->evidence = EvidenceWithFloor(f.r0, r, f.q, k, f.fitted, f.per_candidate);
   e->chi2_per_dof = e->chi2 / std::max(1, f.n() - f.fitted - k);
+  e->control = candidates[w.candidate].control;
   e->signature_match = SignatureMatch(f.r0, f.J, f.sigma.cwiseInverse().cwiseProduct(w.signature));
-  if (w.best_point.effects.empty()) e->values = {w.refit.t(0)};
-  else e->values = w.best_point.effects.back().values;
+  if (w.best_point.effects.empty())
+    e->values = {w.refit.t(0)};
+  else
+    e->values = w.best_point.effects.back().values;
 }
 
 // Simulates the Gauss–Newton point of each candidate; keeps it when it beats the best so far
@@ -101,7 +119,8 @@ void SimulateRefits(ForwardModel& model, const Frame& f, const FitState& fit,
     }
     const double t = w.refit.t(0);
     if (t != 0) {
-      const Eigen::VectorXd moved = ToVector(got[i].mean) - ToVector(fit.prediction.mean) - fit.jacobian * w.refit.delta;
+      const Eigen::VectorXd moved =
+          ToVector(got[i].mean) - ToVector(fit.prediction.mean) - fit.jacobian * w.refit.delta;
       w.signature = moved / t;
     }
     w.refit = Refit(f, candidates[w.candidate].parameters[0], w.signature);
@@ -109,13 +128,17 @@ void SimulateRefits(ForwardModel& model, const Frame& f, const FitState& fit,
 }
 
 // Entry i of the step and its residuals at the refit (simulated when there is one).
-void Record(const Frame& f, const Work& w, const std::vector<CandidateEffect>& candidates, int i, DiagnosisStep* step) {
+void Record(const Frame& f, const Work& w, const std::vector<CandidateEffect>& candidates, int i,
+            DiagnosisStep* step) {
   RankingEntry& e = step->entries[i];
-  Fill(f, w, candidates, &e);
-  if (!w.probe_ok) e.note = "signature run failed: " + w.probe_status;
-  else if (e.signature_match == 0) e.note = "redundant with the fitted parameters";
-  const Eigen::VectorXd r = w.simulated ? StandardisedResiduals(*f.observations, w.best_prediction.mean, f.sigma)
-                                        : w.refit.residuals;
+  const Eigen::VectorXd r =
+      w.simulated ? StandardisedResiduals(*f.observations, w.best_prediction.mean, f.sigma)
+                  : w.refit.residuals;
+  Fill(f, w, candidates, r, &e);
+  if (!w.probe_ok)
+    e.note = "signature run failed: " + w.probe_status;
+  else if (e.signature_match == 0)
+    e.note = "redundant with the fitted parameters";
   step->refit_residuals[i].assign(r.data(), r.data() + r.size());
 }
 
@@ -127,13 +150,15 @@ void Record(const Frame& f, const Work& w, const std::vector<CandidateEffect>& c
 // saturates at the refit point but not at the base would keep pulling the refit the wrong
 // way), and a secant signature inherits their error.
 void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
-                     const std::vector<CandidateEffect>& candidates, const std::vector<Work*>& work) {
+                     const std::vector<CandidateEffect>& candidates,
+                     const std::vector<Work*>& work) {
   const size_t p = fit.point.base_unit.size();
   std::vector<ModelPoint> probes;
   std::vector<std::vector<double>> steps(work.size(), std::vector<double>(p + 1));
   for (size_t i = 0; i < work.size(); ++i) {
     double noise_max = 0;
-    for (int k = 0; k < f.n(); ++k) noise_max = std::max(noise_max, work[i]->best_prediction.sem[k] / f.sigma(k));
+    for (int k = 0; k < f.n(); ++k)
+      noise_max = std::max(noise_max, work[i]->best_prediction.sem[k] / f.sigma(k));
     const double h = calibrate::FiniteDifferenceStep(noise_max);
     for (size_t j = 0; j < p; ++j) {
       ModelPoint q = work[i]->best_point;
@@ -144,7 +169,8 @@ void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
     const EffectParameter& e = candidates[work[i]->candidate].parameters[0];
     ModelPoint q = work[i]->best_point;
     double& t = q.effects.back().values[0];
-    steps[i][p] = t + h * (e.upper - e.lower) > e.upper ? -h * (e.upper - e.lower) : h * (e.upper - e.lower);
+    steps[i][p] =
+        t + h * (e.upper - e.lower) > e.upper ? -h * (e.upper - e.lower) : h * (e.upper - e.lower);
     t += steps[i][p];
     probes.push_back(q);
   }
@@ -154,7 +180,9 @@ void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
     Work& w = *work[i];
     Eigen::MatrixXd J = fit.jacobian;  // the added effects' columns are kept
     auto slope = [&](size_t j) {
-      return Eigen::VectorXd((ToVector(probed[i * (p + 1) + j].mean) - ToVector(w.best_prediction.mean)) / steps[i][j]);
+      return Eigen::VectorXd(
+          (ToVector(probed[i * (p + 1) + j].mean) - ToVector(w.best_prediction.mean)) /
+          steps[i][j]);
     };
     for (size_t j = 0; j < p; ++j)
       if (probed[i * (p + 1) + j].ok) J.col(j) = slope(j);
@@ -167,11 +195,14 @@ void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
     here.point.effects.pop_back();
     const std::vector<double> c = here.Coordinates();
     std::vector<double> lo, hi;
-    for (size_t j = 0; j < c.size(); ++j) lo.push_back(fit.lower[j] - c[j]), hi.push_back(fit.upper[j] - c[j]);
-    const Eigen::VectorXd r = StandardisedResiduals(*f.observations, w.best_prediction.mean, f.sigma);
+    for (size_t j = 0; j < c.size(); ++j)
+      lo.push_back(fit.lower[j] - c[j]), hi.push_back(fit.upper[j] - c[j]);
+    const Eigen::VectorXd r =
+        StandardisedResiduals(*f.observations, w.best_prediction.mean, f.sigma);
     const Eigen::MatrixXd Js = f.sigma.cwiseInverse().asDiagonal() * J;
     const Eigen::MatrixXd S = f.sigma.cwiseInverse().cwiseProduct(w.signature);
-    const LinearRefitResult step = LinearRefit(r, Js, S, {e.lower - t_now}, {e.upper - t_now}, lo, hi);
+    const LinearRefitResult step =
+        LinearRefit(r, Js, S, {e.lower - t_now}, {e.upper - t_now}, lo, hi);
     for (double scale : {1.0, 0.5}) {  // the Gauss–Newton step, then half of it (below)
       const ActiveEffect added{w.candidate, {t_now + scale * step.t(0)}};
       tries[i].push_back(here.Step(scale * step.delta, &added));
@@ -188,10 +219,13 @@ void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
     std::vector<size_t> failed;
     for (size_t k = 0; k < pending.size(); ++k) {
       Work& w = *work[pending[k]];
-      const double chi2 = got[k].ok ? StandardisedResiduals(*f.observations, got[k].mean, f.sigma).squaredNorm()
-                                    : INFINITY;
-      if (chi2 < w.best_chi2) w.best_chi2 = chi2, w.best_point = points[k], w.best_prediction = got[k];
-      else failed.push_back(pending[k]);
+      const double chi2 =
+          got[k].ok ? StandardisedResiduals(*f.observations, got[k].mean, f.sigma).squaredNorm()
+                    : INFINITY;
+      if (chi2 < w.best_chi2)
+        w.best_chi2 = chi2, w.best_point = points[k], w.best_prediction = got[k];
+      else
+        failed.push_back(pending[k]);
     }
     pending.swap(failed);
   }
@@ -206,7 +240,8 @@ void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
 void RefineRefits(ForwardModel& model, const Frame& f, const FitState& fit,
                   const std::vector<CandidateEffect>& candidates, int iterations,
                   std::vector<Work*> active) {
-  std::erase_if(active, [](const Work* w) { return !w->simulated; });  // no refit point to start from
+  std::erase_if(active,
+                [](const Work* w) { return !w->simulated; });  // no refit point to start from
   for (int k = 0; k < iterations && !active.empty(); ++k) {
     std::vector<double> before;
     for (const Work* w : active) before.push_back(w->best_chi2);
@@ -218,14 +253,15 @@ void RefineRefits(ForwardModel& model, const Frame& f, const FitState& fit,
   }
 }
 
-std::vector<ObservableShare> Carried(const Frame& f, const std::vector<Observation>& obs, const Eigen::VectorXd& winner,
+std::vector<ObservableShare> Carried(const Frame& f, const std::vector<Observation>& obs,
+                                     const Eigen::VectorXd& winner,
                                      const Eigen::VectorXd* runner_up) {
   std::map<std::string, ObservableShare> by;
   for (int i = 0; i < f.n(); ++i) {
     ObservableShare& s = by[obs[i].observable];
     s.observable = obs[i].observable;
     s.against_base += f.r0(i) * f.r0(i) - winner(i) * winner(i);
-    if (runner_up) s.against_runner_up += (*runner_up)(i) * (*runner_up)(i) - winner(i) * winner(i);
+    if (runner_up) s.against_runner_up += (*runner_up)(i) * (*runner_up)(i)-winner(i) * winner(i);
   }
   std::vector<ObservableShare> out;
   for (const auto& [name, s] : by) out.push_back(s);
@@ -238,10 +274,12 @@ std::vector<ObservableShare> Carried(const Frame& f, const std::vector<Observati
 }  // namespace
 
 StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>& observations,
-                             const std::vector<CandidateEffect>& candidates, const std::vector<int>& remaining,
-                             const FitState& fit, const DiagnoseOptions& options, const DiagnoseProgress& progress) {
+                             const std::vector<CandidateEffect>& candidates,
+                             const std::vector<int>& remaining, const FitState& fit,
+                             const DiagnoseOptions& options, const DiagnoseProgress& progress) {
   StepOutcome out;
-  const Frame f = MakeFrame(observations, fit, options);
+  Frame f = MakeFrame(observations, fit, options);
+  f.per_candidate = options.significance / std::max<size_t>(1, remaining.size());
   const int sims0 = model.SimulationsRun();
   auto start = Clock::now();
   std::vector<ModelPoint> probes;
@@ -249,7 +287,8 @@ StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>
     const ActiveEffect added{c, {candidates[c].parameters[0].probe}};
     probes.push_back(fit.Step(Eigen::VectorXd::Zero(f.fitted), &added));
   }
-  if (progress) progress("signatures of " + std::to_string(remaining.size()) + " candidate effects");
+  if (progress)
+    progress("signatures of " + std::to_string(remaining.size()) + " candidate effects");
   const std::vector<Prediction> probed = model.Evaluate(probes);
   out.phases.push_back({"signatures", model.SimulationsRun() - sims0, Since(start)});
   std::vector<Work> work;
@@ -258,7 +297,8 @@ StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>
     w.probe_ok = probed[i].ok;
     w.probe_status = probed[i].status;
     if (probed[i].ok) {
-      w.signature = (ToVector(probed[i].mean) - ToVector(fit.prediction.mean)) / candidates[w.candidate].parameters[0].probe;
+      w.signature = (ToVector(probed[i].mean) - ToVector(fit.prediction.mean)) /
+                    candidates[w.candidate].parameters[0].probe;
     } else {
       w.signature = Eigen::VectorXd::Zero(f.n());
     }
@@ -268,13 +308,16 @@ StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>
   // The shortlist: significant by the linear prediction, best linear ΔBIC first.
   std::vector<Work*> shortlist;
   for (Work& w : work)
-    if (EvidenceOf(f.chi2_base, w.refit.chi2, 1, f.n(), f.significance).significant) shortlist.push_back(&w);
-  std::sort(shortlist.begin(), shortlist.end(), [](const Work* a, const Work* b) { return a->refit.chi2 < b->refit.chi2; });
+    if (EvidenceOf(f.chi2_base, w.refit.chi2, 1, f.n(), f.significance).significant)
+      shortlist.push_back(&w);
+  std::sort(shortlist.begin(), shortlist.end(),
+            [](const Work* a, const Work* b) { return a->refit.chi2 < b->refit.chi2; });
   if (static_cast<int>(shortlist.size()) > options.dem_refits) shortlist.resize(options.dem_refits);
   start = Clock::now();
   const int sims1 = model.SimulationsRun();
   if (!shortlist.empty()) {
-    if (progress) progress("refitting " + std::to_string(shortlist.size()) + " candidates by simulation");
+    if (progress)
+      progress("refitting " + std::to_string(shortlist.size()) + " candidates by simulation");
     SimulateRefits(model, f, fit, candidates, shortlist);  // the Gauss–Newton point
     SimulateRefits(model, f, fit, candidates, shortlist);  // after the secant correction
     RefineRefits(model, f, fit, candidates, options.extra_refits, shortlist);
@@ -285,7 +328,8 @@ StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>
   for (size_t i = 0; i < work.size(); ++i) {
     Record(f, work[i], candidates, static_cast<int>(i), &out.step);
     out.step.signatures.push_back(std::vector<double>(probed[i].mean.size()));
-    for (size_t k = 0; k < probed[i].mean.size(); ++k) out.step.signatures[i][k] = probed[i].mean[k] - fit.prediction.mean[k];
+    for (size_t k = 0; k < probed[i].mean.size(); ++k)
+      out.step.signatures[i][k] = probed[i].mean[k] - fit.prediction.mean[k];
   }
   out.step.ranking = RankCandidates(out.step.entries);
   out.step.simulations = model.SimulationsRun() - sims0;
@@ -294,10 +338,22 @@ StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>
   const Work& w = work[win];
   int runner = -1;
   for (int i : out.step.ranking.order)
-    if (i != win) { runner = i; break; }
+    if (i != win) {
+      runner = i;
+      break;
+    }
   const Eigen::VectorXd rw = ToVector(out.step.refit_residuals[win]);
-  const Eigen::VectorXd rr = runner >= 0 ? ToVector(out.step.refit_residuals[runner]) : Eigen::VectorXd();
+  const Eigen::VectorXd rr =
+      runner >= 0 ? ToVector(out.step.refit_residuals[runner]) : Eigen::VectorXd();
   out.step.carried = Carried(f, observations, rw, runner >= 0 ? &rr : nullptr);
+  if (out.step.ranking.tied >= 0) {
+    const int t = out.step.ranking.tied;
+    const Eigen::VectorXd sa = f.sigma.cwiseInverse().cwiseProduct(work[win].signature);
+    const Eigen::VectorXd sb = f.sigma.cwiseInverse().cwiseProduct(work[t].signature);
+    out.step.separating =
+        FindSeparatingMeasurement(f.J, sa, sb, rw, ToVector(out.step.refit_residuals[t]), f.sigma,
+                                  observations, out.step.entries[win].key, out.step.entries[t].key);
+  }
   out.has_winner = true;
   out.next.point = w.best_point;
   out.next.prediction = w.best_prediction;

@@ -6,6 +6,7 @@
 #include "diagnose/loop/base_fit.h"
 #include "diagnose/loop/candidate_step.h"
 #include "diagnose/loop/fit_state.h"
+#include "diagnose/ranking/discrepancy_floor.h"
 #include "objectives/common/input_limits.h"
 
 namespace demcal::diagnose {
@@ -25,10 +26,12 @@ bool DiagnoseOptions::IsValid(std::string* error) const {
   namespace limits = objectives::limits;
   if (!limits::kSignificance.Contains(significance))
     return *error = "significance must be in " + limits::kSignificance.Text() + ", got " +
-                    Shown(significance), false;
+                    Shown(significance),
+           false;
   if (!limits::kDiscrepancyFloor.Contains(discrepancy_floor))
     return *error = "discrepancy floor must be in " + limits::kDiscrepancyFloor.Text() +
-                    " single-run scatters, got " + Shown(discrepancy_floor), false;
+                    " single-run scatters, got " + Shown(discrepancy_floor),
+           false;
   if (!limits::kDiagnoseRefits.Contains(dem_refits))
     return *error = "refits must be in " + limits::kDiagnoseRefits.Text(), false;
   if (!limits::kDiagnoseMaxEffects.Contains(max_effects))
@@ -49,10 +52,43 @@ FitState StartingFit(const BaseCalibration& base, int observations) {
   const int p = static_cast<int>(base.base_unit.size());
   fit.jacobian = Eigen::MatrixXd::Zero(observations, p);
   for (int i = 0; i < observations && i < static_cast<int>(base.jacobian.size()); ++i)
-    for (int j = 0; j < p && j < static_cast<int>(base.jacobian[i].size()); ++j) fit.jacobian(i, j) = base.jacobian[i][j];
+    for (int j = 0; j < p && j < static_cast<int>(base.jacobian[i].size()); ++j)
+      fit.jacobian(i, j) = base.jacobian[i][j];
   fit.lower.assign(p, 0.0);
   fit.upper.assign(p, 1.0);
   return fit;
+}
+
+// The discrepancy floor the residuals of a fit with `fitted` parameters carry
+// (discrepancy_floor.h).
+double EstimatedFloor(const std::vector<Observation>& at, int fitted) {
+  const std::vector<double> r = Residuals(at);
+  return EstimateFloor(Eigen::Map<const Eigen::VectorXd>(r.data(), r.size()), ScatterPerSigma(at),
+                       static_cast<int>(at.size()) - fitted);
+}
+
+std::string FloorText(double phi) {
+  std::ostringstream s;
+  s.precision(3);
+  s << phi;
+  return s.str();
+}
+
+// "jkr_adhesion or particle_shape (delta BIC -12.1 and -11.4, within 2)" from the last step.
+std::string TieText(const Diagnosis& d, const std::vector<CandidateEffect>& candidates) {
+  std::ostringstream s;
+  s.precision(3);
+  const DiagnosisStep& step = d.steps.back();
+  const RankingEntry& a = step.entries[step.ranking.winner];
+  const RankingEntry& b = step.entries[step.ranking.tied];
+  auto one = [&candidates](const RankingEntry& e) {
+    const EffectParameter& p = candidates[e.candidate].parameters[0];
+    return e.key + " (" + (e.values.empty() ? "" : EffectDirection(p, e.values[0])) + ")";
+  };
+  s << one(a) << " or " << one(b) << " explain the gap about equally (delta BIC "
+    << a.evidence.delta_bic << " and " << b.evidence.delta_bic << ", within " << kBicIndistinct
+    << ")";
+  return s.str();
 }
 
 std::string Names(const std::vector<int>& named, const std::vector<CandidateEffect>& candidates) {
@@ -67,37 +103,57 @@ std::string Signed(const ModelPoint& point, const std::vector<CandidateEffect>& 
   s.precision(3);
   for (const ActiveEffect& a : point.effects) {
     const EffectParameter& p = candidates[a.candidate].parameters[0];
-    s << (s.tellp() > 0 ? " + " : "") << candidates[a.candidate].key << " (" << EffectDirection(p, a.values[0]) << ", "
-      << p.name << " = " << a.values[0] << (p.unit.empty() ? "" : " " + p.unit) << ")";
+    s << (s.tellp() > 0 ? " + " : "") << candidates[a.candidate].key << " ("
+      << EffectDirection(p, a.values[0]) << ", " << p.name << " = " << a.values[0]
+      << (p.unit.empty() ? "" : " " + p.unit) << ")";
   }
   return s.str();
 }
 
-void Finish(const std::vector<Observation>& observations, const FitState& fit, const DiagnoseOptions& options,
-            const std::vector<CandidateEffect>& candidates, Diagnosis* d) {
+void Finish(const std::vector<Observation>& observations, const FitState& fit,
+            const DiagnoseOptions& options, const std::vector<CandidateEffect>& candidates,
+            Diagnosis* d) {
   d->final_point = fit.point;
   d->fitted_parameters_after = fit.Fitted();
   d->after = WithPrediction(observations, fit.prediction, options.discrepancy_floor);
   d->gap_after = TestGap(d->after, fit.Fitted(), {options.significance});
+  d->floor_after = EstimatedFloor(d->after, fit.Fitted());
   std::ostringstream m;
   if (!d->base_identifiability.Identifiable() && !d->base_identifiability.singular_values.empty()) {
     m << "the data do not determine the base parameters (";
-    for (const calibrate::UndeterminedDirection& u : d->base_identifiability.undetermined) m << u.description;
+    for (const calibrate::UndeterminedDirection& u : d->base_identifiability.undetermined)
+      m << u.description;
     m << "); ";
   }
   if (d->termination == DiagnosisTermination::kBaseUnsettled) {
     m << "no effect ranked: " << d->base_summary
-      << "; raise the study's max_evaluations (or --max-evaluations) until it settles (" << d->gap_before.summary
-      << ")";
+      << "; raise the study's max_evaluations (or --max-evaluations) until it settles ("
+      << d->gap_before.summary << ")";
   } else if (d->termination == DiagnosisTermination::kNoMissingEffect) {
-    m << "no missing effect found: the base model fits within noise (" << d->gap_before.summary << ")";
+    m << "no missing effect found: the base model fits within noise (" << d->gap_before.summary
+      << ")";
   } else if (d->termination == DiagnosisTermination::kEffectFound) {
-    m << "missing effect: " << Signed(fit.point, candidates) << "; after adding it " << d->gap_after.summary;
+    m << "missing effect: " << Signed(fit.point, candidates) << "; after adding it "
+      << d->gap_after.summary;
+  } else if (d->termination == DiagnosisTermination::kNotToldApart) {
+    m << "not told apart: " << TieText(*d, candidates) << "; " << d->separating.description;
   } else if (d->termination == DiagnosisTermination::kGapRemains) {
     m << "added " << Signed(fit.point, candidates) << " but a gap remains (" << d->gap_after.summary
       << "), not explained by the library";
+    if (!d->not_told_apart.empty())
+      m << "; next, not told apart: " << TieText(*d, candidates) << "; "
+        << d->separating.description;
+    if (!d->control_note.empty()) m << "; " << d->control_note;
+  } else if (!d->control_note.empty()) {
+    m << "model-form offset / no missing effect: " << d->control_note << " (discrepancy floor "
+      << FloorText(d->floor_before) << " single-run scatter(s) beyond the fixed "
+      << options.discrepancy_floor << "; " << d->gap_before.summary << ")";
   } else {
-    m << "gap remains, not explained by the library: " << d->gap_before.summary;
+    m << "model-form offset: the base model misses the data by a discrepancy floor of "
+      << FloorText(d->floor_before) << " single-run scatter(s) beyond the fixed "
+      << options.discrepancy_floor
+      << ", and no effect of the library explains more than that floor "
+      << "allows (gap not explained by the library: " << d->gap_before.summary << ")";
   }
   d->message = m.str();
 }
@@ -131,10 +187,11 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
   FitState fit = StartingFit(d.base, static_cast<int>(observations.size()));
   d.before = WithPrediction(observations, fit.prediction, options.discrepancy_floor);
   d.gap_before = TestGap(d.before, fit.Fitted(), {options.significance});
+  d.floor_before = EstimatedFloor(d.before, fit.Fitted());
   if (progress) progress("base model: " + d.gap_before.summary);
   bool gap = d.gap_before.gap_detected;
   d.termination =
-      gap ? DiagnosisTermination::kGapUnexplained : DiagnosisTermination::kNoMissingEffect;
+      gap ? DiagnosisTermination::kModelFormOffset : DiagnosisTermination::kNoMissingEffect;
   if (gap && !d.base.settled) {  // an unsettled base leaves a gap its own calibration would close
     d.termination = DiagnosisTermination::kBaseUnsettled;
     gap = false;
@@ -145,20 +202,36 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
       if (std::find(d.named.begin(), d.named.end(), c) == d.named.end()) remaining.push_back(c);
     if (remaining.empty()) break;
     const auto step_start = Clock::now();
-    StepOutcome s = RunCandidateStep(model, observations, candidates, remaining, fit, options, progress);
+    StepOutcome s =
+        RunCandidateStep(model, observations, candidates, remaining, fit, options, progress);
     s.step.wall_time_s = std::chrono::duration<double>(Clock::now() - step_start).count();
     d.phases.insert(d.phases.end(), s.phases.begin(), s.phases.end());
     d.steps.push_back(s.step);
     if (progress) progress("ranking: " + s.step.ranking.message);
+    if (s.step.ranking.control_first) {
+      d.termination = d.named.empty() ? DiagnosisTermination::kModelFormOffset
+                                      : DiagnosisTermination::kGapRemains;
+      d.control_note = s.step.ranking.message;
+      break;
+    }
+    if (s.has_winner && s.step.ranking.tied >= 0) {
+      d.termination =
+          d.named.empty() ? DiagnosisTermination::kNotToldApart : DiagnosisTermination::kGapRemains;
+      d.not_told_apart = {s.step.entries[s.step.ranking.winner].candidate,
+                          s.step.entries[s.step.ranking.tied].candidate};
+      d.separating = s.step.separating;
+      break;
+    }
     if (!s.has_winner) {
-      d.termination = d.named.empty() ? DiagnosisTermination::kGapUnexplained
+      d.termination = d.named.empty() ? DiagnosisTermination::kModelFormOffset
                                       : DiagnosisTermination::kGapRemains;
       break;
     }
     d.named.push_back(s.step.entries[s.step.ranking.winner].candidate);
     fit = s.next;
-    const GapReport g = TestGap(WithPrediction(observations, fit.prediction, options.discrepancy_floor), fit.Fitted(),
-                                {options.significance});
+    const GapReport g =
+        TestGap(WithPrediction(observations, fit.prediction, options.discrepancy_floor),
+                fit.Fitted(), {options.significance});
     gap = g.gap_detected;
     d.termination = gap ? DiagnosisTermination::kGapRemains : DiagnosisTermination::kEffectFound;
     if (progress) progress("with " + Names(d.named, candidates) + ": " + g.summary);

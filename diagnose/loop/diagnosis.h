@@ -15,14 +15,18 @@
 //     from there) while each lowers that candidate's best χ² by at least 1 (at most extra_refits):
 //     candidates are compared at their converged refits. Ranking by evidence (ranking.h): ΔBIC
 //     and likelihood ratio of the simulated refits, with the signature match beside them.
+//     The evidence carries the discrepancy floor estimated from the data (evidence.h) at α/K.
 //  5. The winner is added (its refitted point becomes the current fit, its signature a fitted
 //     direction), the gap tested again, and 3-5 repeated while a significant gap remains (at
-//     most max_effects). No winner: "gap remains, not explained by the library".
+//     most max_effects). No winner: "model-form offset". Two within ΔBIC 2: "not told apart"
+//     with the measurement that would separate them (separating_measurement.h). A control
+//     (a copy of a fitted parameter) first or level with the winner: "model-form offset / no
+//     missing effect", never the control.
 // Frugal by construction: one base calibration, one simulated point per candidate and
 // iteration, two plus at most extra_refits × (base parameters + 3) per refitted candidate.
 //
 //   Diagnosis d = Diagnose(model, observations, candidates, options);
-//   d.termination;  // kNoMissingEffect, kEffectFound, kGapRemains, kGapUnexplained
+//   d.termination;  // kNoMissingEffect, kEffectFound, kNotToldApart, kModelFormOffset, ...
 //
 // Thread-safety: runs on the calling thread; the model parallelises.
 #include <functional>
@@ -34,16 +38,18 @@
 #include "diagnose/loop/diagnosis_termination.h"
 #include "diagnose/loop/forward_model.h"
 #include "diagnose/ranking/ranking.h"
+#include "diagnose/ranking/separating_measurement.h"
 
 namespace demcal::diagnose {
 
 // Allowed ranges: objectives/common/input_limits.h (kSignificance, kDiscrepancyFloor, ...).
 struct DiagnoseOptions {
-  double significance = 0.01;    // the gap test's and the evidence's level
-  double discrepancy_floor = 1;  // model-discrepancy floor, in single-run scatters
-  int dem_refits = 2;            // candidates refitted by simulation per iteration
-  int max_effects = 2;           // effects added at most
-  int extra_refits = 4;          // re-centred refit points per refitted candidate beyond two
+  double significance = 0.01;  // the gap test's and the evidence's level
+  double discrepancy_floor =
+      1;                 // the fixed part of the floor, in single-run scatters (one packing)
+  int dem_refits = 2;    // candidates refitted by simulation per iteration
+  int max_effects = 2;   // effects added at most
+  int extra_refits = 4;  // re-centred refit points per refitted candidate beyond two
   bool IsValid(std::string* error) const;
 };
 
@@ -56,11 +62,14 @@ struct ObservableShare {
 };
 
 struct DiagnosisStep {
-  std::vector<RankingEntry> entries;               // one per candidate tried
-  std::vector<std::vector<double>> signatures;     // [entry][observation]: simulated change at the probe
-  std::vector<std::vector<double>> refit_residuals;  // [entry][observation]: standardised, at its refit
+  std::vector<RankingEntry> entries;  // one per candidate tried
+  std::vector<std::vector<double>>
+      signatures;  // [entry][observation]: simulated change at the probe
+  std::vector<std::vector<double>>
+      refit_residuals;  // [entry][observation]: standardised, at its refit
   Ranking ranking;
-  std::vector<ObservableShare> carried;            // when there is a winner
+  std::vector<ObservableShare> carried;  // when there is a winner
+  SeparatingMeasurement separating;      // when the winner is not told apart (ranking.tied)
   int simulations = 0;
   double wall_time_s = 0;
 };
@@ -75,15 +84,21 @@ struct Diagnosis {
   DiagnosisTermination termination = DiagnosisTermination::kFailed;
   std::string message = "Diagnose was not called";
   BaseCalibration base;
-  int base_budget_scale = 1;        // the study's budget times this (base_fit.h)
+  int base_budget_scale = 1;  // the study's budget times this (base_fit.h)
   calibrate::IdentifiabilityReport base_identifiability;
   std::string base_summary;         // settled or not, budget, undetermined base parameters
   std::vector<Observation> before;  // at the base calibration
   GapReport gap_before;
+  // The discrepancy floor estimated from the residuals (discrepancy_floor.h), in single-run
+  // scatters beyond the fixed one: at the base fit and at the final fit.
+  double floor_before = 0, floor_after = 0;
   std::vector<DiagnosisStep> steps;
-  std::vector<int> named;           // candidate indices added, in order
+  std::vector<int> named;            // candidate indices added, in order
+  std::vector<int> not_told_apart;   // candidate indices of the last step's tie (kNotToldApart)
+  SeparatingMeasurement separating;  // the measurement that would tell them apart
+  std::string control_note;          // why the control guard held (a model-form offset)
   ModelPoint final_point;
-  std::vector<Observation> after;   // at the final point
+  std::vector<Observation> after;  // at the final point
   GapReport gap_after;
   int fitted_parameters_after = 0;
   std::vector<PhaseTime> phases;

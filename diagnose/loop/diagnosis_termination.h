@@ -11,10 +11,12 @@ enum class DiagnosisTermination {
   kNoMissingEffect,  // "no_missing_effect": the base model fits within noise
   kEffectFound,      // "effect_found": added effects close the gap
   kGapRemains,       // "gap_remains": effects were added, a gap remains unexplained
-  kGapUnexplained,   // "gap_unexplained": no longer written (model_form_offset says it); kept for old files
+  kGapUnexplained,   // "gap_unexplained": no longer written (model_form_offset says it); kept for
+                     // old files
   kFailed,           // "failed": the base calibration gave no prediction
   kInvalid,          // "invalid": the options were refused before any run
-  kBaseUnsettled,    // "base_unsettled": the base calibration did not settle (base_fit.h): nothing ranked
+  kBaseUnsettled,    // "base_unsettled": the base calibration did not settle (base_fit.h): nothing
+                     // ranked
   kNotToldApart,     // "not_told_apart": two effects explain the gap about equally (ranking.h)
   kModelFormOffset,  // "model_form_offset": a gap no effect explains beyond the discrepancy floor
 };

@@ -18,13 +18,14 @@ ModelPoint FitState::Step(const Eigen::VectorXd& delta, const ActiveEffect* adde
   return next;
 }
 
-std::vector<Observation> WithPrediction(const std::vector<Observation>& observations, const Prediction& p,
-                                        double floor_factor) {
+std::vector<Observation> WithPrediction(const std::vector<Observation>& observations,
+                                        const Prediction& p, double floor_factor) {
   std::vector<Observation> out = observations;
   for (size_t i = 0; i < out.size() && i < p.mean.size(); ++i) {
     out[i].simulated = p.mean[i];
     out[i].sem = p.sem[i];
     out[i].floor = floor_factor * p.spread[i];
+    out[i].scatter = p.spread[i];
   }
   return out;
 }
@@ -35,10 +36,19 @@ Eigen::VectorXd Sigmas(const std::vector<Observation>& observations) {
   return s;
 }
 
-Eigen::VectorXd StandardisedResiduals(const std::vector<Observation>& observations, const std::vector<double>& mean,
+Eigen::VectorXd ScatterPerSigma(const std::vector<Observation>& observations) {
+  Eigen::VectorXd q(observations.size());
+  for (size_t i = 0; i < observations.size(); ++i)
+    q(i) = observations[i].scatter / observations[i].Sigma();
+  return q;
+}
+
+Eigen::VectorXd StandardisedResiduals(const std::vector<Observation>& observations,
+                                      const std::vector<double>& mean,
                                       const Eigen::VectorXd& sigma) {
   Eigen::VectorXd r(observations.size());
-  for (size_t i = 0; i < observations.size(); ++i) r(i) = (mean[i] - observations[i].measured) / sigma(i);
+  for (size_t i = 0; i < observations.size(); ++i)
+    r(i) = (mean[i] - observations[i].measured) / sigma(i);
   return r;
 }
 

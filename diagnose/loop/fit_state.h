@@ -28,11 +28,14 @@ struct FitState {
 
 // The observations with this prediction's simulated values beside them; floor = factor ×
 // single-run scatter.
-std::vector<Observation> WithPrediction(const std::vector<Observation>& observations, const Prediction& p,
-                                        double floor_factor);
+std::vector<Observation> WithPrediction(const std::vector<Observation>& observations,
+                                        const Prediction& p, double floor_factor);
 Eigen::VectorXd Sigmas(const std::vector<Observation>& observations);
+// Per observation its single-run scatter over its sigma (the estimated floor's unit per σ).
+Eigen::VectorXd ScatterPerSigma(const std::vector<Observation>& observations);
 // (mean − measured) / sigma with fixed sigmas.
-Eigen::VectorXd StandardisedResiduals(const std::vector<Observation>& observations, const std::vector<double>& mean,
+Eigen::VectorXd StandardisedResiduals(const std::vector<Observation>& observations,
+                                      const std::vector<double>& mean,
                                       const Eigen::VectorXd& sigma);
 
 }  // namespace demcal::diagnose

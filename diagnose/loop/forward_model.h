@@ -20,6 +20,9 @@ struct CandidateEffect {
   std::string key;
   std::string description;
   std::vector<EffectParameter> parameters;
+  // A copy of a fitted base parameter (the sliding-friction control; rolling resistance when the
+  // study fits the rolling friction): guarded, never named (ranking.h).
+  bool control = false;
 };
 
 struct ActiveEffect {
@@ -34,7 +37,7 @@ struct ModelPoint {
 
 struct Prediction {
   bool ok = false;
-  std::string status = "not evaluated";  // "ok" or why not
+  std::string status = "not evaluated";   // "ok" or why not
   std::vector<double> mean, sem, spread;  // per observation; spread = single-run standard deviation
 };
 
@@ -46,7 +49,7 @@ struct BaseCalibration {
   std::vector<double> base_unit;
   Prediction prediction;
   std::vector<std::vector<double>> jacobian;  // [observation][parameter]
-  std::string termination;                     // the calibration's
+  std::string termination;                    // the calibration's
   // Settled by the calibration's own criterion: within_noise, converged or out_of_range
   // (calibrate/termination.h); a calibration that stopped on its budget did not.
   bool settled = false;
@@ -67,7 +70,8 @@ class ForwardModel {
   // Per base parameter: its name and SI units per unit-cube step at the unit point (reports).
   virtual std::vector<std::string> BaseParameterNames() const {
     std::vector<std::string> names;
-    for (int j = 0; j < BaseParameters(); ++j) names.push_back("u" + std::to_string(j));
+    for (int j = 0; j < BaseParameters(); ++j)
+      names.push_back(std::to_string(j)), names.back().insert(0, "u");
     return names;
   }
   virtual std::vector<double> BaseSiPerUnit(const std::vector<double>&) const {

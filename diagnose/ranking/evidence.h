@@ -12,7 +12,17 @@
 //
 //   Evidence e = EvidenceOf(chi2_base, chi2_effect, 1, 15, 0.01);
 //
+// With the discrepancy floor (discrepancy_floor.h) in the variance, EvidenceWithFloor: the floor
+// φ is estimated from the effect's own fit (n − p − k degrees of freedom: the larger model's
+// residuals, so the improvement is not counted into the floor that judges it), both fits'
+// χ² are taken with it, Δχ² = χ²_base(φ) − χ²_effect(φ). When φ > 0 the variance's scale was
+// estimated and Δχ²/k is compared with F(k, n − p − k) (the extra-sum-of-squares F test with an
+// estimated dispersion); when φ = 0 with χ²_k as above. ΔBIC = −Δχ² + k·ln n with the floor in
+// the variance.
+//
 // Thread-safety: pure function.
+#include <Eigen/Dense>
+
 namespace demcal::diagnose {
 
 struct Evidence {
@@ -20,9 +30,14 @@ struct Evidence {
   double lr_p_value = 1;
   double delta_bic = 0;
   bool significant = false;  // lr_p_value < significance and delta_bic < 0
+  double floor = 0;          // the discrepancy floor estimated with the effect, single-run scatters
 };
 
 Evidence EvidenceOf(double chi2_base, double chi2_effect, int k, int n, double significance);
+// r_base, r_effect: standardised residuals of the base and the effect's fit (fixed σ); q: the
+// single-run scatter over σ per observation; fitted: the base's fitted coordinates p.
+Evidence EvidenceWithFloor(const Eigen::VectorXd& r_base, const Eigen::VectorXd& r_effect,
+                           const Eigen::VectorXd& q, int k, int fitted, double significance);
 
 // Kass & Raftery's (1995) "not worth more than a bare mention": |ΔBIC| below this.
 constexpr double kBicIndistinct = 2.0;

@@ -21,19 +21,45 @@ Ranking RankCandidates(const std::vector<RankingEntry>& entries) {
     }
   std::ostringstream m;
   m.precision(3);
+  if (r.winner >= 0) {
+    int first_simulated = -1, control_level = -1;
+    for (int i : r.order)
+      if (entries[i].simulated && first_simulated < 0) first_simulated = i;
+    for (int i : r.order)
+      if (i != r.winner && entries[i].simulated && entries[i].control &&
+          std::fabs(entries[i].evidence.delta_bic - entries[r.winner].evidence.delta_bic) <
+              kBicIndistinct)
+        control_level = i;
+    const int control = entries[r.winner].control          ? r.winner
+                        : entries[first_simulated].control ? first_simulated
+                                                           : control_level;
+    if (control >= 0) {
+      r.control_first = true;
+      m << "the control " << entries[control].key
+        << " (a copy of a fitted parameter) explains the gap as well as "
+        << "any effect (delta BIC " << entries[control].evidence.delta_bic
+        << "): model-form offset, no missing "
+        << "effect named";
+      r.winner = -1;
+      r.message = m.str();
+      return r;
+    }
+  }
   if (r.winner < 0) {
     m << "no candidate effect improves the fit significantly";
     r.message = m.str();
     return r;
   }
-  m << entries[r.winner].key << " (delta BIC " << entries[r.winner].evidence.delta_bic << ", likelihood-ratio p "
-    << entries[r.winner].evidence.lr_p_value << ")";
+  m << entries[r.winner].key << " (delta BIC " << entries[r.winner].evidence.delta_bic
+    << ", likelihood-ratio p " << entries[r.winner].evidence.lr_p_value << ")";
   for (int i : r.order) {
     if (i == r.winner) continue;
-    if (entries[i].simulated &&
-        std::fabs(entries[i].evidence.delta_bic - entries[r.winner].evidence.delta_bic) < kBicIndistinct) {
+    if (entries[i].simulated && std::fabs(entries[i].evidence.delta_bic -
+                                          entries[r.winner].evidence.delta_bic) < kBicIndistinct) {
       r.distinguished = false;
-      m << "; not told apart from " << entries[i].key << " (delta BIC " << entries[i].evidence.delta_bic << ")";
+      if (r.tied < 0) r.tied = i;
+      m << "; not told apart from " << entries[i].key << " (delta BIC "
+        << entries[i].evidence.delta_bic << ")";
     }
   }
   r.message = m.str();

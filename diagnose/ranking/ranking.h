@@ -1,5 +1,10 @@
 #pragma once
 // RankCandidates: orders the candidate effects by evidence (evidence.h) and names the winner.
+// Control guard: a control (a copy of a fitted base parameter, such as the sliding-friction
+// control when μs is fitted) never wins. When the best simulated candidate is a control, or a
+// control is not told apart from the winner, there is no winner and control_first is set: an
+// improvement a re-tuned fitted parameter gives equally is a model-form offset, not a missing
+// effect. Otherwise a simulated runner-up within kBicIndistinct of the winner is `tied`.
 // A candidate can win only when its refit is significant (likelihood-ratio p below the
 // significance AND ΔBIC < 0); among those the lowest ΔBIC wins. The refit of a candidate is the
 // real one (simulated at the refitted point) when it was made, else the linearised one; only a
@@ -30,13 +35,16 @@ struct RankingEntry {
   Evidence evidence;           // from chi2
   double chi2_per_dof = 0;     // chi2 / (n − fitted − k)
   double signature_match = 0;  // linear_refit.h
+  bool control = false;        // a copy of a fitted base parameter (CandidateEffect::control)
   std::string note;            // e.g. "refit failed: ..." or "redundant with the fitted parameters"
 };
 
 struct Ranking {
   std::vector<int> order;  // entry indices, best (lowest ΔBIC) first
-  int winner = -1;         // entry index, −1: none significant
+  int winner = -1;         // entry index, −1: none significant (or the control guard held)
   bool distinguished = true;
+  int tied = -1;               // an entry not told apart from the winner (−1: none)
+  bool control_first = false;  // the control ranked first, or level with the winner: no effect
   std::string message;
 };
 

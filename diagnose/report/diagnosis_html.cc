@@ -15,26 +15,31 @@ std::string Num(double x, int precision = 4) {
   return s.str();
 }
 
-bool GapTable(const Diagnosis& d, bool synthetic, workflow::HtmlReport* report, std::string* error) {
-  workflow::HtmlTable t{"standardised residual r = (simulated − measured) / σ per observation and condition",
-                        {"#", "observable", "condition", "measured ± u", "simulated before", "r before",
-                         "simulated after", "r after"}};
+bool GapTable(const Diagnosis& d, bool synthetic, workflow::HtmlReport* report,
+              std::string* error) {
+  workflow::HtmlTable t{
+      "standardised residual r = (simulated − measured) / σ per observation and condition",
+      {"#", "observable", "condition", "measured ± u", "simulated before", "r before",
+       "simulated after", "r after"}};
   for (size_t i = 0; i < d.before.size(); ++i) {
     const Observation& b = d.before[i];
     const bool has_after = i < d.after.size();
-    t.rows.push_back({std::to_string(i + 1), b.observable, calibrate::DescribeCondition(b.condition),
-                      Num(b.measured) + " ± " + Num(b.uncertainty, 2), Num(b.simulated), Num(b.Residual(), 3),
-                      has_after ? Num(d.after[i].simulated) : "", has_after ? Num(d.after[i].Residual(), 3) : ""});
+    t.rows.push_back({std::to_string(i + 1), b.observable,
+                      calibrate::DescribeCondition(b.condition),
+                      Num(b.measured) + " ± " + Num(b.uncertainty, 2), Num(b.simulated),
+                      Num(b.Residual(), 3), has_after ? Num(d.after[i].simulated) : "",
+                      has_after ? Num(d.after[i].Residual(), 3) : ""});
     t.synthetic_rows.push_back(synthetic);
   }
   return report->Table(t, error);
 }
 
-bool RankingTable(const DiagnosisRunInfo& info, const DiagnosisStep& s, workflow::HtmlReport* report,
-                  std::string* error) {
-  workflow::HtmlTable t{s.ranking.message,
-                        {"rank", "effect", "parameter = value", "direction", "refit", "χ²/dof after", "ΔBIC", "LR p",
-                         "signature match", "note"}};
+bool RankingTable(const DiagnosisRunInfo& info, const DiagnosisStep& s,
+                  workflow::HtmlReport* report, std::string* error) {
+  workflow::HtmlTable t{
+      s.ranking.message,
+      {"rank", "effect", "parameter = value", "direction", "refit", "χ²/dof after", "ΔBIC", "LR p",
+       "floor [scatters]", "signature match", "note"}};
   int rank = 1;
   for (int i : s.ranking.order) {
     const RankingEntry& e = s.entries[i];
@@ -43,16 +48,21 @@ bool RankingTable(const DiagnosisRunInfo& info, const DiagnosisStep& s, workflow
                       p.name + " = " + (e.values.empty() ? "" : Num(e.values[0], 3)) + " " + p.unit,
                       e.values.empty() ? "" : EffectDirection(p, e.values[0]),
                       e.simulated ? "simulated" : "linearised", Num(e.chi2_per_dof, 3),
-                      Num(e.evidence.delta_bic, 3), Num(e.evidence.lr_p_value, 3), Num(e.signature_match, 3), e.note});
+                      Num(e.evidence.delta_bic, 3), Num(e.evidence.lr_p_value, 3),
+                      Num(e.evidence.floor, 3), Num(e.signature_match, 3), e.note});
   }
   return report->Table(t, error);
 }
 
 bool CostTable(const Diagnosis& d, workflow::HtmlReport* report, std::string* error) {
-  workflow::HtmlTable t{"simulations (replicate runs) and wall time per phase", {"phase", "simulations", "wall time [s]"}};
-  for (const PhaseTime& p : d.phases) t.rows.push_back({p.phase, std::to_string(p.simulations), Num(p.wall_time_s, 3)});
-  t.rows.push_back({"total", std::to_string(d.simulations) + " (+" + std::to_string(d.simulations_reused) +
-                    " from journal)", Num(d.wall_time_s, 3)});
+  workflow::HtmlTable t{"simulations (replicate runs) and wall time per phase",
+                        {"phase", "simulations", "wall time [s]"}};
+  for (const PhaseTime& p : d.phases)
+    t.rows.push_back({p.phase, std::to_string(p.simulations), Num(p.wall_time_s, 3)});
+  t.rows.push_back({"total",
+                    std::to_string(d.simulations) + " (+" + std::to_string(d.simulations_reused) +
+                        " from journal)",
+                    Num(d.wall_time_s, 3)});
   return report->Table(t, error);
 }
 
@@ -65,17 +75,24 @@ bool WriteDiagnosisHtml(const std::string& path, const DiagnosisRunInfo& info, c
   report.Section("Verdict", syn);
   report.Paragraph(d.message, syn);
   report.Paragraph("Base fit: " + d.base_summary + ".", syn);
-  report.Paragraph("Before: " + d.gap_before.summary + ". After: " + d.gap_after.summary + ".", syn);
+  report.Paragraph("Discrepancy floor estimated from the data: " + Num(d.floor_before, 3) +
+                       " single-run scatter(s) at the base fit, " + Num(d.floor_after, 3) +
+                       " after (beyond the fixed " + Num(info.options.discrepancy_floor) +
+                       "); an effect is named only when it explains more than "
+                       "this floor allows (docs/diagnose.md).",
+                   syn);
+  report.Paragraph("Before: " + d.gap_before.summary + ". After: " + d.gap_after.summary + ".",
+                   syn);
   report.Section("Gap before and after", syn);
-  if (!report.Figure(objectives::RenderSvg(GapPlot(d)), "standardised residuals before (base model) and after",
-                     syn, error) ||
+  if (!report.Figure(objectives::RenderSvg(GapPlot(d)),
+                     "standardised residuals before (base model) and after", syn, error) ||
       !GapTable(d, syn, &report, error))
     return false;
   std::vector<std::string> trends;
   for (const CovariateTrend& t : d.gap_before.trends)
     if (t.significant)
-      trends.push_back(t.observable + " along " + t.covariate + ": slope " + Num(t.slope, 3) + " ± " +
-                       Num(t.slope_sigma, 2) + " per unit (p " + Num(t.p_value, 2) + ")");
+      trends.push_back(t.observable + " along " + t.covariate + ": slope " + Num(t.slope, 3) +
+                       " ± " + Num(t.slope_sigma, 2) + " per unit (p " + Num(t.p_value, 2) + ")");
   if (!trends.empty()) {
     report.Subheading("Residual trends along the condition covariates (before)");
     report.List(trends);
@@ -85,8 +102,8 @@ bool WriteDiagnosisHtml(const std::string& path, const DiagnosisRunInfo& info, c
     if (!RankingTable(info, d.steps[k], &report, error)) return false;
     std::vector<std::string> carried;
     for (const ObservableShare& o : d.steps[k].carried)
-      carried.push_back(o.observable + ": χ² gain over the runner-up " + Num(o.against_runner_up, 3) +
-                        ", over the base " + Num(o.against_base, 3));
+      carried.push_back(o.observable + ": χ² gain over the runner-up " +
+                        Num(o.against_runner_up, 3) + ", over the base " + Num(o.against_base, 3));
     if (!carried.empty()) {
       report.Subheading("Which observables carried the decision");
       report.List(carried);
@@ -94,18 +111,21 @@ bool WriteDiagnosisHtml(const std::string& path, const DiagnosisRunInfo& info, c
   }
   if (!d.steps.empty()) {
     report.Section("Signatures and ranking", syn);
-    if (!report.Figure(objectives::RenderSvg(SignaturePlot(info, d)), "signatures of the candidate effects", syn, error) ||
+    if (!report.Figure(objectives::RenderSvg(SignaturePlot(info, d)),
+                       "signatures of the candidate effects", syn, error) ||
         !report.Figure(objectives::RenderSvg(RankingPlot(d)), "ΔBIC of the candidates", syn, error))
       return false;
   }
   report.Section("Cost");
   if (!CostTable(d, &report, error)) return false;
   std::string provenance;
-  for (const std::string& p : info.data_provenance) provenance += (provenance.empty() ? "" : ", ") + p;
+  for (const std::string& p : info.data_provenance)
+    provenance += (provenance.empty() ? "" : ", ") + p;
   report.Paragraph("Data provenance: " + provenance + ".", syn);
   report.Paragraph("Significance " + Num(info.options.significance) + ", model-discrepancy floor " +
-                   Num(info.options.discrepancy_floor) + " single-run scatter(s), fidelity " + info.fidelity +
-                   ", seed " + std::to_string(info.seed) + ", " + std::to_string(info.replicates) +
+                   Num(info.options.discrepancy_floor) + " single-run scatter(s), fidelity " +
+                   info.fidelity + ", seed " + std::to_string(info.seed) + ", " +
+                   std::to_string(info.replicates) +
                    " replicates. Thresholds and their reasons: docs/diagnose.md.");
   return report.WriteFile(path, error);
 }

@@ -1,5 +1,6 @@
 #include "diagnose/report/diagnosis_json.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/version.h"
@@ -20,59 +21,118 @@ Json ConditionJson(const calibrate::Condition& c) {
 Json ResidualTable(const std::vector<Observation>& obs) {
   Json rows = Json::array();
   for (const Observation& o : obs)
-    rows.push_back({{"name", o.name}, {"observable", o.observable}, {"condition", ConditionJson(o.condition)},
-                    {"measured", Number(o.measured)}, {"uncertainty", Number(o.uncertainty)},
-                    {"simulated", Number(o.simulated)}, {"sem", Number(o.sem)}, {"floor", Number(o.floor)},
-                    {"sigma", Number(o.Sigma())}, {"standardised_residual", Number(o.Residual())}});
+    rows.push_back({{"name", o.name},
+                    {"observable", o.observable},
+                    {"condition", ConditionJson(o.condition)},
+                    {"measured", Number(o.measured)},
+                    {"uncertainty", Number(o.uncertainty)},
+                    {"simulated", Number(o.simulated)},
+                    {"sem", Number(o.sem)},
+                    {"floor", Number(o.floor)},
+                    {"sigma", Number(o.Sigma())},
+                    {"standardised_residual", Number(o.Residual())}});
   return rows;
 }
 
 Json GapJson(const GapReport& g) {
   Json trends = Json::array();
   for (const CovariateTrend& t : g.trends)
-    trends.push_back({{"covariate", t.covariate}, {"observable", t.observable}, {"points", t.points},
-                      {"slope_per_unit", Number(t.slope)}, {"slope_sigma", Number(t.slope_sigma)},
-                      {"p_value", Number(t.p_value)}, {"significant", t.significant}});
+    trends.push_back({{"covariate", t.covariate},
+                      {"observable", t.observable},
+                      {"points", t.points},
+                      {"slope_per_unit", Number(t.slope)},
+                      {"slope_sigma", Number(t.slope_sigma)},
+                      {"p_value", Number(t.p_value)},
+                      {"significant", t.significant}});
   Json by = Json::array();
   for (const ObservableChi2& b : g.by_observable)
     by.push_back({{"observable", b.observable}, {"chi2", Number(b.chi2)}, {"count", b.count}});
-  return {{"gap_detected", g.gap_detected}, {"chi2", Number(g.chi2)}, {"dof", g.dof},
-          {"fitted_parameters", g.fitted_parameters}, {"chi2_per_dof", Number(g.chi2_per_dof)},
-          {"p_value", Number(g.p_value)}, {"critical_chi2", Number(g.critical_chi2)},
-          {"outlier_threshold", Number(g.outlier_threshold)}, {"outliers", g.outliers}, {"by_observable", by},
-          {"trends", trends}, {"summary", g.summary}};
+  return {{"gap_detected", g.gap_detected},
+          {"chi2", Number(g.chi2)},
+          {"dof", g.dof},
+          {"fitted_parameters", g.fitted_parameters},
+          {"chi2_per_dof", Number(g.chi2_per_dof)},
+          {"p_value", Number(g.p_value)},
+          {"critical_chi2", Number(g.critical_chi2)},
+          {"outlier_threshold", Number(g.outlier_threshold)},
+          {"outliers", g.outliers},
+          {"by_observable", by},
+          {"trends", trends},
+          {"summary", g.summary}};
 }
 
 Json CandidateJson(const DiagnosisRunInfo& info, const RankingEntry& e, int rank, bool winner) {
   const CandidateEffect& c = info.candidates[e.candidate];
   Json parameters = Json::array();
   for (size_t k = 0; k < c.parameters.size(); ++k)
-    parameters.push_back({{"name", c.parameters[k].name}, {"unit", c.parameters[k].unit},
+    parameters.push_back({{"name", c.parameters[k].name},
+                          {"unit", c.parameters[k].unit},
                           {"value", k < e.values.size() ? Number(e.values[k]) : Json(nullptr)},
-                          {"lower", c.parameters[k].lower}, {"upper", c.parameters[k].upper},
+                          {"lower", c.parameters[k].lower},
+                          {"upper", c.parameters[k].upper},
                           {"probe", c.parameters[k].probe}});
-  const std::string direction = e.values.empty() ? "" : EffectDirection(c.parameters[0], e.values[0]);
-  return {{"rank", rank}, {"effect", e.key}, {"description", c.description}, {"parameters", parameters},
+  const std::string direction =
+      e.values.empty() ? "" : EffectDirection(c.parameters[0], e.values[0]);
+  return {{"rank", rank},
+          {"effect", e.key},
+          {"description", c.description},
+          {"parameters", parameters},
           {"direction", direction},
-          {"refit", e.simulated ? "simulated" : "linearised"}, {"chi2", Number(e.chi2)},
-          {"chi2_per_dof_after", Number(e.chi2_per_dof)}, {"delta_bic", Number(e.evidence.delta_bic)},
-          {"likelihood_ratio_p", Number(e.evidence.lr_p_value)}, {"significant", e.evidence.significant},
-          {"chi2_linearised", Number(e.chi2_linear)}, {"delta_bic_linearised", Number(e.linear.delta_bic)},
-          {"signature_match", Number(e.signature_match)}, {"winner", winner}, {"note", e.note}};
+          {"refit", e.simulated ? "simulated" : "linearised"},
+          {"chi2", Number(e.chi2)},
+          {"chi2_per_dof_after", Number(e.chi2_per_dof)},
+          {"delta_bic", Number(e.evidence.delta_bic)},
+          {"likelihood_ratio_p", Number(e.evidence.lr_p_value)},
+          {"significant", e.evidence.significant},
+          {"chi2_linearised", Number(e.chi2_linear)},
+          {"delta_bic_linearised", Number(e.linear.delta_bic)},
+          {"signature_match", Number(e.signature_match)},
+          {"discrepancy_floor_single_run_scatters", Number(e.evidence.floor)},
+          {"control", e.control},
+          {"winner", winner},
+          {"note", e.note}};
 }
 
-Json StepJson(const DiagnosisRunInfo& info, const DiagnosisStep& s) {
+Json SeparatingJson(const std::vector<Observation>& obs, const SeparatingMeasurement& m) {
+  if (m.observation < 0 || m.observation >= static_cast<int>(obs.size())) return nullptr;
+  const Observation& o = obs[m.observation];
+  return {{"observable", o.observable},
+          {"condition", ConditionJson(o.condition)},
+          {"experiment", o.experiment},
+          {"name", o.name},
+          {"prediction_first", Number(m.prediction_a)},
+          {"prediction_second", Number(m.prediction_b)},
+          {"difference_sigma", Number(m.difference_sigma)},
+          {"sigma_shrink_first", Number(m.shrink_a)},
+          {"sigma_shrink_second", Number(m.shrink_b)},
+          {"lifts_valley", m.lifts_valley},
+          {"separates", m.separates},
+          {"description", m.description}};
+}
+
+Json StepJson(const DiagnosisRunInfo& info, const std::vector<Observation>& obs,
+              const DiagnosisStep& s) {
   Json candidates = Json::array();
   int rank = 1;
-  for (int i : s.ranking.order) candidates.push_back(CandidateJson(info, s.entries[i], rank++, i == s.ranking.winner));
+  for (int i : s.ranking.order)
+    candidates.push_back(CandidateJson(info, s.entries[i], rank++, i == s.ranking.winner));
   Json carried = Json::array();
   for (const ObservableShare& o : s.carried)
-    carried.push_back({{"observable", o.observable}, {"chi2_gain_over_runner_up", Number(o.against_runner_up)},
+    carried.push_back({{"observable", o.observable},
+                       {"chi2_gain_over_runner_up", Number(o.against_runner_up)},
                        {"chi2_gain_over_base", Number(o.against_base)}});
   return {{"candidates", candidates},
           {"winner", s.ranking.winner >= 0 ? Json(s.entries[s.ranking.winner].key) : Json(nullptr)},
-          {"distinguished", s.ranking.distinguished}, {"message", s.ranking.message},
-          {"observables_carried", carried}, {"simulations", s.simulations}, {"wall_time_s", s.wall_time_s}};
+          {"distinguished", s.ranking.distinguished},
+          {"not_told_apart_from",
+           s.ranking.tied >= 0 ? Json(s.entries[s.ranking.tied].key) : Json(nullptr)},
+          {"control_first", s.ranking.control_first},
+          {"separating_measurement",
+           s.ranking.tied >= 0 ? SeparatingJson(obs, s.separating) : Json(nullptr)},
+          {"message", s.ranking.message},
+          {"observables_carried", carried},
+          {"simulations", s.simulations},
+          {"wall_time_s", s.wall_time_s}};
 }
 
 }  // namespace
@@ -89,17 +149,34 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
   for (int c : d.named) named.push_back(info.candidates[c].key);
   for (const ActiveEffect& a : d.final_point.effects) {
     const EffectParameter& p = info.candidates[a.candidate].parameters[0];
-    signed_effects.push_back({{"effect", info.candidates[a.candidate].key}, {"parameter", p.name},
-                              {"unit", p.unit}, {"value", Number(a.values[0])},
+    signed_effects.push_back({{"effect", info.candidates[a.candidate].key},
+                              {"parameter", p.name},
+                              {"unit", p.unit},
+                              {"value", Number(a.values[0])},
                               {"direction", EffectDirection(p, a.values[0])}});
   }
   j["named_effects"] = named;
   j["named_effects_signed"] = signed_effects;
   j["chi2_per_dof_after"] = Number(d.gap_after.chi2_per_dof);
+  const size_t tried = d.steps.empty() ? info.candidates.size() : d.steps.front().entries.size();
+  j["discrepancy_floor"] = {
+      {"fixed_single_run_scatters", info.options.discrepancy_floor},
+      {"estimated_single_run_scatters_before", Number(d.floor_before)},
+      {"estimated_single_run_scatters_after", Number(d.floor_after)},
+      {"estimator", "Paule-Mandel: the floored chi2 equals n - p (docs/diagnose.md)"},
+      {"significance_per_candidate",
+       info.options.significance / static_cast<double>(std::max<size_t>(1, tried))}};
   j["gap_detected_after"] = d.gap_after.gap_detected;
-  j["candidates"] = d.steps.empty() ? Json::array() : StepJson(info, d.steps.front())["candidates"];
+  j["candidates"] =
+      d.steps.empty() ? Json::array() : StepJson(info, d.before, d.steps.front())["candidates"];
+  Json tie = Json::array();
+  for (int c : d.not_told_apart) tie.push_back(info.candidates[c].key);
+  j["not_told_apart"] = tie;
+  j["separating_measurement"] =
+      d.not_told_apart.empty() ? Json(nullptr) : SeparatingJson(d.before, d.separating);
+  j["control_guard"] = d.control_note.empty() ? Json(nullptr) : Json(d.control_note);
   Json steps = Json::array();
-  for (const DiagnosisStep& s : d.steps) steps.push_back(StepJson(info, s));
+  for (const DiagnosisStep& s : d.steps) steps.push_back(StepJson(info, d.before, s));
   j["steps"] = steps;
   j["gap_before"] = GapJson(d.gap_before);
   j["gap_after"] = GapJson(d.gap_after);
@@ -107,30 +184,43 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
   j["residuals_after"] = ResidualTable(d.after);
   Json undetermined = Json::array();
   for (const calibrate::UndeterminedDirection& u : d.base_identifiability.undetermined)
-    undetermined.push_back({{"description", u.description}, {"singular_value", Number(u.singular_value)},
+    undetermined.push_back({{"description", u.description},
+                            {"singular_value", Number(u.singular_value)},
                             {"unit_direction", u.unit_direction}});
   Json singular = Json::array();
   for (double s : d.base_identifiability.singular_values) singular.push_back(Number(s));
-  j["base_calibration"] = {{"termination", d.base.termination}, {"message", d.base.message},
-                           {"settled", d.base.settled}, {"max_evaluations", d.base.max_evaluations},
-                           {"budget_scale", d.base_budget_scale}, {"summary", d.base_summary},
+  j["base_calibration"] = {{"termination", d.base.termination},
+                           {"message", d.base.message},
+                           {"settled", d.base.settled},
+                           {"max_evaluations", d.base.max_evaluations},
+                           {"budget_scale", d.base_budget_scale},
+                           {"summary", d.base_summary},
                            {"identifiable", d.base_identifiability.Identifiable()},
-                           {"singular_values", singular}, {"undetermined", undetermined}};
+                           {"singular_values", singular},
+                           {"undetermined", undetermined}};
   Json phases = Json::array();
   for (const PhaseTime& p : d.phases)
-    phases.push_back({{"phase", p.phase}, {"simulations", p.simulations}, {"wall_time_s", p.wall_time_s}});
+    phases.push_back(
+        {{"phase", p.phase}, {"simulations", p.simulations}, {"wall_time_s", p.wall_time_s}});
   j["simulations"] = d.simulations;
   j["simulations_reused"] = d.simulations_reused;
   j["phases"] = phases;
   j["wall_time_s"] = d.wall_time_s;
-  j["provenance"] = {{"demcal_version", kVersion}, {"study", info.study}, {"description", info.description},
-                     {"synthetic_data", info.synthetic}, {"data_provenance", info.data_provenance},
-                     {"fidelity", info.fidelity}, {"seed", info.seed}, {"replicates", info.replicates},
+  j["provenance"] = {{"demcal_version", kVersion},
+                     {"study", info.study},
+                     {"description", info.description},
+                     {"synthetic_data", info.synthetic},
+                     {"data_provenance", info.data_provenance},
+                     {"fidelity", info.fidelity},
+                     {"seed", info.seed},
+                     {"replicates", info.replicates},
                      {"significance", info.options.significance},
                      {"discrepancy_floor_single_run_scatters", info.options.discrepancy_floor},
-                     {"refits_per_step", info.options.dem_refits}, {"max_effects", info.options.max_effects},
+                     {"refits_per_step", info.options.dem_refits},
+                     {"max_effects", info.options.max_effects},
                      {"extra_refits", info.options.extra_refits},
-                     {"subject_species", info.context.species}, {"subject_material", info.context.material},
+                     {"subject_species", info.context.species},
+                     {"subject_material", info.context.material},
                      {"wall_materials", info.context.wall_materials},
                      {"coating_column", info.context.coating_column}};
   if (!info.journal_error.empty()) j["journal_error"] = info.journal_error;
@@ -140,20 +230,29 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
 Json DiagnosedParamsJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
   Json base = Json::array();
   for (size_t k = 0; k < info.base_names.size(); ++k)
-    base.push_back({{"name", info.base_names[k]},
-                    {"value", k < info.base_after_si.size() ? Number(info.base_after_si[k]) : Json(nullptr)}});
+    base.push_back(
+        {{"name", info.base_names[k]},
+         {"value", k < info.base_after_si.size() ? Number(info.base_after_si[k]) : Json(nullptr)}});
   Json effects = Json::array();
   for (const ActiveEffect& a : d.final_point.effects) {
     const CandidateEffect& c = info.candidates[a.candidate];
     Json values = Json::object();
-    for (size_t k = 0; k < a.values.size() && k < c.parameters.size(); ++k) values[c.parameters[k].name] = Number(a.values[k]);
+    for (size_t k = 0; k < a.values.size() && k < c.parameters.size(); ++k)
+      values[c.parameters[k].name] = Number(a.values[k]);
     effects.push_back({{"effect", c.key}, {"description", c.description}, {"values", values}});
   }
-  return {{"format", "demcal-params/1"}, {"parameters", base}, {"effects", effects},
-          {"note", "base parameters of the study refitted with the named effects (docs/diagnose.md); "
-                   "effect values are increments on the experiment files' model"},
-          {"provenance", {{"study", info.study}, {"fidelity", info.fidelity}, {"seed", info.seed},
-                          {"replicates", info.replicates}, {"demcal_version", kVersion}}}};
+  return {{"format", "demcal-params/1"},
+          {"parameters", base},
+          {"effects", effects},
+          {"note",
+           "base parameters of the study refitted with the named effects (docs/diagnose.md); "
+           "effect values are increments on the experiment files' model"},
+          {"provenance",
+           {{"study", info.study},
+            {"fidelity", info.fidelity},
+            {"seed", info.seed},
+            {"replicates", info.replicates},
+            {"demcal_version", kVersion}}}};
 }
 
 }  // namespace demcal::diagnose

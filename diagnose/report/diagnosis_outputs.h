@@ -27,9 +27,10 @@ namespace demcal::diagnose {
 struct DiagnosisRunInfo {
   std::string study;  // path as given
   std::string description;
-  bool synthetic = false;  // some measurement row was made by a model (synthetic, simulated:<engine>)
+  bool synthetic =
+      false;  // some measurement row was made by a model (synthetic, simulated:<engine>)
   std::vector<std::string> data_provenance;  // the distinct provenances of the rows, in order
-  std::string fidelity;  // name of the fidelity the runs used
+  std::string fidelity;                      // name of the fidelity the runs used
   uint64_t seed = 0;
   int replicates = 0;
   DiagnoseOptions options;

@@ -23,14 +23,22 @@ inline const std::vector<std::string> kKinds = {"angle_deg", "heap_height_m", "m
 inline const std::vector<double> kUncertainty = {1.0, 3e-4, 1e-4};  // measurement, per kind
 inline const std::vector<double> kScatter = {1.0, 2e-4, 1e-4};      // single simulation run
 
-// Change of observable `kind` at coating w for effect `e` with value v (per kind: angle, height, flow).
+// Change of observable `kind` at coating w for effect `e` with value v (per kind: angle, height,
+// flow).
 inline double EffectChange(int e, int kind, double w, double v) {
   switch (e) {
-    case 0: return v * w * std::vector<double>{40, 2e-3, -2e-4}[kind];  // adhesion, per unit coating
-    case 1: return v * std::vector<double>{30, 4e-3, -1e-4}[kind];      // rolling resistance
-    case 2: return v * std::vector<double>{10, 6e-3, -5e-4}[kind];      // shape
-    case 3: return v * std::vector<double>{-5, -3e-3, 2e-4}[kind];      // polydispersity
-    case 4: return v * std::vector<double>{10, 1e-3, -1e-3}[kind];      // control: like mu
+    case 0:
+      return v * w * std::vector<double>{40, 2e-3, -2e-4}[kind];  // adhesion, per unit coating
+    case 1:
+      return v * std::vector<double>{30, 4e-3, -1e-4}[kind];  // rolling resistance
+    case 2:
+      return v * std::vector<double>{10, 6e-3, -5e-4}[kind];  // shape
+    case 3:
+      return v * std::vector<double>{-5, -3e-3, 2e-4}[kind];  // polydispersity
+    case 4:
+      return v * std::vector<double>{10, 1e-3, -1e-3}[kind];  // control: like mu
+    case 5:
+      return v * std::vector<double>{29, 3.9e-3, -1.1e-4}[kind];  // roughness: nearly rolling's
   }
   return 0;
 }
@@ -38,11 +46,21 @@ inline double EffectChange(int e, int kind, double w, double v) {
 // Rolling is signed (the base assumes some rolling resistance, 0.3, that may be too much).
 inline std::vector<CandidateEffect> Candidates() {
   return {{"adhesion", "", {{"g", "", 0, 0.2, 0.05}}},
-          {"rolling", "", {{"t", "", -0.3, 1, 0.2, "more rolling resistance than assumed",
-                            "less rolling resistance than assumed"}}},
+          {"rolling",
+           "",
+           {{"t", "", -0.3, 1, 0.2, "more rolling resistance than assumed",
+             "less rolling resistance than assumed"}}},
           {"shape", "", {{"t", "", 0, 2, 0.5}}},
           {"polydispersity", "", {{"t", "", 0, 1.5, 0.5}}},
-          {"control", "", {{"t", "", -0.5, 0.5, 0.2}}}};
+          {"control", "", {{"t", "", -0.5, 0.5, 0.2}}, true}};
+}
+
+// The library plus "roughness", whose signature is within a few per cent of rolling's: the
+// two cannot be told apart on these observables.
+inline std::vector<CandidateEffect> AmbiguousCandidates() {
+  std::vector<CandidateEffect> c = Candidates();
+  c.push_back({"roughness", "", {{"t", "", 0, 1, 0.2, "more roughness", ""}}});
+  return c;
 }
 
 class AnalyticForwardModel final : public ForwardModel {
@@ -58,18 +76,21 @@ class AnalyticForwardModel final : public ForwardModel {
   // every effect nonlinear, acting as v + c·v² (0: linear).
   // `angle_saturation` s > 0: the angle stops rising with mu above s (a heap whose grains roll
   // rather than slide), the other observables still respond.
-  static double Exact(int i, double mu, const std::vector<std::pair<int, double>>& effects, double curvature = 0,
-                      double angle_saturation = 0) {
+  static double Exact(int i, double mu, const std::vector<std::pair<int, double>>& effects,
+                      double curvature = 0, double angle_saturation = 0) {
     const int k = Kind(i);
     const double mu_k = k == 0 && angle_saturation > 0 ? std::min(mu, angle_saturation) : mu;
-    double y = std::vector<double>{20, 0.012, 4e-3}[k] + mu_k * std::vector<double>{50, 5e-3, -5e-3}[k];
+    double y =
+        std::vector<double>{20, 0.012, 4e-3}[k] + mu_k * std::vector<double>{50, 5e-3, -5e-3}[k];
     for (const auto& [e, v] : effects) y += EffectChange(e, k, Coating(i), v + curvature * v * v);
     return y;
   }
   double curvature = 0;
   double angle_saturation = 0;
   // An effect no candidate has: grows with the square of the coating, only in the flow.
-  static double Foreign(int i, double v) { return Kind(i) == 2 ? v * Coating(i) * Coating(i) * 1e-4 : 0; }
+  static double Foreign(int i, double v) {
+    return Kind(i) == 2 ? v * Coating(i) * Coating(i) * 1e-4 : 0;
+  }
 
   int BaseParameters() const override { return 1; }
   int SimulationsRun() const override { return runs_; }
@@ -82,8 +103,9 @@ class AnalyticForwardModel final : public ForwardModel {
       Prediction pr{true, "ok"};
       for (int i = 0; i < Count(); ++i) {
         const double s = kScatter[Kind(i)];
-        pr.mean.push_back(Exact(i, 0.2 + 0.8 * p.base_unit[0], effects, curvature, angle_saturation) +
-                          s / std::sqrt(replicates) * calibrate::testing::Normal(seed, i));
+        pr.mean.push_back(
+            Exact(i, 0.2 + 0.8 * p.base_unit[0], effects, curvature, angle_saturation) +
+            s / std::sqrt(replicates) * calibrate::testing::Normal(seed, i));
         pr.sem.push_back(s / std::sqrt(replicates));
         pr.spread.push_back(s);
       }
@@ -102,18 +124,23 @@ class AnalyticForwardModel final : public ForwardModel {
   // cannot determine the base parameter).
   double base_stop_unit = -1, base_step = 0.01;
   int settle_at_scale = 1;
+  double stall_shift = 0;  // > 0: unsettled rounds all stop at 1 − stall_shift (stagnation)
   bool blind_base = false;
   std::vector<int> base_scales;  // the budget scales CalibrateBase was called with
   BaseCalibration CalibrateBase(int budget_scale) override {
     base_scales.push_back(budget_scale);
     const bool settles = budget_scale >= settle_at_scale;
-    const double stop = settles ? base_stop_unit : 1.0;
+    // Unsettled rounds stop nearer the truth each time (as a search given more budget does).
+    const double stop = settles           ? base_stop_unit
+                        : stall_shift > 0 ? 1.0 - stall_shift
+                                          : 1.0 - 0.1 * std::log2(budget_scale);
     double best_u = stop, best = INFINITY;
     for (int g = 0; stop < 0 && g <= 1000; ++g) {
       const double u = g / 1000.0;
       const Prediction p = Evaluate({{{u}, {}}})[0];
       double chi2 = 0;
-      for (int i = 0; i < Count(); ++i) chi2 += std::pow((p.mean[i] - measured[i]) / kUncertainty[Kind(i)], 2);
+      for (int i = 0; i < Count(); ++i)
+        chi2 += std::pow((p.mean[i] - measured[i]) / kUncertainty[Kind(i)], 2);
       if (chi2 < best) best = chi2, best_u = u;
     }
     BaseCalibration b{true, "grid", {best_u}};
@@ -132,20 +159,28 @@ class AnalyticForwardModel final : public ForwardModel {
 };
 
 // Measurements of the truth (mu plus hidden effects, plus `foreign` of the unknown effect) with
-// seeded Gaussian noise of the stated uncertainties.
+// seeded Gaussian noise of the stated uncertainties. offset_scatters > 0 adds a model-form
+// offset: per observation a fixed shift of offset_scatters single-run scatters times a standard
+// normal drawn once per dataset (another engine's differences: no pattern an effect has).
 inline std::vector<Observation> MakeObservations(AnalyticForwardModel* model, double mu,
-                                                 const std::vector<std::pair<int, double>>& hidden, uint64_t noise_seed,
-                                                 double foreign = 0) {
+                                                 const std::vector<std::pair<int, double>>& hidden,
+                                                 uint64_t noise_seed, double foreign = 0,
+                                                 double offset_scatters = 0) {
   std::vector<Observation> obs;
   model->measured.clear();
   for (int i = 0; i < AnalyticForwardModel::Count(); ++i) {
     const int k = AnalyticForwardModel::Kind(i);
-    const double y = AnalyticForwardModel::Exact(i, mu, hidden, model->curvature, model->angle_saturation) +
-                     AnalyticForwardModel::Foreign(i, foreign) +
-                     kUncertainty[k] * calibrate::testing::Normal(noise_seed, i);
+    const double y =
+        AnalyticForwardModel::Exact(i, mu, hidden, model->curvature, model->angle_saturation) +
+        AnalyticForwardModel::Foreign(i, foreign) +
+        offset_scatters * kScatter[k] * calibrate::testing::Normal(noise_seed + 7919, i) +
+        kUncertainty[k] * calibrate::testing::Normal(noise_seed, i);
     model->measured.push_back(y);
-    Observation o{kKinds[k] + " w=" + std::to_string(AnalyticForwardModel::Coating(i)), kKinds[k],
-                  {{"coating_wt_pct", std::to_string(AnalyticForwardModel::Coating(i))}}, y, kUncertainty[k]};
+    Observation o{kKinds[k] + " w=" + std::to_string(AnalyticForwardModel::Coating(i)),
+                  kKinds[k],
+                  {{"coating_wt_pct", std::to_string(AnalyticForwardModel::Coating(i))}},
+                  y,
+                  kUncertainty[k]};
     obs.push_back(o);
   }
   return obs;

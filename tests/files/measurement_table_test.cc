@@ -45,7 +45,8 @@ TEST_CASE("the alizadeh2018 table: Table 1 angles, the inferred 0.5 wt% row, by 
 TEST_CASE("a value simulated by another engine says so in its provenance", "[unit]") {
   ScratchDir dir("measurement_table_simulated");
   MeasurementTable table;
-  REQUIRE(Load(dir, "angle_deg,deg,BP,0,17.5,1,4,simulated:liggghts-3.8,scripts/x.py\n", &table) == "ok");
+  const std::string row = "angle_deg,deg,BP,0,17.5,1,4,simulated:liggghts-3.8,scripts/x.py\n";
+  REQUIRE(Load(dir, row, &table) == "ok");
   const std::string& p = table.rows[0].provenance;
   std::string engine;
   CHECK(p == "simulated:liggghts-3.8");

@@ -23,7 +23,8 @@ EffectContext Context() { return {"BP", "BP", {"perspex"}, "coating_PEG_wt_pct",
 
 }  // namespace
 
-TEST_CASE("effect library: every effect is off at 0 and declares a probe inside its bounds", "[unit]") {
+TEST_CASE("effect library: every effect is off at 0 and declares a probe inside its bounds",
+          "[unit]") {
   std::set<std::string> keys;
   for (const Effect* e : EffectLibrary()) {
     INFO(e->Key());
@@ -84,11 +85,13 @@ TEST_CASE("effects write what they declare into the model", "[unit]") {
   std::string why;
   core::Scene m = Model();
   // Adhesion follows the coating column: Γ = g·w, nothing for uncoated material.
-  REQUIRE(FindEffect("jkr_adhesion")->Apply({0.004}, {{"coating_PEG_wt_pct", "1.5"}}, Context(), &m, &why));
+  REQUIRE(FindEffect("jkr_adhesion")
+              ->Apply({0.004}, {{"coating_PEG_wt_pct", "1.5"}}, Context(), &m, &why));
   CHECK(m.pair_parameters[0].interfacial_energy_J_m2 == Approx(0.006));
   CHECK(m.pair_parameters[1].interfacial_energy_J_m2 == 0);  // BP-perspex untouched
   m = Model();
-  REQUIRE(FindEffect("jkr_adhesion")->Apply({0.004}, {{"coating_PEG_wt_pct", "0"}}, Context(), &m, &why));
+  REQUIRE(FindEffect("jkr_adhesion")
+              ->Apply({0.004}, {{"coating_PEG_wt_pct", "0"}}, Context(), &m, &why));
   CHECK(m.pair_parameters[0].interfacial_energy_J_m2 == 0);
   m = Model();
   REQUIRE(FindEffect("rolling_resistance")->Apply({0.3}, {}, Context(), &m, &why));

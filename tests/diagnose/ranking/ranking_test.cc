@@ -6,9 +6,11 @@
 namespace demcal::diagnose {
 namespace {
 
-RankingEntry Entry(const std::string& key, double chi2_base, double chi2, bool simulated) {
+RankingEntry Entry(const std::string& key, double chi2_base, double chi2, bool simulated,
+                   bool control = false) {
   RankingEntry e;
   e.key = key;
+  e.control = control;
   e.simulated = simulated;
   e.chi2 = chi2;
   e.evidence = EvidenceOf(chi2_base, chi2, 1, 12, 0.01);
@@ -30,7 +32,8 @@ TEST_CASE("evidence: ΔBIC with the Schwarz penalty and the Wilks likelihood rat
 }
 
 TEST_CASE("ranking names the best simulated significant candidate and flags a near tie", "[unit]") {
-  std::vector<RankingEntry> entries = {Entry("a", 50, 30, true), Entry("b", 50, 8, true), Entry("c", 50, 2, false)};
+  std::vector<RankingEntry> entries = {Entry("a", 50, 30, true), Entry("b", 50, 8, true),
+                                       Entry("c", 50, 2, false)};
   Ranking r = RankCandidates(entries);
   CHECK(r.order.front() == 2);  // best ΔBIC, but only linearised: cannot win
   REQUIRE(r.winner == 1);
@@ -43,6 +46,32 @@ TEST_CASE("ranking names the best simulated significant candidate and flags a ne
   entries = {Entry("a", 12, 9, true)};  // Δχ² = 3: nothing significant
   r = RankCandidates(entries);
   CHECK(r.winner == -1);
+}
+
+TEST_CASE("ranking: a tie is named, and the control never wins", "[unit]") {
+  std::vector<RankingEntry> entries = {Entry("a", 50, 10, true), Entry("b", 50, 11, true),
+                                       Entry("c", 50, 30, true)};
+  Ranking r = RankCandidates(entries);
+  CHECK(r.winner == 0);
+  CHECK(r.tied == 1);
+  CHECK_FALSE(r.control_first);
+  // The control ranks first: no winner, a model-form offset.
+  entries = {Entry("a", 50, 20, true), Entry("control", 50, 5, true, true)};
+  r = RankCandidates(entries);
+  CHECK(r.winner == -1);
+  CHECK(r.control_first);
+  CHECK(r.message.find("model-form offset") != std::string::npos);
+  // The control level with the winner (ΔBIC within 2): an effect no better than re-tuning a fitted
+  // parameter is not named either.
+  entries = {Entry("a", 50, 10, true), Entry("control", 50, 11, true, true)};
+  r = RankCandidates(entries);
+  CHECK(r.winner == -1);
+  CHECK(r.control_first);
+  // Far behind the winner, the control does not matter.
+  entries = {Entry("a", 50, 5, true), Entry("control", 50, 40, true, true)};
+  r = RankCandidates(entries);
+  CHECK(r.winner == 0);
+  CHECK_FALSE(r.control_first);
 }
 
 }  // namespace demcal::diagnose

@@ -1,0 +1,87 @@
+// The files `demcal diagnose` writes (diagnosis_outputs.h), from diagnoses of the analytic
+// stand-in: the sign of a named effect, the estimated floor, the settled base, a tie with the
+// measurement that would separate it, and the control guard reach diagnosis.json, ranking.csv
+// and report.html.
+#include "diagnose/report/diagnosis_outputs.h"
+
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "core/io/scratch_dir.h"
+#include "diagnose/analytic_forward_model.h"
+#include "workflow/tiny_scene.h"
+
+namespace demcal::diagnose {
+namespace {
+
+using demcal::testing::ReadJson;
+using demcal::testing::ScratchDir;
+
+nlohmann::json Written(const ScratchDir& dir, const std::string& name,
+                       const std::vector<CandidateEffect>& candidates, const Diagnosis& d) {
+  DiagnosisRunInfo info{"study.json", "stand-in"};
+  info.synthetic = true;
+  info.data_provenance = {"simulated:liggghts-3.8"};
+  info.candidates = candidates;
+  info.base_names = {"mu"};
+  std::string error;
+  std::filesystem::create_directories(dir.str(name));  // the command's output lock makes it
+  INFO(error);
+  REQUIRE(WriteDiagnosisOutputs(dir.str(name), info, d, &error));
+  return ReadJson(dir.str(name + "/diagnosis.json"));
+}
+
+std::string Text(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+TEST_CASE("diagnosis outputs carry the sign, the floor, the base and the tie", "[unit]") {
+  ScratchDir dir("diagnosis_outputs");
+  testing::AnalyticForwardModel model;
+  std::vector<Observation> obs = testing::MakeObservations(&model, 0.5, {{1, -0.2}}, 1);
+  const Diagnosis signed_effect = Diagnose(model, obs, testing::Candidates(), DiagnoseOptions{});
+  nlohmann::json j = Written(dir, "signed", testing::Candidates(), signed_effect);
+  CHECK(j["termination"] == "effect_found");
+  CHECK(j["named_effects_signed"][0]["direction"] == "less rolling resistance than assumed");
+  CHECK(j["named_effects_signed"][0]["value"].get<double>() < 0);
+  CHECK(j["discrepancy_floor"]["fixed_single_run_scatters"] == 1.0);
+  CHECK(j["discrepancy_floor"]["estimated_single_run_scatters_before"].is_number());
+  CHECK(j["base_calibration"]["settled"] == true);
+  CHECK(j["base_calibration"]["identifiable"] == true);
+  CHECK(j["provenance"]["data_provenance"][0] == "simulated:liggghts-3.8");
+  CHECK(
+      Text(dir.str("signed/ranking.csv")).rfind("step,rank,effect,parameter,value,direction,", 0) ==
+      0);
+  CHECK(Text(dir.str("signed/report.html")).find("less rolling resistance than assumed") !=
+        std::string::npos);
+
+  testing::AnalyticForwardModel tie_model;
+  obs = testing::MakeObservations(&tie_model, 0.5, {{1, 0.35}}, 1);
+  const std::vector<CandidateEffect> ambiguous = testing::AmbiguousCandidates();
+  const Diagnosis tie = Diagnose(tie_model, obs, ambiguous, DiagnoseOptions{});
+  j = Written(dir, "tie", ambiguous, tie);
+  CHECK(j["termination"] == "not_told_apart");
+  CHECK(j["named_effect"].is_null());
+  CHECK(j["not_told_apart"].size() == 2);
+  CHECK(j["separating_measurement"]["observable"].is_string());
+  CHECK(j["steps"][0]["not_told_apart_from"].is_string());
+
+  std::vector<CandidateEffect> guarded = testing::Candidates();
+  guarded[2].control = true;
+  testing::AnalyticForwardModel control_model;
+  obs = testing::MakeObservations(&control_model, 0.5, {{2, 0.8}}, 1);
+  const Diagnosis control = Diagnose(control_model, obs, guarded, DiagnoseOptions{});
+  j = Written(dir, "control", guarded, control);
+  CHECK(j["termination"] == "model_form_offset");
+  CHECK(j["control_guard"].is_string());
+  CHECK(j["steps"][0]["control_first"] == true);
+}
+
+}  // namespace demcal::diagnose
