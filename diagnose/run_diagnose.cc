@@ -127,7 +127,8 @@ int RunDiagnose(const DiagnoseCommandOptions& o, std::ostream& log) {
   const Diagnosis d = Diagnose(*model, model->Observations(), candidates, o.diagnose, progress);
   if (d.termination == DiagnosisTermination::kInvalid)
     return log << "error: " << d.message << "\n", kExitInvalidInput;
-  if (!WriteDiagnosisOutputs(o.out_dir, RunInfo(o, study, context, candidates, d, *model), d,
+  if (writer &&
+      !WriteDiagnosisOutputs(o.out_dir, RunInfo(o, study, context, candidates, d, *model), d,
                              &error))
     return log << "error: " << error << "\n", kExitOutputError;
   std::ostringstream times;
