@@ -364,6 +364,7 @@ table_case("table_byte_order_mark_ok", ("\ufeff" + HEADER + ROW.format(v=400)).e
 case("diagnose_directory", {}, "diagnose {files} --out {out}", 2, "directory")
 import study_cases  # noqa: E402 (studies that could never evaluate a candidate)
 study_cases.add(case)
+study_cases.add_workflow(case, workflow)
 
 # Not cases: the scenes of checkpoint_test.sh (a base run, and others its checkpoint must not fit).
 CHECKPOINT_SCENES = {

@@ -73,3 +73,33 @@ def add(case):
                "field 'constraints[0].non_decreasing' the start values break it: 'gamma_w2' "
                "starts at 0.015, below 'gamma_w1' at 0.02")
 
+
+def add_workflow(case, workflow):
+    """Workflow files refused as a whole before stage 1, naming the workflow's own field."""
+    R = "reproduce {files}/%s --out {out}"
+    synthetic = os.path.join(EXAMPLES, "..", "datasets", "synthetic",
+                             "alizadeh2018_coating_angles", "measurements.csv")
+
+    def workflow_case(name, edit, fragment, files=None):
+        files = dict(files or {})
+        files[name + ".json"] = workflow(edit)
+        case(name, files, R % (name + ".json"), 2, fragment, "study.json")
+
+    workflow_case("workflow_species_twice", lambda w: w["species"].append(w["species"][0]),
+                  "field 'species[3].name' 'BP' is the species of species[0] too")
+    workflow_case("workflow_level_twice",
+                  lambda w: w["coating"].update(levels_wt_pct=[0.5, 1.5, 0.50]),
+                  "field 'coating.levels_wt_pct[2]' = 0.5 repeats levels_wt_pct[0]")
+    workflow_case("workflow_reference_twice", lambda w: w["reference"].append(w["reference"][0]),
+                  "'angle_BP_deg' is the key of reference[0] too")
+    workflow_case("workflow_partner_unknown",
+                  lambda w: w["coating"].update(partners=["BP", "TEAD"]),
+                  "field 'coating.partners[1]' 'TEAD' is not a material of")
+    workflow_case("workflow_coated_unknown", lambda w: w["coating"].update(material="PE"),
+                  "field 'coating.material' 'PE' is not a material of")
+    workflow_case("workflow_species_unknown", lambda w: w["species"][2].update(name="EPP"),
+                  "field 'species[2]' ('EPP'): its calibration would be refused: ")
+    measured = open(synthetic).read().replace(",synthetic,", ",measured,", 1)
+    workflow_case("workflow_synthetic_measured",
+                  lambda w: w.update(synthetic_measurements="workflow_synthetic_measured.csv"),
+                  "workflow_synthetic_measured.csv' line 2 has provenance 'measured'", {"workflow_synthetic_measured.csv": measured})
