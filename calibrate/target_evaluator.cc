@@ -63,7 +63,10 @@ std::vector<CandidateResult> TargetEvaluator::Run(const std::vector<std::vector<
     batch[c].parameters = p;
     batch[c].pooled = pooled;
     batch[c].runs.assign(g, std::vector<ReplicateRecord>(replicates));
-    if (!space_.Feasible(p, &infeasible[c])) continue;
+    // Once a record could not be written, nothing more runs: work that cannot be resumed
+    // would be lost (the caller stops the calibration on the journal error).
+    if (!journal_failure_.empty()) infeasible[c] = "the journal cannot be written";
+    if (!infeasible[c].empty() || !space_.Feasible(p, &infeasible[c])) continue;
     for (int k = 0; k < g && infeasible[c].empty(); ++k) {  // every group's model first
       core::Scene& model = models[static_cast<size_t>(c) * g + k];
       model = groups_[k].model;
@@ -102,6 +105,8 @@ std::vector<CandidateResult> TargetEvaluator::Run(const std::vector<std::vector<
       if (journal_errors[task.candidate].empty()) journal_errors[task.candidate] = error;
     }
   });
+  for (const std::string& e : journal_errors)
+    if (journal_failure_.empty() && !e.empty()) journal_failure_ = e;
   // Every target's replicate values first, so the pooled spread includes this batch.
   std::vector<std::vector<TargetSample>> samples(n);
   for (int c = 0; c < n; ++c) {
@@ -117,7 +122,7 @@ std::vector<CandidateResult> TargetEvaluator::Run(const std::vector<std::vector<
     int run = 0;
     for (const Task& t : pending) run += t.candidate == c;
     result.replicates_run = run;
-    result.journal_error = journal_errors[c];
+    result.journal_error = journal_errors[c].empty() ? journal_failure_ : journal_errors[c];
     results.push_back(std::move(result));
   }
   return results;

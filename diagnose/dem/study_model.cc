@@ -92,7 +92,9 @@ StudyModel::Setting* StudyModel::SettingFor(const std::vector<ActiveEffect>& eff
   const std::string path =
       options_.out_dir + (key.empty() ? "/journal/base.jsonl" : "/journal/" + Hex(key) + ".jsonl");
   s.journal = std::make_unique<calibrate::EvaluationJournal>();
+  s.journal->ExpectSeeds(seed_);
   if (!s.journal->Open(path, runs_.fingerprint + "|effects:" + key, error, study_.space.Size())) {
+    if (s.journal->io_error() && journal_error_.empty()) journal_error_ = *error;
     settings_.erase(key);
     return nullptr;
   }
@@ -140,8 +142,13 @@ std::vector<Prediction> StudyModel::Evaluate(const std::vector<ModelPoint>& poin
   std::vector<Prediction> out;
   for (const ModelPoint& point : points) {
     std::string error;
-    Setting* s = SettingFor(point.effects, &error);
     Prediction p;
+    if (!journal_error_.empty()) {  // nothing runs once the journal cannot be written
+      p.status = "journal: " + journal_error_;
+      out.push_back(p);
+      continue;
+    }
+    Setting* s = SettingFor(point.effects, &error);
     if (!s) p.status = "journal: " + error;
     else if (!s->invalid.empty()) p.status = "effect not applicable: " + s->invalid;
     if (!s || !s->invalid.empty()) {

@@ -144,14 +144,16 @@ Outcome CalibrateInto(const StudyFile& st, const CalibrateSettings& o, int clump
     log << "error: --out: cannot create '" << dir << "': " << ec.message() << "\n";
     return Failed(CalibrationStatus::kOutputError);
   }
+  const uint64_t seed = st.has_seed ? st.seed : st.experiment().seed;
   calibrate::EvaluationJournal journal;
+  journal.ExpectSeeds(seed);
   if (!journal.Open(dir + "/journal.jsonl", runs.fingerprint, &error, st.space.Size())) {
     log << "error: " << error << "\n";
-    return Failed(CalibrationStatus::kInvalidInput);
+    return Failed(journal.io_error() ? CalibrationStatus::kOutputError
+                                     : CalibrationStatus::kInvalidInput);
   }
   if (!o.quiet && journal.LoadedRecords() > 0)
     log << "calibrate: resuming: " << journal.LoadedRecords() << " replicate runs in " << journal.path() << "\n";
-  const uint64_t seed = st.has_seed ? st.seed : st.experiment().seed;
   const int replicates = st.replicates > 0 ? st.replicates : st.experiment().replicates;
   calibrate::TargetEvaluator inner(st.space, runs.groups, runs.bindings,
                                    {.replicates = replicates, .seed = seed, .workers = o.threads}, &journal);
@@ -165,6 +167,11 @@ Outcome CalibrateInto(const StudyFile& st, const CalibrateSettings& o, int clump
   const calibrate::CalibrationSummary summary = calibrate::Calibrate(
       evaluator, st.space, targets, options,
       o.quiet ? calibrate::CandidateProgress{} : ProgressLine(st, budget, log));
+  if (!summary.journal_error.empty()) {  // nothing ran after it; what ran is journalled
+    log << "error: " << summary.journal_error << "; the calibration stopped there: make room "
+        << "and run the same command again to resume\n";
+    return Failed(CalibrationStatus::kOutputError, summary);
+  }
   if (summary.termination == calibrate::Termination::kInvalid) {
     log << "error: " << st.source << ": " << summary.message << "\n";
     return Failed(CalibrationStatus::kInvalidInput, summary);
@@ -177,7 +184,6 @@ Outcome CalibrateInto(const StudyFile& st, const CalibrateSettings& o, int clump
     log << "error: " << error << "\n";
     return Failed(CalibrationStatus::kOutputError, summary);
   }
-  if (!summary.journal_error.empty()) log << "warning: " << summary.journal_error << "\n";
   Outcome out;
   out.result = CalibrationResultOf(st, summary);
   out.result.status = summary.ok() ? CalibrationStatus::kMatched : CalibrationStatus::kNotMatched;
