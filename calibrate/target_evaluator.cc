@@ -78,10 +78,12 @@ std::vector<CandidateResult> TargetEvaluator::Run(const std::vector<std::vector<
       for (int r = 0; r < replicates; ++r) {
         const uint64_t seed = objectives::ReplicateSeed(options_.seed, r);
         ReplicateRecord& record = batch[c].runs[k][r];
-        const ReplicateRecord* done = journal_ ? journal_->Find(groups_[k].key, p, r, seed) : nullptr;
-        if (!done && prior && r < static_cast<int>(prior->runs[k].size()))
-          done = &prior->runs[k][r];  // run before this candidate was given more replicates
-        if (done) {
+        // A run of this candidate before it was given more replicates is taken as it is and
+        // was counted then (as run, or as reused); only what the journal adds counts as reused.
+        if (prior && r < static_cast<int>(prior->runs[k].size())) {
+          record = prior->runs[k][r];
+        } else if (const ReplicateRecord* done =
+                       journal_ ? journal_->Find(groups_[k].key, p, r, seed) : nullptr) {
           record = *done;
           ++reused[c];
         } else {
