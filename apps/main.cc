@@ -13,6 +13,7 @@
 #include "apps/experiment_command.h"
 #include "apps/reproduce_command.h"
 #include "apps/simulate_command.h"
+#include "calibrate/solver_logging.h"
 #include "core/version.h"
 #include "outputs/exit_codes.h"
 
@@ -62,7 +63,11 @@ int main(int argc, char** argv) {
   }
   try {
     for (const Command& c : commands)
-      if (c.app->parsed()) return c.run();
+      if (c.app->parsed()) {
+        const CLI::Option* quiet = c.app->get_option_no_throw("--quiet");
+        demcal::calibrate::InitSolverLogging(argv[0], quiet && quiet->count() > 0);
+        return c.run();
+      }
   } catch (const std::bad_alloc&) {
     // Input validation bounds what a scene may ask for; running out anyway is the machine's
     // limit, not a bug.
