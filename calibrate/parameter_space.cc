@@ -5,8 +5,12 @@
 #include <set>
 #include <sstream>
 
+#include "objectives/common/input_limits.h"
+
 namespace demcal::calibrate {
 namespace {
+
+namespace limits = objectives::limits;  // Limit::Text: the range format of every message
 
 bool Fail(std::string* error, const std::string& message) {
   if (error) *error = message;
@@ -36,14 +40,14 @@ bool ParameterSpace::IsValid(const core::Scene& model, std::string* error) const
       if (!(std::isfinite(p.lower) && std::isfinite(p.upper) && p.lower < p.upper))
         return Fail(error, at + ".min/max: need finite min < max");
     } else if (!(p.lower >= 0 && p.lower < p.upper && p.upper <= max))
-      return Fail(error, at + ".lower/upper: need 0 <= lower < upper <= " + std::to_string(max) +
-                             " (got " + std::to_string(p.lower) + ", " + std::to_string(p.upper) + ")");
+      return Fail(error, at + ".min/max: need min < max within " + limits::Closed(0, max).Text() +
+                             " (got " + limits::Closed(p.lower, p.upper).Text() + ")");
     if (p.property == PairProperty::kRestitution && p.lower <= 0)
-      return Fail(error, at + ".lower: a restitution must be > 0");
-    if (p.log_scale && p.lower <= 0) return Fail(error, at + ".log_scale: needs lower > 0");
+      return Fail(error, at + ".min: a restitution must be > 0");
+    if (p.log_scale && p.lower <= 0) return Fail(error, at + ".log_scale: needs min > 0");
     if (!(p.start >= p.lower && p.start <= p.upper))
-      return Fail(error, at + ".start: must lie in [lower, upper] = [" + std::to_string(p.lower) +
-                             ", " + std::to_string(p.upper) + "]");
+      return Fail(error, at + ".start: must lie in [min, max] = " +
+                             limits::Closed(p.lower, p.upper).Text());
   }
   for (size_t c = 0; c < curves.size(); ++c)
     for (int k : curves[c].coefficients)

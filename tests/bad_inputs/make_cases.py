@@ -365,6 +365,7 @@ case("diagnose_directory", {}, "diagnose {files} --out {out}", 2, "directory")
 import study_cases  # noqa: E402 (studies that could never evaluate a candidate)
 study_cases.add(case)
 study_cases.add_workflow(case, workflow)
+study_cases.add_ranges(case, study, scene, SCENE["walls"])
 
 # Not cases: the scenes of checkpoint_test.sh (a base run, and others its checkpoint must not fit).
 CHECKPOINT_SCENES = {

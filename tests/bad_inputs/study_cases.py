@@ -103,3 +103,19 @@ def add_workflow(case, workflow):
     workflow_case("workflow_synthetic_measured",
                   lambda w: w.update(synthetic_measurements="workflow_synthetic_measured.csv"),
                   "workflow_synthetic_measured.csv' line 2 has provenance 'measured'", {"workflow_synthetic_measured.csv": measured})
+
+
+def add_ranges(case, study, scene, base_walls):
+    """Numbers in messages with 6 significant digits (FormatNumber, Limit::Text), never the
+    six decimals of std::to_string."""
+    C1 = "calibrate {files}/%s --out {out} --max-evaluations 1"
+    case("study_restitution_above_one", {"study_restitution_above_one.json": study(parameters=[
+        {"name": "e_BP", "property": "restitution", "materials": ["BP", "BP"], "min": 0.1,
+         "max": 2}])}, C1 % "study_restitution_above_one.json", 2,
+         "parameters[0].min/max: need min < max within [0, 1] (got [0.1, 2])", "000000")
+    case("scene_cylinder_axial_order", {"scene_cylinder_axial_order.json": scene(
+        walls=base_walls + [{"type": "cylinder", "axis_point_m": [0.01, 0.01, 0],
+                             "axis": [0, 0, 1], "radius_m": 0.005, "axial_min_m": 0.02,
+                             "axial_max_m": 0.01, "material": "glass"}])},
+         "simulate {files}/scene_cylinder_axial_order.json --out {out}", 2,
+         "(0.02 >= 0.01)", "000000")
