@@ -102,7 +102,8 @@ def add_workflow(case, workflow):
     measured = open(synthetic).read().replace(",synthetic,", ",measured,", 1)
     workflow_case("workflow_synthetic_measured",
                   lambda w: w.update(synthetic_measurements="workflow_synthetic_measured.csv"),
-                  "workflow_synthetic_measured.csv' line 2 has provenance 'measured'", {"workflow_synthetic_measured.csv": measured})
+                  "workflow_synthetic_measured.csv' line 2 has provenance 'measured'",
+                  {"workflow_synthetic_measured.csv": measured})
 
 
 def add_ranges(case, study, scene, base_walls):

@@ -66,11 +66,12 @@ TEST_CASE("journal: a record naming an unknown observable is refused, naming the
           "[unit][calibrate]") {
   demcal::testing::ScratchDir dir("journal_unknown_observable");
   const std::string path = dir.str("journal.jsonl");
-  const std::string good =
-      R"({"group": "g", "parameters": [0.5], "replicate": 0, "seed": 1, "status": "ok", "values": {"angle_deg": 30}})";
+  const std::string good = R"({"group": "g", "parameters": [0.5], "replicate": 0, "seed": 1, )"
+                           R"("status": "ok", "values": {"angle_deg": 30}})";
   CHECK(Load(path, good).empty());
-  const std::string error = Load(path, good + "\n" + R"({"group": "g", "parameters": [0.5], )"
-                                 R"("replicate": 1, "seed": 2, "status": "ok", "values": {"angel_deg": 30}})");
+  const std::string error =
+      Load(path, good + "\n" + R"({"group": "g", "parameters": [0.5], "replicate": 1, "seed": 2, )"
+                                R"("status": "ok", "values": {"angel_deg": 30}})");
   CHECK_THAT(error, Catch::StartsWith(path + ":3: values.angel_deg: not an observable demcal "
                                              "measures (angle_deg, "));
 }
@@ -84,8 +85,8 @@ TEST_CASE("journal: a status no run ends with is refused with the allowed ones",
   CHECK_THAT(error, Catch::Contains(path + ":2: status: 'weird' is not a status demcal writes"));
   CHECK_THAT(error, Catch::Contains("not_settled"));
   CHECK_THAT(error, Catch::Contains("non_finite"));
-  CHECK(Load(path, R"({"parameters": [0.5], "replicate": 0, "seed": 1, "status": "not_settled", "value": null})")
-            .empty());
+  CHECK(Load(path, R"({"parameters": [0.5], "replicate": 0, "seed": 1, )"
+                   R"("status": "not_settled", "value": null})").empty());
 }
 
 TEST_CASE("journal: a record with another seed than the study gives is refused on loading",
@@ -155,5 +156,6 @@ TEST_CASE("journal: once a record cannot be written, the calibration runs nothin
   }
   CHECK_THAT(s.journal_error, Catch::Contains(path + ": cannot write"));
   CHECK(angle.runs == 2);  // the first candidate's two replicates, then nothing
-  for (size_t c = 1; c < s.candidates.size(); ++c) CHECK(s.candidates[c].result.replicates_run == 0);
+  for (size_t c = 1; c < s.candidates.size(); ++c)
+    CHECK(s.candidates[c].result.replicates_run == 0);
 }

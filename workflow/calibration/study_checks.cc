@@ -17,7 +17,8 @@ std::string Field(const std::string& path) { return "field '" + path + "' "; }
 // targets that name one (the others read a target's runs).
 std::vector<std::pair<std::string, calibrate::Condition>> EvaluatedConditions(const StudyFile& s) {
   std::vector<std::pair<std::string, calibrate::Condition>> out;
-  for (const StudyTarget& t : s.targets) out.push_back({"target '" + t.target.name + "'", t.condition});
+  for (const StudyTarget& t : s.targets)
+    out.push_back({"target '" + t.target.name + "'", t.condition});
   for (const StudyCandidateTarget& t : s.candidate_targets)
     if (!t.condition.empty()) out.push_back({"candidate target '" + t.name + "'", t.condition});
   return out;
@@ -89,7 +90,8 @@ bool CheckOverwrites(const StudyFile& s, std::string* error) {
   for (size_t c = 0; c < s.space.curves.size(); ++c) {
     const calibrate::ParameterCurve& curve = s.space.curves[c];
     const auto pair = Sorted(s.curve_materials[c]);
-    auto same = [&](calibrate::PairProperty property, const std::pair<std::string, std::string>& m) {
+    auto same = [&](calibrate::PairProperty property,
+                    const std::pair<std::string, std::string>& m) {
       return property == curve.property && Sorted(m) == pair;
     };
     const std::string overwritten = "sets the pair property that the curve '" + curve.name +

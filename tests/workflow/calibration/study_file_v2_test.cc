@@ -87,7 +87,8 @@ TEST_CASE("study/2: per-condition parameters, curves, constraints and the clump 
   CHECK_THAT(Load(dir, j, &st), Catch::Contains("constraints[0].non_decreasing"));
   j.erase("constraints");
   j["parameters"][2]["curve"]["covariate"] = "test";
-  CHECK_THAT(Load(dir, j, &st), Catch::Contains("gives 'test' a word, 'pseudo-2D heap', not a number"));
+  CHECK_THAT(Load(dir, j, &st),
+             Catch::Contains("gives 'test' a word, 'pseudo-2D heap', not a number"));
   j["parameters"][2]["curve"]["covariate"] = "w";
   j["parameters"][2]["curve"]["form"] = "linear_through_origin";
   CHECK_THAT(Load(dir, j, &st), Catch::Contains("has 1 coefficients"));
