@@ -19,14 +19,15 @@ bool Fail(std::string* error, const std::string& message) {
 
 }  // namespace
 
-bool ParameterSpace::IsValid(const core::Scene& model, std::string* error) const {
+bool ParameterSpace::IsValid(const core::Scene& model, std::string* error,
+                             const std::vector<std::string>& paths) const {
   if (parameters.empty()) return Fail(error, "parameters: at least one parameter is needed");
   std::set<std::string> names;
   std::set<std::tuple<int, int, int, std::string>> slots;
   const int materials = static_cast<int>(model.materials.size());
   for (size_t k = 0; k < parameters.size(); ++k) {
     const Parameter& p = parameters[k];
-    const std::string at = "parameters[" + std::to_string(k) + "]";
+    const std::string at = k < paths.size() ? paths[k] : "parameters[" + std::to_string(k) + "]";
     const double max = PairPropertyMax(p.property);
     if (p.name.empty()) return Fail(error, at + ".name: must not be empty");
     if (!names.insert(p.name).second) return Fail(error, at + ".name: '" + p.name + "' is used twice");

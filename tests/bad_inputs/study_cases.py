@@ -46,6 +46,12 @@ def add(case):
                lambda s: s["parameters"][0]["curve"]["coefficients"][0].update(start=-0.02),
                "field 'parameters[0].curve.coefficients' start values fail")
 
+    def restitution_after_curve(s):  # the space's third parameter is the file's second
+        s["parameters"].append({"name": "e_BP", "property": "restitution",
+                                "materials": ["BP", "BP"], "min": 0.1, "max": 2})
+    study_case("study_bounds_after_curve", CURVE, restitution_after_curve,
+               "parameters[1].min/max: need min < max within [0, 1] (got [0.1, 2])")
+
     def curve_and_global(s):
         s["parameters"].append({"name": "gamma_BP", "property": "interfacial_energy_J_m2",
                                 "materials": ["BP", "BP"], "min": 0, "max": 0.04})
