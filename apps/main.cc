@@ -15,6 +15,7 @@
 #include "apps/export_command.h"
 #include "apps/reproduce_command.h"
 #include "apps/simulate_command.h"
+#include "calibrate/solver_logging.h"
 #include "core/version.h"
 #include "objectives/farm/farm.h"
 #include "outputs/exit_codes.h"
@@ -75,6 +76,8 @@ int RunCommandLine(int argc, char** argv) {
                   << "ranks; run it without mpirun (--threads sets its cores)\n";
         return kExitInvalidInput;
       }
+      const CLI::Option* quiet = c.app->get_option_no_throw("--quiet");
+      demcal::calibrate::InitSolverLogging(argv[0], quiet && quiet->count() > 0);
       return c.run();
     }
   } catch (const std::bad_alloc&) {

@@ -49,6 +49,7 @@ bool Rerun(CandidateEvaluator& evaluator, const std::vector<Target>& targets, in
   c->trial = Standardise(c->result, targets);
   c->replicates_added = n - base;
   s->replicates_run += c->result.replicates_run;
+  s->replicates_reused += c->result.replicates_reused;  // the added replicates a journal held
   return true;
 }
 

@@ -11,8 +11,10 @@
 #include <sstream>
 
 #include "calibrate/observable_registry.h"
+#include "calibrate/run_status.h"
 #include "core/io/input_file.h"
 #include "core/io/own_file.h"
+#include "objectives/common/replicates.h"
 
 namespace demcal::calibrate {
 namespace {
@@ -90,7 +92,14 @@ bool Finite(const nlohmann::json& v) { return v.is_number() && std::isfinite(v.g
 // finite; a journal line that breaks this was not written by demcal.
 std::string CheckValue(const std::string& name, double v) {
   const ObservableInfo* info = FindObservable(name);
-  if (info && !info->Contains(v))
+  // A value under a name demcal does not measure would be found as a replicate run yet give
+  // its target nothing: the record is refused rather than counted as done.
+  if (!info) {
+    std::string names;
+    for (const std::string& n : ObservableNames()) names += (names.empty() ? "" : ", ") + n;
+    return name + ": not an observable demcal measures (" + names + ")";
+  }
+  if (!info->Contains(v))
     return name + " = " + std::to_string(v) + " outside " + info->RangeText();
   return "";
 }
@@ -140,6 +149,11 @@ std::string ParseRecord(const nlohmann::json& j, size_t parameter_count, Replica
   if (!j.at("status").is_string() || j.at("status").get<std::string>().empty())
     return "status: must be a non-empty string";
   r->status = j.at("status").get<std::string>();
+  if (!IsRunStatus(r->status)) {
+    std::string names;
+    for (const std::string& n : RunStatusNames()) names += (names.empty() ? "" : ", ") + n;
+    return "status: '" + r->status + "' is not a status demcal writes (" + names + ")";
+  }
   if (j.contains("group") && !j.at("group").is_string()) return "group: must be a string";
   r->group = j.value("group", std::string());
   if (j.contains("wall_time_s") && !(Finite(j.at("wall_time_s")) && j.at("wall_time_s").get<double>() >= 0))
@@ -182,6 +196,7 @@ bool EvaluationJournal::Open(const std::string& path, const std::string& fingerp
   std::string content;
   // The journal is appended to in place: a link at its name, or a FIFO or device, is refused
   // rather than read and written through. A missing journal is a fresh run's.
+  io_error_ = false;
   if (!core::io::ReadRegularFile(path, "journal", kMaxJournalBytes,
                                  {.missing_is_empty = true, .refuse_link = true}, &content, error))
     return false;
@@ -217,6 +232,11 @@ bool EvaluationJournal::Open(const std::string& path, const std::string& fingerp
     if (j.is_discarded()) return Fail(error, at + "not JSON (a journal line is one JSON record)");
     if (std::string why = ParseRecord(j, parameter_count, &r); !why.empty())
       return Fail(error, at + why);
+    if (const uint64_t expected = objectives::ReplicateSeed(expected_base_seed_, r.replicate);
+        check_seeds_ && r.seed != expected)
+      return Fail(error, at + "seed: " + std::to_string(r.seed) + " is not the seed of replicate " +
+                             std::to_string(r.replicate) + " in this study (" +
+                             std::to_string(expected) + "); the journal has been edited or mixed");
     const auto [it, inserted] = records_.try_emplace({r.group, r.parameters, r.replicate}, r);
     if (!inserted && !SameRecord(it->second, r))
       return Fail(error, at + "a second record of the same run (group, parameters, replicate) "
@@ -226,15 +246,15 @@ bool EvaluationJournal::Open(const std::string& path, const std::string& fingerp
   if (read_only) return true;
   std::string open_error;
   fd_ = core::io::OpenOwnFile(path, O_WRONLY | O_CREAT | O_APPEND, &open_error);
+  io_error_ = true;  // from here on, a failure is the file system's
   if (fd_ < 0) return Fail(error, "cannot write the journal: " + open_error);
   if (::ftruncate(fd_, static_cast<off_t>(complete)) != 0)
     return Fail(error, path + ": cannot truncate the cut-off last line: " + std::strerror(errno));
   if (!has_header) {
     nlohmann::json header{{"format", kFormat}, {"study", fingerprint}};
-    const std::string text = header.dump() + "\n";
-    if (::write(fd_, text.data(), text.size()) != static_cast<ssize_t>(text.size()) || ::fsync(fd_) != 0)
-      return Fail(error, path + ": cannot write the header: " + std::strerror(errno));
+    if (!WriteWhole(header.dump() + "\n", error)) return false;
   }
+  io_error_ = false;
   return true;
 }
 
@@ -251,6 +271,32 @@ const ReplicateRecord* EvaluationJournal::Find(const std::string& group,
   return it != records_.end() && it->second.seed == seed ? &it->second : nullptr;
 }
 
+// One whole line or nothing: a write cut short (a full disk, a file size limit) is truncated
+// back, so the file never holds half a record that a later line would run into.
+bool EvaluationJournal::WriteWhole(const std::string& line, std::string* error) {
+  const off_t before = ::lseek(fd_, 0, SEEK_END);
+  size_t done = 0;
+  while (done < line.size()) {
+    const ssize_t n = ::write(fd_, line.data() + done, line.size() - done);
+    if (n > 0) {
+      done += static_cast<size_t>(n);
+    } else if (n < 0 && errno == EINTR) {
+      continue;
+    } else {
+      std::string message = path_ + ": cannot write: " + std::strerror(n < 0 ? errno : ENOSPC);
+      if (before >= 0 && ::ftruncate(fd_, before) != 0)
+        message += "; the last line is left cut short (dropped when the journal is next opened)";
+      io_error_ = true;
+      return Fail(error, message);
+    }
+  }
+  if (::fsync(fd_) != 0) {
+    io_error_ = true;
+    return Fail(error, path_ + ": cannot write: " + std::strerror(errno));
+  }
+  return true;
+}
+
 bool EvaluationJournal::Append(const ReplicateRecord& record, std::string* error) {
   const std::string line = RecordLine(record);
   std::lock_guard lock(mutex_);
@@ -259,8 +305,8 @@ bool EvaluationJournal::Append(const ReplicateRecord& record, std::string* error
     return true;
   }
   if (fd_ < 0) return Fail(error, "journal not open");
-  if (::write(fd_, line.data(), line.size()) != static_cast<ssize_t>(line.size()) || ::fsync(fd_) != 0)
-    return Fail(error, path_ + ": cannot append: " + std::strerror(errno));
+  if (!write_error_.empty()) return Fail(error, write_error_);
+  if (!WriteWhole(line, &write_error_)) return Fail(error, write_error_);
   records_[{record.group, record.parameters, record.replicate}] = record;
   return true;
 }

@@ -14,8 +14,9 @@
 // is refused, never mixed in; so is one of another format version ("written by an older demcal
 // (demcal-journal/2); move it away or use a new --out to start afresh"). Every record is checked
 // on loading: types, finite numbers, the parameter count, values inside their observable's
-// physical range; a bad line is an error "journal.jsonl:LINE: ...", and a second record of the
-// same run with other content is an error, never a silent overwrite.
+// physical range, observables demcal knows, a status from RunStatusNames(), the seed the study
+// gives the replicate (ExpectSeeds); a bad line is an error "journal.jsonl:LINE: ...", and a
+// second record of the same run with other content is an error, never a silent overwrite.
 //
 //   EvaluationJournal journal;
 //   if (!journal.Open(dir + "/journal.jsonl", fingerprint, &error)) ...;
@@ -66,12 +67,22 @@ class EvaluationJournal {
   // read_only: load, never write (see above).
   bool Open(const std::string& path, const std::string& fingerprint, std::string* error,
             size_t parameter_count = 0, bool read_only = false);
+  // Before Open: every record's seed must be objectives::ReplicateSeed(base_seed, replicate),
+  // the seed the evaluator asks for; another is refused on loading, naming the line (a record
+  // never found again would be run anew, and the journal would then hold two of one run).
+  void ExpectSeeds(uint64_t base_seed) { expected_base_seed_ = base_seed, check_seeds_ = true; }
+  // After a false Open or Append: the failure was reading or writing the file (exit code 4),
+  // not its content (exit code 2).
+  bool io_error() const { return io_error_; }
 
   // The record of this candidate's replicate, or nullptr. The pointer stays valid.
   const ReplicateRecord* Find(const std::vector<double>& parameters, int replicate,
                               uint64_t seed) const;
   const ReplicateRecord* Find(const std::string& group, const std::vector<double>& parameters,
                               int replicate, uint64_t seed) const;
+  // Writes one record, flushed and fsync'ed. A write that fails (a full disk) is cut back to
+  // the last whole record, and every later Append fails too: a run must stop rather than go on
+  // unjournalled.
   bool Append(const ReplicateRecord& record, std::string* error);
 
   size_t LoadedRecords() const { return loaded_; }  // records found on opening
@@ -79,11 +90,15 @@ class EvaluationJournal {
   const std::string& path() const { return path_; }
 
  private:
+  bool WriteWhole(const std::string& line, std::string* error);
   using Key = std::tuple<std::string, std::vector<double>, int>;
   std::string path_;
   int fd_ = -1;
   bool read_only_ = false;
   size_t loaded_ = 0;
+  bool check_seeds_ = false, io_error_ = false;
+  uint64_t expected_base_seed_ = 0;
+  std::string write_error_;  // the first failed Append's message; later ones repeat it
   mutable std::mutex mutex_;
   std::map<Key, ReplicateRecord> records_;
 };

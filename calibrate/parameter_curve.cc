@@ -1,6 +1,7 @@
 #include "calibrate/parameter_curve.h"
 
 #include <cmath>
+#include <sstream>
 
 namespace demcal::calibrate {
 namespace {
@@ -38,29 +39,38 @@ std::vector<std::string> CurveFormKeys() {
   return keys;
 }
 
+bool ParameterCurve::Covers(const Condition& condition, double* w, std::string* why) const {
+  if (!ConditionNumber(condition, covariate, w)) {
+    const auto cell = condition.find(covariate);
+    *why = name + ": the condition (" + DescribeCondition(condition) + ") " +
+           (cell == condition.end() ? "has no '" + covariate + "'"
+                                    : "gives '" + covariate + "' a word, '" + cell->second +
+                                          "', not a number");
+    return false;
+  }
+  if (form == CurveForm::kPowerLaw && !(*w > 0)) {
+    *why = name + ": a power law needs " + covariate + " > 0 (the condition gives " +
+           condition.at(covariate) + ")";
+    return false;
+  }
+  return true;
+}
+
 bool ParameterCurve::Evaluate(const std::vector<double>& values, const Condition& condition,
                               double* out, std::string* why) const {
   double w = 0;
-  if (!ConditionNumber(condition, covariate, &w)) {
-    *why = name + ": the condition (" + DescribeCondition(condition) + ") gives no number for '" +
-           covariate + "'";
-    return false;
-  }
+  if (!Covers(condition, &w, why)) return false;
   const double c0 = values[coefficients[0]];
   switch (form) {
     case CurveForm::kLinear: *out = c0 + values[coefficients[1]] * w; break;
     case CurveForm::kLinearThroughOrigin: *out = c0 * w; break;
-    case CurveForm::kPowerLaw:
-      if (!(w > 0)) {
-        *why = name + ": a power law needs " + covariate + " > 0";
-        return false;
-      }
-      *out = c0 * std::pow(w, values[coefficients[1]]);
-      break;
+    case CurveForm::kPowerLaw: *out = c0 * std::pow(w, values[coefficients[1]]); break;
   }
   if (!(std::isfinite(*out) && *out >= 0)) {
-    *why = name + " = " + std::to_string(*out) + " at " + covariate + "=" + std::to_string(w) +
-           ": a pair property must be >= 0";
+    std::ostringstream text;
+    text << name << " = " << *out << " at " << covariate << " = " << w
+         << ": a pair property must be >= 0";
+    *why = text.str();
     return false;
   }
   return true;

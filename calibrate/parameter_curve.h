@@ -35,8 +35,11 @@ struct ParameterCurve {
   std::string covariate;               // a condition column with numbers
   CurveForm form = CurveForm::kLinear;
   std::vector<int> coefficients;       // indices into the space's parameter vector
-  // The property at the condition's covariate; false (with why) when the condition lacks the
-  // covariate, the power law meets w <= 0, or the value is not a finite number >= 0.
+  // The condition gives the covariate a number the form accepts (w > 0 for a power law); false
+  // with why otherwise: then no candidate can be evaluated under this condition.
+  bool Covers(const Condition& condition, double* w, std::string* why) const;
+  // The property at the condition's covariate; false (with why) when Covers fails or the value
+  // is not a finite number >= 0.
   bool Evaluate(const std::vector<double>& values, const Condition& condition, double* out,
                 std::string* why) const;
 };

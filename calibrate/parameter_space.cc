@@ -5,8 +5,12 @@
 #include <set>
 #include <sstream>
 
+#include "objectives/common/input_limits.h"
+
 namespace demcal::calibrate {
 namespace {
+
+namespace limits = objectives::limits;  // Limit::Text: the range format of every message
 
 bool Fail(std::string* error, const std::string& message) {
   if (error) *error = message;
@@ -15,14 +19,15 @@ bool Fail(std::string* error, const std::string& message) {
 
 }  // namespace
 
-bool ParameterSpace::IsValid(const core::Scene& model, std::string* error) const {
+bool ParameterSpace::IsValid(const core::Scene& model, std::string* error,
+                             const std::vector<std::string>& paths) const {
   if (parameters.empty()) return Fail(error, "parameters: at least one parameter is needed");
   std::set<std::string> names;
   std::set<std::tuple<int, int, int, std::string>> slots;
   const int materials = static_cast<int>(model.materials.size());
   for (size_t k = 0; k < parameters.size(); ++k) {
     const Parameter& p = parameters[k];
-    const std::string at = "parameters[" + std::to_string(k) + "]";
+    const std::string at = k < paths.size() ? paths[k] : "parameters[" + std::to_string(k) + "]";
     const double max = PairPropertyMax(p.property);
     if (p.name.empty()) return Fail(error, at + ".name: must not be empty");
     if (!names.insert(p.name).second) return Fail(error, at + ".name: '" + p.name + "' is used twice");
@@ -36,14 +41,14 @@ bool ParameterSpace::IsValid(const core::Scene& model, std::string* error) const
       if (!(std::isfinite(p.lower) && std::isfinite(p.upper) && p.lower < p.upper))
         return Fail(error, at + ".min/max: need finite min < max");
     } else if (!(p.lower >= 0 && p.lower < p.upper && p.upper <= max))
-      return Fail(error, at + ".lower/upper: need 0 <= lower < upper <= " + std::to_string(max) +
-                             " (got " + std::to_string(p.lower) + ", " + std::to_string(p.upper) + ")");
+      return Fail(error, at + ".min/max: need min < max within " + limits::Closed(0, max).Text() +
+                             " (got " + limits::Closed(p.lower, p.upper).Text() + ")");
     if (p.property == PairProperty::kRestitution && p.lower <= 0)
-      return Fail(error, at + ".lower: a restitution must be > 0");
-    if (p.log_scale && p.lower <= 0) return Fail(error, at + ".log_scale: needs lower > 0");
+      return Fail(error, at + ".min: a restitution must be > 0");
+    if (p.log_scale && p.lower <= 0) return Fail(error, at + ".log_scale: needs min > 0");
     if (!(p.start >= p.lower && p.start <= p.upper))
-      return Fail(error, at + ".start: must lie in [lower, upper] = [" + std::to_string(p.lower) +
-                             ", " + std::to_string(p.upper) + "]");
+      return Fail(error, at + ".start: must lie in [min, max] = " +
+                             limits::Closed(p.lower, p.upper).Text());
   }
   for (size_t c = 0; c < curves.size(); ++c)
     for (int k : curves[c].coefficients)

@@ -45,8 +45,10 @@ struct ParameterSpace {
   std::vector<std::vector<int>> non_decreasing;
 
   size_t Size() const { return parameters.size(); }
-  // Names the first bad field ("parameters[1].lower") and the allowed range.
-  bool IsValid(const core::Scene& model, std::string* error) const;
+  // Names the first bad field ("parameters[1].min") and the allowed range; `paths`, when given,
+  // names each parameter as its file does ("parameters[0].curve.coefficients[1]").
+  bool IsValid(const core::Scene& model, std::string* error,
+               const std::vector<std::string>& paths = {}) const;
   // Writes values (SI, one per parameter) into the model's pair table: every parameter without
   // a `when`, and every curve (which needs a condition: use the overload below).
   void Apply(const std::vector<double>& values, core::Scene* model) const;

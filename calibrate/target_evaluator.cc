@@ -102,7 +102,10 @@ std::vector<CandidateResult> TargetEvaluator::Run(const std::vector<std::vector<
     batch[c].parameters = p;
     batch[c].pooled = pooled;
     batch[c].runs.assign(g, std::vector<ReplicateRecord>(replicates));
-    if (!space_.Feasible(p, &infeasible[c])) continue;
+    // Once a record could not be written, nothing more runs: work that cannot be resumed
+    // would be lost (the caller stops the calibration on the journal error).
+    if (!journal_failure_.empty()) infeasible[c] = "the journal cannot be written";
+    if (!infeasible[c].empty() || !space_.Feasible(p, &infeasible[c])) continue;
     for (int k = 0; k < g && infeasible[c].empty(); ++k) {  // every group's model first
       core::Scene& model = models[static_cast<size_t>(c) * g + k];
       model = groups_[k].model;
@@ -114,10 +117,12 @@ std::vector<CandidateResult> TargetEvaluator::Run(const std::vector<std::vector<
       for (int r = 0; r < replicates; ++r) {
         const uint64_t seed = objectives::ReplicateSeed(options_.seed, r);
         ReplicateRecord& record = batch[c].runs[k][r];
-        const ReplicateRecord* done = journal_ ? journal_->Find(groups_[k].key, p, r, seed) : nullptr;
-        if (!done && prior && r < static_cast<int>(prior->runs[k].size()))
-          done = &prior->runs[k][r];  // run before this candidate was given more replicates
-        if (done) {
+        // A run of this candidate before it was given more replicates is taken as it is and
+        // was counted then (as run, or as reused); only what the journal adds counts as reused.
+        if (prior && r < static_cast<int>(prior->runs[k].size())) {
+          record = prior->runs[k][r];
+        } else if (const ReplicateRecord* done =
+                       journal_ ? journal_->Find(groups_[k].key, p, r, seed) : nullptr) {
           record = *done;
           ++reused[c];
         } else {
@@ -160,6 +165,8 @@ std::vector<CandidateResult> TargetEvaluator::Run(const std::vector<std::vector<
   };
   objectives::farm::RunBatch(job, {.threads = options_.workers,
                                    .run_time_limit_s = options_.run_time_limit_s});
+  for (const std::string& e : journal_errors)
+    if (journal_failure_.empty() && !e.empty()) journal_failure_ = e;
   // Every target's replicate values first, so the pooled spread includes this batch.
   std::vector<std::vector<TargetSample>> samples(n);
   for (int c = 0; c < n; ++c) {
@@ -175,7 +182,7 @@ std::vector<CandidateResult> TargetEvaluator::Run(const std::vector<std::vector<
     int run = 0;
     for (const Task& t : pending) run += t.candidate == c;
     result.replicates_run = run;
-    result.journal_error = journal_errors[c];
+    result.journal_error = journal_errors[c].empty() ? journal_failure_ : journal_errors[c];
     results.push_back(std::move(result));
   }
   return results;

@@ -108,6 +108,7 @@ class TargetEvaluator final : public CandidateEvaluator {
   std::vector<TargetBinding> targets_;
   TargetEvaluatorOptions options_;
   EvaluationJournal* journal_;
+  std::string journal_failure_;  // the first failed journal write: nothing runs after it
   std::vector<CandidateRuns> history_;
   std::vector<Pool> pool_;  // per target
 };

@@ -125,6 +125,9 @@ int RunDiagnose(const DiagnoseCommandOptions& o, std::ostream& log) {
         << (context.coating_column.empty() ? "" : "; coating column " + context.coating_column)
         << "; " << candidates.size() << " candidate effects\n";
   const Diagnosis d = Diagnose(*model, model->Observations(), candidates, o.diagnose, progress);
+  if (!model->journal_error().empty())
+    return log << "error: " << model->journal_error() << "; the diagnosis stopped there: make room "
+               << "and run the same command again to resume\n", kExitOutputError;
   if (d.termination == DiagnosisTermination::kInvalid)
     return log << "error: " << d.message << "\n", kExitInvalidInput;
   if (writer &&

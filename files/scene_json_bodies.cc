@@ -19,8 +19,8 @@ void CheckBoxOrder(JsonFields& f, const std::string& max_key, const core::Vec3& 
   for (int a = 0; a < 3; ++a)
     if (!(hi[a] > lo[a]))
       return f.Fail(max_key, "must exceed '" + f.PathOf(min_key) + "' on every axis (axis " +
-                                 "xyz"[a] + ": " + std::to_string(lo[a]) +
-                                 " >= " + std::to_string(hi[a]) + ")");
+                                 "xyz"[a] + ": " + FormatNumber(lo[a]) +
+                                 " >= " + FormatNumber(hi[a]) + ")");
 }
 
 // Reads a required non-zero direction and normalises it.
@@ -42,8 +42,8 @@ void ReadMotion(JsonFields& f, core::Wall* w) {
   f.Number("remove_at_s", &w->remove_at_s, kOptional, Range::Closed(0, 1e9, "s"));
   if (f.ok() && !(w->motion_end_s >= w->motion_start_s))
     f.Fail("motion_end_s", "must not be before '" + f.PathOf("motion_start_s") + "' (" +
-                               std::to_string(w->motion_end_s) + " < " +
-                               std::to_string(w->motion_start_s) + ")");
+                               FormatNumber(w->motion_end_s) + " < " +
+                               FormatNumber(w->motion_start_s) + ")");
 }
 
 void ParsePlane(JsonFields& f, core::Wall w, core::Scene* scene) {
@@ -83,8 +83,8 @@ void ParseCylinder(JsonFields& f, core::Wall w, core::Scene* scene) {
   f.Bool("shell", &w.shell, kOptional);
   if (f.ok() && !(c.axial_max_m > c.axial_min_m))
     return f.Fail("axial_max_m", "must exceed '" + f.PathOf("axial_min_m") + "' (" +
-                                     std::to_string(c.axial_min_m) +
-                                     " >= " + std::to_string(c.axial_max_m) + ")");
+                                     FormatNumber(c.axial_min_m) +
+                                     " >= " + FormatNumber(c.axial_max_m) + ")");
   if (!f.ok()) return;
   w.shape = c;
   scene->walls.push_back(w);
@@ -102,7 +102,7 @@ void ParseCone(JsonFields& f, core::Wall w, core::Scene* scene) {
   f.Bool("shell", &w.shell, kOptional);
   if (f.ok() && c.height1_m == c.height0_m)
     return f.Fail("height1_m", "must differ from '" + f.PathOf("height0_m") + "' (both " +
-                                   std::to_string(c.height0_m) + ")");
+                                   FormatNumber(c.height0_m) + ")");
   if (f.ok() && c.radius0_m == 0 && c.radius1_m == 0)
     return f.Fail("radius1_m", "must be > 0 when '" + f.PathOf("radius0_m") + "' is 0");
   if (!f.ok()) return;

@@ -75,6 +75,7 @@ BaseCalibration StudyModel::CalibrateBase(int budget_scale) {
       calibrate::Calibrate(*s->evaluator, study_.space, targets, options, progress);
   run_ += summary.replicates_run;
   reused_ += summary.replicates_reused;
+  if (journal_error_.empty()) journal_error_ = summary.journal_error;
   Pool(s);
   base.termination = calibrate::TerminationName(summary.termination);
   base.settled = SettledTermination(base.termination);

@@ -106,9 +106,11 @@ StudyModel::Setting* StudyModel::SettingFor(const std::vector<ActiveEffect>& eff
   const std::string path =
       options_.out_dir + (key.empty() ? "/journal/base.jsonl" : "/journal/" + Hex(key) + ".jsonl");
   s.journal = std::make_unique<calibrate::EvaluationJournal>();
+  s.journal->ExpectSeeds(seed_);
   // The other ranks of an MPI farm read the journal; rank 0 appends once all have read it.
   if (!s.journal->Open(path, runs_.fingerprint + "|effects:" + key, error, study_.space.Size(),
                        !objectives::farm::IsManager())) {
+    if (s.journal->io_error() && journal_error_.empty()) journal_error_ = *error;
     settings_.erase(key);
     return nullptr;
   }
@@ -161,12 +163,15 @@ std::vector<Prediction> StudyModel::Evaluate(const std::vector<ModelPoint>& poin
   std::vector<Prediction> out;
   for (const ModelPoint& point : points) {
     std::string error;
-    Setting* s = SettingFor(point.effects, &error);
     Prediction p;
-    if (!s)
-      p.status = "journal: " + error;
-    else if (!s->invalid.empty())
-      p.status = "effect not applicable: " + s->invalid;
+    if (!journal_error_.empty()) {  // nothing runs once the journal cannot be written
+      p.status = "journal: " + journal_error_;
+      out.push_back(p);
+      continue;
+    }
+    Setting* s = SettingFor(point.effects, &error);
+    if (!s) p.status = "journal: " + error;
+    else if (!s->invalid.empty()) p.status = "effect not applicable: " + s->invalid;
     if (!s || !s->invalid.empty()) {
       out.push_back(p);
       continue;

@@ -36,7 +36,7 @@ void ParseAnalysis(const json& value, objectives::DischargeOptions* a, JsonStatu
   f.Number("composition_bin_s", &a->composition_bin_s, kOptional, Range::Closed(0, 1e4, "s"));
   if (status->ok() && !(a->flow_window_low < a->flow_window_high))
     f.Fail("flow_window_high", "must exceed flow_window_low = " +
-                                   std::to_string(a->flow_window_low));
+                                   FormatNumber(a->flow_window_low));
 }
 
 // A placed fill has no pour rate: the feed may leave mass_rate_kg_s out (a nominal one is set).

@@ -362,6 +362,10 @@ case("cohesion_gamma_range", {}, "cohesion --gamma-J-m2 200", 2,
 table_case("table_byte_order_mark_ok", ("\ufeff" + HEADER + ROW.format(v=400)).encode(),
            "value: 400")
 case("diagnose_directory", {}, "diagnose {files} --out {out}", 2, "directory")
+import study_cases  # noqa: E402 (studies that could never evaluate a candidate)
+study_cases.add(case)
+study_cases.add_workflow(case, workflow)
+study_cases.add_ranges(case, study, scene, SCENE["walls"])
 
 # Not cases: the scenes of checkpoint_test.sh (a base run, and others its checkpoint must not fit).
 CHECKPOINT_SCENES = {

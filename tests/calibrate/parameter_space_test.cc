@@ -51,13 +51,14 @@ TEST_CASE("parameter space errors name the field and the range", "[unit][calibra
   ParameterSpace space;
   space.parameters.push_back({"mu", PairProperty::kSlidingFriction, 0, 0, 0.5, 0.2, 0.3});
   CHECK_FALSE(space.IsValid(model, &error));
-  CHECK(error.find("parameters[0].lower/upper") != std::string::npos);
+  CHECK_THAT(error, Catch::StartsWith("parameters[0].min/max: need min < max within [0, ") &&
+                        Catch::EndsWith("] (got [0.5, 0.2])"));  // 6 digits, as every range
   space.parameters[0] = {"mu", PairProperty::kSlidingFriction, 0, 2, 0.1, 0.9, 0.3};
   CHECK_FALSE(space.IsValid(model, &error));
   CHECK(error.find("parameters[0].materials") != std::string::npos);
   space.parameters[0] = {"mu", PairProperty::kSlidingFriction, 0, 1, 0.1, 0.9, 0.95};
   CHECK_FALSE(space.IsValid(model, &error));
-  CHECK(error.find("parameters[0].start") != std::string::npos);
+  CHECK(error == "parameters[0].start: must lie in [min, max] = [0.1, 0.9]");
   space.parameters[0] = {"mu", PairProperty::kSlidingFriction, 0, 1, 0.1, 0.9, 0.5};
   space.parameters.push_back({"mu2", PairProperty::kSlidingFriction, 1, 0, 0.1, 0.9, 0.5});
   CHECK_FALSE(space.IsValid(model, &error));

@@ -6,13 +6,15 @@
 #include <cmath>
 
 #include "calibrate/calibration.h"
+#include "calibrate/evaluation_journal.h"
 #include "calibrate/target_evaluator.h"
+#include "core/io/scratch_dir.h"
 #include "synthetic_observable.h"
 
 using namespace demcal;
 using namespace demcal::calibrate;
-using testing::OneMaterialModel;
-using testing::SyntheticAngle;
+using demcal::calibrate::testing::OneMaterialModel;
+using demcal::calibrate::testing::SyntheticAngle;
 
 namespace {
 
@@ -121,4 +123,36 @@ TEST_CASE("batch optimisers get noisy candidates re-run too, each in its own pla
   }
   CHECK(angle.runs == runs);
   CHECK(evaluator.history().size() == s.candidates.size());
+}
+
+// A resumed calibration finds the replicates its candidates were given later in the journal
+// too: every run of the first calibration counts as reused, none as run, none twice.
+TEST_CASE("a resumed calibration counts the added replicates it finds in the journal as reused",
+          "[unit][calibrate]") {
+  demcal::testing::ScratchDir dir("replicate_escalation_resume");
+  const std::string path = dir.str("journal.jsonl");
+  const ParameterSpace space = RollingSpace(0.3);
+  CalibrationOptions options;
+  options.max_replicate_factor = 10;
+  auto calibrate = [&](SyntheticAngle& angle) {
+    angle.noise_deg = 1.0;  // 2 replicates are too few: candidates get more (Sharpen, Deepen)
+    EvaluationJournal journal;
+    std::string error;
+    REQUIRE(journal.Open(path, "f", &error));
+    std::vector<RunGroup> groups{{"synthetic", &angle, OneMaterialModel(), space, {}, {}}};
+    TargetEvaluator evaluator(space, groups, {{0, "angle_deg"}}, {.replicates = 2, .seed = 5},
+                              &journal);
+    const double measured = angle.base + angle.per_rolling * 0.3;
+    return Calibrate(evaluator, space, {{"angle", "angle_deg", measured, 0.35, "synthetic"}},
+                     options);
+  };
+  SyntheticAngle first, second;
+  const CalibrationSummary whole = calibrate(first);
+  REQUIRE(whole.candidates[whole.best].replicates_added > 0);
+  CHECK(whole.replicates_run == first.runs);
+  CHECK(whole.replicates_reused == 0);
+  const CalibrationSummary resumed = calibrate(second);
+  CHECK(second.runs == 0);
+  CHECK(resumed.replicates_run == 0);
+  CHECK(resumed.replicates_reused == first.runs);
 }

@@ -143,12 +143,20 @@ bool WriteEvaluationsCsv(const std::string& path, const CalibrationRunInfo& info
           out << ",target" << t << "_" << st.targets[t].target.observable << "_mean,target" << t << "_"
               << st.targets[t].target.observable << "_sem,target" << t << "_replicates_ok";
         out << ",cost,replicates_run,replicates_reused,status\n";
+        // A value that does not exist (an infeasible candidate's cost, a target without runs)
+        // is an empty cell, as docs/calibration.md says, never "nan".
+        auto cell = [&out](double v) -> std::ostream& {
+          out << ",";
+          return std::isfinite(v) ? out << v : out;
+        };
         for (const calibrate::Candidate& c : s.candidates) {
           out << c.index;
-          for (double v : c.parameters) out << "," << v;
-          for (const calibrate::TargetValue& v : c.result.targets)
-            out << "," << v.mean << "," << v.sem << "," << v.replicates;
-          out << "," << (c.trial.ok ? c.trial.Cost() : NAN) << "," << c.result.replicates_run << ","
+          for (double v : c.parameters) cell(v);
+          for (const calibrate::TargetValue& v : c.result.targets) {
+            cell(v.mean);
+            cell(v.sem) << "," << v.replicates;
+          }
+          cell(c.trial.ok ? c.trial.Cost() : NAN) << "," << c.result.replicates_run << ","
               << c.result.replicates_reused << "," << c.result.status << "\n";
         }
       },

@@ -147,12 +147,15 @@ Outcome CalibrateInto(const StudyFile& st, const CalibrateSettings& o, int clump
     log << "error: --out: cannot create '" << dir << "': " << ec.message() << "\n";
     return Failed(CalibrationStatus::kOutputError);
   }
+  const uint64_t seed = st.has_seed ? st.seed : st.experiment().seed;
   calibrate::EvaluationJournal journal;
+  journal.ExpectSeeds(seed);
   // The other ranks of a farm read the journal, never write it (rank 0 appends every result).
   if (!journal.Open(dir + "/journal.jsonl", runs.fingerprint, &error, st.space.Size(),
                     !farm::IsManager())) {
     log << "error: " << error << "\n";
-    return Failed(CalibrationStatus::kInvalidInput);
+    return Failed(journal.io_error() ? CalibrationStatus::kOutputError
+                                     : CalibrationStatus::kInvalidInput);
   }
   {  // rank 0 appends only once every rank has read the same records
     core::Fnv1a64 loaded;
@@ -161,7 +164,6 @@ Outcome CalibrateInto(const StudyFile& st, const CalibrateSettings& o, int clump
   }
   if (!o.quiet && journal.LoadedRecords() > 0)
     log << "calibrate: resuming: " << journal.LoadedRecords() << " replicate runs in " << journal.path() << "\n";
-  const uint64_t seed = st.has_seed ? st.seed : st.experiment().seed;
   const int replicates = st.replicates > 0 ? st.replicates : st.experiment().replicates;
   calibrate::TargetEvaluator inner(st.space, runs.groups, runs.bindings,
                                    {.replicates = replicates,
@@ -179,6 +181,11 @@ Outcome CalibrateInto(const StudyFile& st, const CalibrateSettings& o, int clump
   const calibrate::CalibrationSummary summary = calibrate::Calibrate(
       evaluator, st.space, targets, options,
       o.quiet ? calibrate::CandidateProgress{} : ProgressLine(st, budget, log));
+  if (!summary.journal_error.empty()) {  // nothing ran after it; what ran is journalled
+    log << "error: " << summary.journal_error << "; the calibration stopped there: make room "
+        << "and run the same command again to resume\n";
+    return Failed(CalibrationStatus::kOutputError, summary);
+  }
   if (summary.termination == calibrate::Termination::kInvalid) {
     log << "error: " << st.source << ": " << summary.message << "\n";
     return Failed(CalibrationStatus::kInvalidInput, summary);
@@ -191,7 +198,6 @@ Outcome CalibrateInto(const StudyFile& st, const CalibrateSettings& o, int clump
     log << "error: " << error << "\n";
     return Failed(CalibrationStatus::kOutputError, summary);
   }
-  if (!summary.journal_error.empty()) log << "warning: " << summary.journal_error << "\n";
   Outcome out;
   out.result = CalibrationResultOf(st, summary);
   out.result.status = summary.ok() ? CalibrationStatus::kMatched : CalibrationStatus::kNotMatched;

@@ -166,9 +166,11 @@ bool ParseStudyJson(const nlohmann::json& doc, const std::string& path, StudyFil
   std::string invalid;
   for (const StudyExperiment& e : out->experiments) {
     calibrate::ParameterSpace resolved;
-    if (!ResolveSpaceFor(*out, e.file.model, &resolved, &invalid) || !resolved.IsValid(e.file.model, &invalid))
+    if (!ResolveSpaceFor(*out, e.file.model, &resolved, &invalid) ||
+        !resolved.IsValid(e.file.model, &invalid, out->parameter_paths))
       return *error = path + ": " + invalid + " (experiment file " + e.path + ")", false;
   }
+  if (!CheckStudyEvaluable(*out, &invalid)) return *error = path + ": " + invalid, false;
   if (out->options.optimiser == "bracket" && out->space.Size() != 1)
     return *error = path + ": optimiser.name: 'bracket' fits exactly one parameter; use ceres, "
                            "differential_evolution or an nlopt_* optimiser", false;

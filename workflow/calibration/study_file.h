@@ -69,6 +69,10 @@ struct StudyFile {
   calibrate::ParameterSpace space;
   std::vector<std::pair<std::string, std::string>> parameter_materials;  // per parameter
   std::vector<std::pair<std::string, std::string>> curve_materials;      // per curve
+  // The JSON path each came from, for messages: "parameters[2]" or
+  // "parameters[0].curve.coefficients[1]" per parameter, "parameters[0].curve" per curve,
+  // "constraints[0].non_decreasing" per space.non_decreasing chain.
+  std::vector<std::string> parameter_paths, curve_paths, constraint_paths;
   ClumpCountSearch clump_count;
   calibrate::CalibrationOptions options;
   int replicates = 0;  // 0: the first experiment file's

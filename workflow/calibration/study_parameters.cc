@@ -62,8 +62,10 @@ void ParseCurve(const nlohmann::json& j, const std::string& path, calibrate::Par
     curve.coefficients.push_back(static_cast<int>(study->space.parameters.size()));
     study->space.parameters.push_back(p);
     study->parameter_materials.push_back(study->curve_materials.back());
+    study->parameter_paths.push_back(c.path());
   }
   study->space.curves.push_back(curve);
+  study->curve_paths.push_back(path);
 }
 
 int ParameterIndex(const StudyFile& study, const std::string& name) {
@@ -100,6 +102,7 @@ void ParseStudyParameter(const nlohmann::json& j, const std::string& path, Study
   if (!f.ok()) return;
   study->space.parameters.push_back(p);
   study->parameter_materials.push_back(names);
+  study->parameter_paths.push_back(path);
 }
 
 void ParseStudyConstraint(const nlohmann::json& j, const std::string& path, StudyFile* study,
@@ -115,6 +118,7 @@ void ParseStudyConstraint(const nlohmann::json& j, const std::string& path, Stud
   }
   if (chain.size() < 2) return f.Fail("non_decreasing", "needs at least two parameters");
   study->space.non_decreasing.push_back(chain);
+  study->constraint_paths.push_back(f.PathOf("non_decreasing"));
 }
 
 void ParseClumpCount(const nlohmann::json& j, const std::string& path, StudyFile* study,

@@ -27,6 +27,10 @@ void ParseStudyParameter(const nlohmann::json& j, const std::string& path, Study
                          JsonStatus* status);
 void ParseStudyConstraint(const nlohmann::json& j, const std::string& path, StudyFile* study,
                           JsonStatus* status);
+// After parsing: refuses a study that could never evaluate a candidate or holds a parameter that
+// never acts (study_checks.cc); the message names the field.
+bool CheckStudyEvaluable(const StudyFile& study, std::string* error);
+
 void ParseClumpCount(const nlohmann::json& j, const std::string& path, StudyFile* study,
                      JsonStatus* status);
 

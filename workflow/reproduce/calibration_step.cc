@@ -77,6 +77,16 @@ nlohmann::json CalibrationOutcome::ToJson() const {
           {"result_dir", result_dir}};
 }
 
+bool CheckCalibrationStep(const CalibrationStep& step, std::string* error) {
+  StudyFile study;
+  // Every path in the document is absolute: the name only heads the message, stripped below.
+  const std::string name = "study";
+  if (ParseStudyJson(nlohmann::json::parse(StudyJson(step).dump()), name, &study, error))
+    return true;
+  if (error->rfind(name + ": ", 0) == 0) error->erase(0, name.size() + 2);
+  return false;
+}
+
 bool RunCalibrationStep(const ReproduceContext& ctx, const CalibrationStep& step,
                         CalibrationOutcome* out, std::string* error) {
   std::error_code ec;
@@ -97,6 +107,11 @@ bool RunCalibrationStep(const ReproduceContext& ctx, const CalibrationStep& step
     const CalibrationResult result = CalibrateStudy(study, settings, *ctx.log);
     out->exit_code = ExitCodeOf(result.status);
     FillOutcome(study, result, out);
+  }
+  if (out->exit_code == kExitOutputError) {  // "cannot write": reproduce exits 4 on it
+    *error = "calibration in '" + step.dir + "' cannot write its journal or outputs (exit code 4; "
+             "its message is above)";
+    return false;
   }
   if (out->exit_code != kExitOk && out->exit_code != kExitRunFailed) {
     *error = "calibration in '" + step.dir + "' failed with exit code " +

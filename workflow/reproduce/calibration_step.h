@@ -49,5 +49,8 @@ struct CalibrationOutcome {
 
 bool RunCalibrationStep(const ReproduceContext& ctx, const CalibrationStep& step,
                         CalibrationOutcome* out, std::string* error);
+// The step's study parsed as RunCalibrationStep would (nothing written, nothing run): false with
+// the reason it would be refused, which names the study's own field.
+bool CheckCalibrationStep(const CalibrationStep& step, std::string* error);
 
 }  // namespace demcal::workflow

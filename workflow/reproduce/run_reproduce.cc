@@ -11,6 +11,7 @@
 #include "workflow/reproduce/scenario_params.h"
 #include "workflow/reproduce/stages.h"
 #include "workflow/reproduce/summary_table.h"
+#include "workflow/reproduce/workflow_checks.h"
 
 #ifndef DEMCAL_SOURCE_DIR
 #define DEMCAL_SOURCE_DIR "."
@@ -86,6 +87,10 @@ int RunReproduce(const ReproduceOptions& options, std::ostream& log) {
     log << "error: " << error << "\n";
     if (path == options.workflow && !fs::exists(path))
       log << "  (a bundled workflow name is a folder datasets/NAME/ with a workflow.json)\n";
+    return kExitInvalidInput;
+  }
+  if (!CheckWorkflowWhole(workflow, &error)) {  // before any stage: nothing half done
+    log << "error: " << error << "\n";
     return kExitInvalidInput;
   }
   std::error_code ec;

@@ -24,10 +24,11 @@ std::string LevelName(double w) {
   return text;
 }
 
-// The table holding the level's angle row: the measurements, else the synthetic table; an empty
-// *table when neither has it, with the reason in *why (a table that cannot be read, e.g. a
-// synthetic recipe that produced no rows, counts as not having it: the reason names the file).
-void TableFor(const WorkflowFile& w, double level, std::string* table, std::string* why) {
+}  // namespace
+
+// A table that cannot be read (e.g. a synthetic recipe that produced no rows) counts as not
+// having the row: the reason names the file.
+void CoatingLevelTable(const WorkflowFile& w, double level, std::string* table, std::string* why) {
   const calibrate::Condition condition = {{w.coating.covariate, std::to_string(level)}};
   why->clear();
   for (const std::string& path : {w.measurements, w.synthetic_measurements}) {
@@ -45,7 +46,24 @@ void TableFor(const WorkflowFile& w, double level, std::string* table, std::stri
   table->clear();
 }
 
-}  // namespace
+CalibrationStep CoatingLevelStep(const WorkflowFile& w, double level, const std::string& table,
+                                 const std::string& experiment, double start,
+                                 const std::string& dir) {
+  const WorkflowCoating& c = w.coating;
+  return {.dir = dir + "/" + LevelName(level),
+          .experiment_file = experiment,
+          .parameter = "gamma_" + LevelName(level),
+          .property = "interfacial_energy_J_m2",
+          .material_a = c.material,
+          .material_b = c.material,
+          .min = c.gamma_min_J_m2, .max = c.gamma_max_J_m2, .start = start,
+          .table = table,
+          .material = c.material,
+          .conditions = {{c.covariate, level}},
+          .uncertainty = w.angle_uncertainty_deg,
+          .uncertainty_note = w.angle_uncertainty_note,
+          .replicates = w.replicates};
+}
 
 bool RunGammaPerCoatingStage(ReproduceContext& ctx, nlohmann::json* result, std::string* error) {
   const WorkflowFile& w = *ctx.workflow;
@@ -60,7 +78,7 @@ bool RunGammaPerCoatingStage(ReproduceContext& ctx, nlohmann::json* result, std:
   for (size_t k = 0; k < c.levels.size(); ++k) {
     const double level = c.levels[k];
     std::string table, why;
-    TableFor(w, level, &table, &why);
+    CoatingLevelTable(w, level, &table, &why);
     char key[64];
     if (table.empty()) {
       *ctx.log << "reproduce: coating level " << level << " wt%: no angle row: " << why
@@ -73,19 +91,8 @@ bool RunGammaPerCoatingStage(ReproduceContext& ctx, nlohmann::json* result, std:
     }
     *ctx.log << "reproduce: coating level " << k + 1 << "/" << c.levels.size() << ": Γ of "
              << c.material << "-" << c.material << " at " << level << " wt%\n";
-    CalibrationStep step{.dir = ctx.StageDir("gamma_per_coating") + "/" + LevelName(level),
-                         .experiment_file = experiment,
-                         .parameter = "gamma_" + LevelName(level),
-                         .property = "interfacial_energy_J_m2",
-                         .material_a = c.material,
-                         .material_b = c.material,
-                         .min = c.gamma_min_J_m2, .max = c.gamma_max_J_m2, .start = start,
-                         .table = table,
-                         .material = c.material,
-                         .conditions = {{c.covariate, level}},
-                         .uncertainty = w.angle_uncertainty_deg,
-                         .uncertainty_note = w.angle_uncertainty_note,
-                         .replicates = w.replicates};
+    const CalibrationStep step = CoatingLevelStep(w, level, table, experiment, start,
+                                                  ctx.StageDir("gamma_per_coating"));
     CalibrationOutcome o;
     if (!RunCalibrationStep(ctx, step, &o, error)) return false;
     nlohmann::json entry = o.ToJson();

@@ -13,6 +13,25 @@
 
 namespace demcal::workflow {
 
+CalibrationStep SpeciesStep(const WorkflowFile& w, size_t k, const std::string& dir) {
+  const WorkflowSpecies& s = w.species[k];
+  return {.dir = dir + "/" + s.name,
+          .experiment_file = s.experiment_file,
+          .parameter = s.property + "_" + s.name,
+          .property = s.property,
+          .material_a = s.name,
+          .material_b = s.name,
+          .min = s.min, .max = s.max, .start = s.start,
+          .table = w.measurements,
+          .material = s.name,
+          .conditions = {{"coating_PEG_wt_pct", 0}},
+          .uncertainty = w.angle_uncertainty_deg,
+          .uncertainty_note = w.angle_uncertainty_note,
+          .replicates = w.replicates,
+          .clump_counts = s.clump_counts,
+          .semi_axes = s.semi_axes};
+}
+
 bool RunSpeciesStage(ReproduceContext& ctx, nlohmann::json* result, std::string* error) {
   const WorkflowFile& w = *ctx.workflow;
   nlohmann::json species = nlohmann::json::object(), values = nlohmann::json::object();
@@ -21,21 +40,7 @@ bool RunSpeciesStage(ReproduceContext& ctx, nlohmann::json* result, std::string*
     const std::string key = "species/" + s.name;
     *ctx.log << "reproduce: species " << k + 1 << "/" << w.species.size() << " " << s.name
              << ": " << s.property << " against the measured repose angle\n";
-    CalibrationStep step{.dir = ctx.StageDir("species") + "/" + s.name,
-                         .experiment_file = s.experiment_file,
-                         .parameter = s.property + "_" + s.name,
-                         .property = s.property,
-                         .material_a = s.name,
-                         .material_b = s.name,
-                         .min = s.min, .max = s.max, .start = s.start,
-                         .table = w.measurements,
-                         .material = s.name,
-                         .conditions = {{"coating_PEG_wt_pct", 0}},
-                         .uncertainty = w.angle_uncertainty_deg,
-                         .uncertainty_note = w.angle_uncertainty_note,
-                         .replicates = w.replicates,
-                         .clump_counts = s.clump_counts,
-                         .semi_axes = s.semi_axes};
+    const CalibrationStep step = SpeciesStep(w, k, ctx.StageDir("species"));
     CalibrationOutcome o;
     if (!RunCalibrationStep(ctx, step, &o, error)) return false;
     nlohmann::ordered_json experiment;

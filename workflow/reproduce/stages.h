@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "workflow/reproduce/calibration_step.h"
 #include "workflow/reproduce/reproduce_context.h"
 
 namespace demcal::workflow {
@@ -36,6 +37,17 @@ bool RunGammaCurveStage(ReproduceContext& ctx, nlohmann::json* result, std::stri
 bool RunDissimilarPairsStage(ReproduceContext& ctx, nlohmann::json* result, std::string* error);
 bool RunSegregationStage(ReproduceContext& ctx, nlohmann::json* result, std::string* error);
 bool RunFidelityCheckStage(ReproduceContext& ctx, nlohmann::json* result, std::string* error);
+
+// The calibrations of stage 1 (species k) and stage 3 (one coating level, whose angle row is in
+// `table`, on `experiment`), in folders under `dir`: the stages run them, and the whole-workflow
+// check (workflow_checks.h) parses them before stage 1.
+CalibrationStep SpeciesStep(const WorkflowFile& w, size_t k, const std::string& dir);
+CalibrationStep CoatingLevelStep(const WorkflowFile& w, double level, const std::string& table,
+                                 const std::string& experiment, double start,
+                                 const std::string& dir);
+// The table holding the level's angle_deg row of the coated material: the measurements, else
+// the synthetic table; empty when neither has it, with the reason in *why.
+void CoatingLevelTable(const WorkflowFile& w, double level, std::string* table, std::string* why);
 
 // The stages in order.
 const std::vector<Stage>& ReproduceStages();

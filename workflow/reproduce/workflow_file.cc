@@ -104,14 +104,17 @@ void ParseCohesion(const nlohmann::json& j, const std::string& path,
                    calibrate::CohesionInputs* c, JsonStatus* status) {
   JsonFields f(j, path, {"gamma_J_m2", "youngs_real_Pa", "youngs_sim_Pa", "poisson_ratio",
                          "radius_m", "density_kg_m3", "reference_gamma_sim_J_m2"}, status);
-  f.Number("gamma_J_m2", &c->gamma_J_m2, kRequired, Range::LeftOpen(0, 100, "J/m2"));
-  f.Number("youngs_real_Pa", &c->youngs_real_Pa, kRequired, Range::LeftOpen(0, 1e13, "Pa"));
-  f.Number("youngs_sim_Pa", &c->youngs_sim_Pa, kRequired, Range::LeftOpen(0, 1e13, "Pa"));
-  f.Number("poisson_ratio", &c->poisson_ratio, kRequired, Range::Open(-1, 0.5));
-  f.Number("radius_m", &c->radius_m, kRequired, Range::LeftOpen(0, 1, "m"));
-  f.Number("density_kg_m3", &c->density_kg_m3, kRequired, Range::LeftOpen(0, 1e5, "kg/m3"));
+  // The ranges `demcal cohesion` and the cohesion stage check: one table (input_limits.h).
+  f.Number("gamma_J_m2", &c->gamma_J_m2, kRequired, Range::Of(limits::kCohesionGamma, "J/m2"));
+  f.Number("youngs_real_Pa", &c->youngs_real_Pa, kRequired,
+           Range::Of(limits::kCohesionYoungs, "Pa"));
+  f.Number("youngs_sim_Pa", &c->youngs_sim_Pa, kRequired, Range::Of(limits::kCohesionYoungs, "Pa"));
+  f.Number("poisson_ratio", &c->poisson_ratio, kRequired, Range::Of(limits::kCohesionPoisson));
+  f.Number("radius_m", &c->radius_m, kRequired, Range::Of(limits::kCohesionRadius, "m"));
+  f.Number("density_kg_m3", &c->density_kg_m3, kRequired,
+           Range::Of(limits::kCohesionDensity, "kg/m3"));
   f.Number("reference_gamma_sim_J_m2", &c->reference_gamma_sim_J_m2, kOptional,
-           Range::LeftOpen(0, 100, "J/m2"));
+           Range::Of(limits::kCohesionGamma, "J/m2"));
 }
 
 void ParseSegregation(const nlohmann::json& j, const std::string& path, const std::string& file,

@@ -8,6 +8,7 @@
 #include <memory>
 #include <numeric>
 
+#include "files/json_fields.h"
 #include "outputs/exit_codes.h"
 #include "outputs/earlier_outputs.h"
 #include "outputs/mass_flow_log.h"
@@ -66,7 +67,7 @@ bool SimulateOptions::IsValid(std::string* error) const {
   else if (!(progress_interval_s > 0))
     problem = "--progress-interval-s must be > 0";
   else if (!(checkpoint_every_s >= 0) || !std::isfinite(checkpoint_every_s))
-    problem = "--checkpoint-every-s = " + std::to_string(checkpoint_every_s) +
+    problem = "--checkpoint-every-s = " + FormatNumber(checkpoint_every_s) +
               " must be >= 0 (0: no checkpoints)";
   if (!problem.empty() && error) *error = problem;
   return problem.empty();

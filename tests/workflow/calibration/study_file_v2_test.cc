@@ -59,6 +59,15 @@ TEST_CASE("study/2: per-condition parameters, curves, constraints and the clump 
                "coefficients": [{"name": "g0", "min": 0, "max": 0.1}, {"name": "g1", "min": 0, "max": 0.1}]}}])js");
   j["constraints"] = json::parse(R"js([{"non_decreasing": ["g0", "g1"]}])js");
   j["clump_count"] = json::parse(R"({"species": "BP", "semi_axes": [1.5, 1, 1], "counts": [1, 2, 3]})");
+  CHECK_THAT(Load(dir, j, &st), Catch::Contains("field 'parameters[2].curve.covariate' 'w' cannot "
+                                                "be read for target"));
+  {  // the covariate as a number in every row: a column w in a copy of the table
+    std::ifstream in(j["measurements"].get<std::string>());
+    std::ofstream out(dir.str("table.csv"));
+    std::string line;
+    for (int n = 0; std::getline(in, line); ++n) out << line << (n == 0 ? ",w" : ",1") << "\n";
+  }
+  j["measurements"] = dir.str("table.csv");
   REQUIRE(Load(dir, j, &st) == "ok");
   REQUIRE(st.space.Size() == 4);
   CHECK(st.space.parameters[1].when.at("test") == "funnel");
@@ -77,6 +86,10 @@ TEST_CASE("study/2: per-condition parameters, curves, constraints and the clump 
   j["constraints"][0]["non_decreasing"] = {"g0", "nope"};
   CHECK_THAT(Load(dir, j, &st), Catch::Contains("constraints[0].non_decreasing"));
   j.erase("constraints");
+  j["parameters"][2]["curve"]["covariate"] = "test";
+  CHECK_THAT(Load(dir, j, &st),
+             Catch::Contains("gives 'test' a word, 'pseudo-2D heap', not a number"));
+  j["parameters"][2]["curve"]["covariate"] = "w";
   j["parameters"][2]["curve"]["form"] = "linear_through_origin";
   CHECK_THAT(Load(dir, j, &st), Catch::Contains("has 1 coefficients"));
 }
