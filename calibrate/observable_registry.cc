@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include "objectives/common/input_limits.h"
+
 namespace demcal::calibrate {
 
 // Ranges are what is physically possible, not what is typical: a repose angle lies in [0, 90]
@@ -37,6 +39,16 @@ std::vector<std::string> ObservableNames() {
 std::string ObservableInfo::RangeText() const {
   std::ostringstream out;
   out << "[" << min << ", " << max << "] " << unit;
+  return out.str();
+}
+
+double ObservableInfo::MinUncertainty() const {
+  return objectives::limits::kMinUncertaintyFraction * (max - min);
+}
+
+std::string ObservableInfo::UncertaintyRangeText() const {
+  std::ostringstream out;
+  out << "[" << MinUncertainty() << ", " << max - min << "] " << unit;
   return out.str();
 }
 

@@ -22,6 +22,10 @@ struct ObservableInfo {
   std::string what;   // one line for tables and --help
   bool Contains(double value) const { return value >= min && value <= max; }
   std::string RangeText() const;  // "[0, 90] deg"
+  // The smallest uncertainty a measurement of it may state (limits::kMinUncertaintyFraction of
+  // the span), and the allowed interval as text: "[9e-08, 90] deg".
+  double MinUncertainty() const;
+  std::string UncertaintyRangeText() const;
 };
 
 const std::vector<ObservableInfo>& RegisteredObservables();

@@ -64,10 +64,12 @@ class RowReader {
     if (!info->Contains(row->value))
       return Fail("value", std::to_string(row->value) + " is outside " + info->RangeText());
     const std::string& u = cells.at("uncertainty");
-    if (!u.empty() && !(ParseNumber(u, &row->uncertainty) && row->uncertainty > 0 &&
+    // The floor keeps every χ² term finite (objectives/common/input_limits.h).
+    if (!u.empty() && !(ParseNumber(u, &row->uncertainty) &&
+                        row->uncertainty >= info->MinUncertainty() &&
                         row->uncertainty <= info->max - info->min))
-      return Fail("uncertainty", "'" + u + "'; allowed: empty or a number in (0, " +
-                                     std::to_string(info->max - info->min) + "] " + info->unit);
+      return Fail("uncertainty", "'" + u + "'; allowed: empty or a number in " +
+                                     info->UncertaintyRangeText());
     const std::string& n = cells.at("repeats");
     double repeats = 0;
     if (!n.empty() && !(ParseNumber(n, &repeats) && repeats >= 1 && repeats <= 1e6 &&

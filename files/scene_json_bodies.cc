@@ -5,12 +5,14 @@
 #include <map>
 
 #include "files/scene_json_sections.h"
+#include "core/scene/physical_limits.h"
 #include "core/walls/walls.h"
 
 namespace demcal::workflow::internal {
 namespace {
 
 using nlohmann::json;
+namespace physical = core::limits;
 
 // Fails unless max > min on every axis.
 void CheckBoxOrder(JsonFields& f, const std::string& max_key, const core::Vec3& lo,
@@ -76,7 +78,7 @@ void ParseCylinder(JsonFields& f, core::Wall w, core::Scene* scene) {
   core::CylinderSurface c;
   f.Vector("axis_point_m", &c.axis_point_m, kRequired);
   ReadAxis(f, "axis", &c.axis, "the cylinder's axis direction");
-  f.Number("radius_m", &c.radius_m, kRequired, Range::LeftOpen(0, 1e3, "m"));
+  f.Number("radius_m", &c.radius_m, kRequired, Range::LeftOpen(0, physical::kWallRadius.hi, "m"));
   f.Number("axial_min_m", &c.axial_min_m, kOptional);
   f.Number("axial_max_m", &c.axial_max_m, kOptional);
   f.Bool("inside", &c.inside, kOptional);
@@ -95,9 +97,9 @@ void ParseCone(JsonFields& f, core::Wall w, core::Scene* scene) {
   f.Vector("axis_point_m", &c.axis_point_m, kRequired);
   ReadAxis(f, "axis", &c.axis, "the cone's axis direction");
   f.Number("height0_m", &c.height0_m, kRequired);
-  f.Number("radius0_m", &c.radius0_m, kRequired, Range::Closed(0, 1e3, "m"));
+  f.Number("radius0_m", &c.radius0_m, kRequired, Range::Of(physical::kWallRadius, "m"));
   f.Number("height1_m", &c.height1_m, kRequired);
-  f.Number("radius1_m", &c.radius1_m, kRequired, Range::Closed(0, 1e3, "m"));
+  f.Number("radius1_m", &c.radius1_m, kRequired, Range::Of(physical::kWallRadius, "m"));
   f.Bool("inside", &c.inside, kOptional);
   f.Bool("shell", &w.shell, kOptional);
   if (f.ok() && c.height1_m == c.height0_m)
@@ -212,7 +214,7 @@ void ParseParticles(JsonFields& top, core::Scene* scene, JsonStatus* status) {
     f.Vector("velocity_m_s", &p.velocity_m_s, kOptional);
     f.Vector("angular_velocity_rad_s", &p.angular_velocity_rad_s, kOptional);
     // Absent: drawn from the species' size distribution (core's diameter_m = 0).
-    f.Number("diameter_m", &p.diameter_m, kOptional, Range::LeftOpen(0, 10, "m"));
+    f.Number("diameter_m", &p.diameter_m, kOptional, Range::Of(physical::kDiameter, "m"));
     ReadOrientation(f, *scene, &p);
     f.Bool("fixed", &p.fixed, kOptional);  // glued in place (a frozen base); spheres only
     scene->particles.push_back(p);

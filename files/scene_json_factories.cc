@@ -3,6 +3,7 @@
 
 #include "files/scene_json_sections.h"
 #include "core/insertion/factory.h"
+#include "core/scene/physical_limits.h"
 
 namespace demcal::workflow::internal {
 
@@ -31,7 +32,7 @@ void ParseInsertionRegion(JsonFields& f, core::InsertionRegion* region, JsonStat
   double radius = 0;
   std::vector<double> z;
   c.Vector("axis_point_m", &axis_point, kRequired);
-  c.Number("radius_m", &radius, kRequired, Range::Open(0, 1e300, "m"));
+  c.Number("radius_m", &radius, kRequired, Range::LeftOpen(0, core::limits::kCoordinate.hi, "m"));
   c.Numbers("z_range_m", 2, &z, kRequired);
   if (c.ok() && !(z[1] > z[0])) c.Fail("z_range_m", "must be [z_min, z_max] with z_max > z_min");
   if (c.ok()) *region = core::InsertionRegion::Cylinder(axis_point, radius, z[0], z[1]);
@@ -63,7 +64,7 @@ void ParseFactories(JsonFields& top, core::Scene* scene, JsonStatus* status) {
       }
     }
     ParseInsertionRegion(f, &spec.region, status);
-    f.Number("mass_rate_kg_s", &spec.mass_rate_kg_s, kRequired);
+    f.Number("mass_rate_kg_s", &spec.mass_rate_kg_s, kRequired);  // Scene::IsValid: kMassRate
     f.Number("start_s", &spec.start_s, kOptional);
     f.Number("end_s", &spec.end_s, kOptional);
     f.Number("total_mass_kg", &spec.total_mass_kg, kOptional);

@@ -9,6 +9,7 @@
 namespace demcal::workflow::internal {
 
 namespace limits = objectives::limits;
+namespace physical = core::limits;
 namespace {
 
 using core::PairParameters;
@@ -23,11 +24,11 @@ void CheckUnique(JsonFields& f, const std::vector<std::string>& earlier, const s
 // The interaction keys that a default or a pair entry may set (JSON ranges; the core checks
 // the resolved table again).
 void ReadPairFields(JsonFields& f, PairParameters* p) {
-  f.Number("sliding_friction", &p->sliding_friction, kOptional, Range::Closed(0, 10));
-  f.Number("rolling_friction", &p->rolling_friction, kOptional, Range::Closed(0, 10));
-  f.Number("restitution", &p->restitution, kOptional, Range::LeftOpen(0, 1));
+  f.Number("sliding_friction", &p->sliding_friction, kOptional, Range::Of(physical::kFriction));
+  f.Number("rolling_friction", &p->rolling_friction, kOptional, Range::Of(physical::kFriction));
+  f.Number("restitution", &p->restitution, kOptional, Range::Of(physical::kRestitution));
   f.Number("interfacial_energy_J_m2", &p->interfacial_energy_J_m2, kOptional,
-           Range::Closed(0, 1e3, "J/m2"));
+           Range::Of(physical::kInterfacialEnergy, "J/m2"));
 }
 
 const std::vector<std::string>& PairKeys() {
@@ -51,7 +52,7 @@ void ParseClump(JsonFields& f, core::Species* sp, JsonStatus* status) {
       JsonFields s((*spheres)[k], IndexPath(c.PathOf("spheres"), k), {"centre", "radius"}, status);
       core::ShapeSphere member;
       s.Vector("centre", &member.centre, kRequired);
-      s.Number("radius", &member.radius, kRequired, Range::Open(0, 1e300));
+      s.Number("radius", &member.radius, kRequired, Range::Of(physical::kClumpLength));
       sp->clump_shape.push_back(member);
     }
   }
@@ -62,10 +63,9 @@ void ParseClump(JsonFields& f, core::Species* sp, JsonStatus* status) {
     e.Vector("semi_axes", &axes, kRequired);
     e.Integer("sphere_count", &n, kRequired, Range::Of(limits::kClumpSpheres));
     if (!e.ok()) return;
-    if (!(axes.x >= axes.y && axes.y >= axes.z && axes.z > 0))
-      return e.Fail("semi_axes", "must be [a, b, c] with a >= b >= c > 0");
-    core::ShapeApproximation shape;
     std::string why;
+    if (!core::CheckEllipsoidSemiAxes(axes, &why)) return e.Fail("semi_axes", why);
+    core::ShapeApproximation shape;
     if (!core::ApproximateEllipsoid(axes, static_cast<int>(n), &shape, &why))
       return e.Fail("semi_axes", "cannot be approximated: " + why);
     for (const core::ClumpSphere& s : shape.spheres)
@@ -123,13 +123,13 @@ void ParseMaterials(JsonFields& top, core::Scene* scene, JsonStatus* status) {
     core::Material m;
     f.String("name", &m.name, kRequired);
     if (f.ok()) CheckUnique(f, MaterialNames(*scene), m.name);
-    f.Number("poisson_ratio", &m.poisson_ratio, kRequired, Range::Open(-1, 0.5));
+    f.Number("poisson_ratio", &m.poisson_ratio, kRequired, Range::Of(physical::kPoissonRatio));
     const bool has_e = f.Has("youngs_modulus_Pa"), has_g = f.Has("shear_modulus_Pa");
     if (f.ok() && has_e == has_g)
       f.Fail(has_e ? "shear_modulus_Pa" : "youngs_modulus_Pa",
              has_e ? "cannot be given together with 'youngs_modulus_Pa'; give exactly one"
                    : "is missing: give exactly one of youngs_modulus_Pa, shear_modulus_Pa");
-    const Range modulus = Range::Open(0, 1e300, "Pa");
+    const Range modulus = Range::Of(physical::kYoungsModulus, "Pa");
     if (has_e) f.Number("youngs_modulus_Pa", &m.youngs_modulus_Pa, kRequired, modulus);
     if (has_g) {
       double g = 0;
@@ -169,7 +169,7 @@ void ParseSpecies(JsonFields& top, core::Scene* scene, JsonStatus* status) {
     using Kind = core::SizeDistribution::Kind;
     if (f.Has("diameter_m")) {
       sp.size.kind = Kind::kFixed;
-      f.Number("diameter_m", &sp.size.diameter_m, kRequired);
+      f.Number("diameter_m", &sp.size.diameter_m, kRequired, Range::Of(physical::kDiameter, "m"));
     } else if (f.Has("diameter_range_m")) {
       std::vector<double> range;
       f.Numbers("diameter_range_m", 2, &range, kRequired);
@@ -247,7 +247,8 @@ void ParseContactModel(JsonFields& top, core::Scene* scene, JsonStatus* status) 
   f.String("rolling", &scene->rolling.name, kOptional, core::RollingModelNames());
   f.String("jkr_rolling_load", &scene->rolling.jkr_rolling_load, kOptional,
            core::JkrRollingLoadNames());
-  f.Number("epsd_damping_ratio", &scene->rolling.epsd_damping_ratio, kOptional);
+  f.Number("epsd_damping_ratio", &scene->rolling.epsd_damping_ratio, kOptional,
+           Range::Of(physical::kDampingRatio));
   if (f.ok() && f.Has("epsd_damping_ratio") && scene->rolling.name != "epsd")
     f.Fail("epsd_damping_ratio",
            "applies only to rolling = \"epsd\" (rolling is \"" + scene->rolling.name + "\")");

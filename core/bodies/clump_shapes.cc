@@ -6,6 +6,8 @@
 #include <numbers>
 #include <sstream>
 
+#include "core/scene/physical_limits.h"
+
 namespace demcal::core {
 namespace {
 
@@ -159,6 +161,24 @@ void Report(ShapeApproximation* out) {
 //    touching the tips, r from V_union(r) = V. Volume and length match; the width does not (the
 //    aspect-ratio error says by how much) and the spheres may not touch (`connected`).
 // For a sphere target every construction puts all spheres at the origin with radius a.
+bool CheckEllipsoidSemiAxes(const Vec3& semi_axes, std::string* error) {
+  const double a = semi_axes.x, b = semi_axes.y, c = semi_axes.z;
+  std::ostringstream os, given;
+  given << "[" << a << ", " << b << ", " << c << "]";
+  if (!(a >= b && b >= c && c > 0))
+    os << "must be [a, b, c] with a >= b >= c > 0, got " << given.str();
+  else if (!limits::kClumpLength.Contains(a) || !limits::kClumpLength.Contains(c))
+    os << "= " << given.str() << " is outside the allowed range " << limits::kClumpLength.Text()
+       << " (any one length unit)";
+  else if (!limits::kClumpAspectRatio.Contains(a / c))
+    os << "= " << given.str() << " has the aspect ratio a/c = " << a / c
+       << ", outside the allowed range " << limits::kClumpAspectRatio.Text() << " (at most "
+       << kMaxEllipsoidSpheres << " spheres on the long axis)";
+  else
+    return true;
+  return Fail(error, os.str());
+}
+
 bool ApproximateEllipsoid(const Vec3& semi_axes_m, int n_spheres, ShapeApproximation* out,
                           std::string* error) {
   const double a = semi_axes_m.x, b = semi_axes_m.y, c = semi_axes_m.z;
@@ -168,12 +188,9 @@ bool ApproximateEllipsoid(const Vec3& semi_axes_m, int n_spheres, ShapeApproxima
        << kMaxEllipsoidSpheres;
     return Fail(error, os.str());
   }
-  if (!IsFinite(semi_axes_m) || !(c > 0) || b < c || a < b) {
-    std::ostringstream os;
-    os << "ApproximateEllipsoid: semi-axes (" << a << ", " << b << ", " << c
-       << ") must be finite with a >= b >= c > 0";
-    return Fail(error, os.str());
-  }
+  std::string why;
+  if (!CheckEllipsoidSemiAxes(semi_axes_m, &why))
+    return Fail(error, "ApproximateEllipsoid: semi-axes " + why);
   ShapeApproximation r;
   r.target_volume_m3 = 4.0 / 3.0 * kPi * a * b * c;
   r.target_extents_m = 2.0 * semi_axes_m;

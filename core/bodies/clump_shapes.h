@@ -48,9 +48,14 @@ struct ShapeApproximation {
 // The most spheres ApproximateEllipsoid chains into one shape.
 inline constexpr int kMaxEllipsoidSpheres = 5;
 
+// Whether semi-axes [a, b, c] are ones the builder is meaningful for: a >= b >= c, each within
+// limits::kClumpLength and a/c within limits::kClumpAspectRatio (core/scene/physical_limits.h,
+// with the reasons). False with the problem in *error ("must be ...", "... is outside ...").
+bool CheckEllipsoidSemiAxes(const Vec3& semi_axes, std::string* error);
+
 // Approximates the ellipsoid with semi-axes a ≥ b ≥ c > 0 (along x, y, z) by n = 1..5 spheres on
 // the x axis whose union has exactly the ellipsoid's volume. See clump_shapes.cc for the
-// construction. Errors: n out of range, semi-axes not finite/positive/sorted.
+// construction. Errors: n out of range, semi-axes refused by CheckEllipsoidSemiAxes.
 bool ApproximateEllipsoid(const Vec3& semi_axes_m, int n_spheres, ShapeApproximation* out,
                           std::string* error);
 

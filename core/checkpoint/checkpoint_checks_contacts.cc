@@ -107,7 +107,38 @@ bool WallContacts::CheckRestored(size_t particles, size_t first_fixed,
     for (uint32_t s = 0; s < m.count; ++s)
       if (!Finite(m.slot[s].history)) return Fail("wall contacts: non-finite mesh history", error);
   }
+  for (size_t e = 0; e < entries; ++e)
+    if (mesh_slots_[e] != kNoMesh) {
+      const std::string why = MeshHistoryProblem(mesh_history_[mesh_slots_[e]], walls[index_[e]]);
+      if (!why.empty())
+        return Fail("wall contacts: mesh history " + std::to_string(mesh_slots_[e]) + " (wall " +
+                        std::to_string(index_[e]) + "): " + why,
+                    error);
+    }
   return true;
+}
+
+std::string WallContacts::MeshHistoryProblem(const MeshHistory& m, const Wall& wall) {
+  // Each contact of a mesh history is keyed by the mesh feature it touches (MeshContact::Key:
+  // kind << 32 | index); SumMesh looks a contact up by its key, so a key held twice would give
+  // two contacts one history, and a key naming no feature of this mesh a history never found.
+  const TriangleMesh& mesh = *std::get<MeshRef>(wall.shape).mesh;
+  for (uint32_t s = 0; s < m.count; ++s) {
+    const uint64_t key = m.slot[s].key, kind = key >> 32, index = key & 0xffffffffu;
+    auto is = [kind](MeshFeatureKind k) { return kind == static_cast<uint64_t>(k); };
+    const uint64_t features = is(MeshFeatureKind::kFace)     ? mesh.NumPatches()
+                              : is(MeshFeatureKind::kEdge)   ? mesh.NumEdges()
+                              : is(MeshFeatureKind::kVertex) ? mesh.NumVertices()
+                                                             : 0;
+    if (index >= features)
+      return "contact " + std::to_string(s) + " has the key " + std::to_string(key) +
+             ", which names no face, edge or vertex of the mesh";
+    for (uint32_t t = 0; t < s; ++t)
+      if (m.slot[t].key == key)
+        return "contacts " + std::to_string(t) + " and " + std::to_string(s) +
+               " share the key " + std::to_string(key) + " (one mesh feature, two histories)";
+  }
+  return "";
 }
 
 bool WallContacts::NearTrianglesFit(uint32_t slot, const Wall& wall) const {
@@ -141,7 +172,7 @@ bool ContactForces::CheckRestored(const NeighbourList& list, size_t particles,
 bool Simulation::CheckRestoredState(std::string* error) const {
   const Particles& p = system_.spheres;
   if (!CheckRestoredProgress(error) || !CheckRestoredBodies(error) ||
-      !list_.CheckRestored(p.Size(), list_settings_.skin_m, error))
+      !CheckRestoredPhysics(error) || !list_.CheckRestored(p.Size(), list_settings_.skin_m, error))
     return false;
   // Fixed spheres after the moving ones (the integration and sweep stop at FirstFixed()).
   for (size_t i = 0; i < p.Size(); ++i)

@@ -7,6 +7,8 @@
 #include <sstream>
 
 #include "core/contact/jkr.h"
+#include "core/scene/field_checker.h"
+#include "core/scene/physical_limits.h"
 #include "core/scene/scene.h"
 #include "core/scene/scene_overlaps.h"
 #include "core/walls/triangle_mesh.h"
@@ -15,40 +17,7 @@
 namespace demcal::core {
 namespace {
 
-// Collects the first violation as "field = value is outside allowed range".
-class Checker {
- public:
-  explicit Checker(std::string* error) : error_(error) {}
-  bool ok() const { return ok_; }
-  void Fail(const std::string& message) {
-    if (ok_ && error_) *error_ = message;
-    ok_ = false;
-  }
-  // open/closed bounds: lo_open ⇒ value > lo, else value >= lo (same for hi)
-  void Range(const std::string& field, double v, double lo, double hi, bool lo_open,
-             bool hi_open, const std::string& unit = "") {
-    const bool good = std::isfinite(v) && (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
-    if (good) return;
-    // Readable bounds: "(0, 1e+06] s", "> 0 Pa"; never "inf" or a 300-digit number.
-    std::ostringstream os;
-    os << "field '" << field << "' = " << v << (unit.empty() ? "" : " " + unit)
-       << " is outside the allowed range ";
-    if (std::isinf(hi))
-      os << (lo_open ? "> " : ">= ") << lo;
-    else
-      os << (lo_open ? "(" : "[") << lo << ", " << hi << (hi_open ? ")" : "]");
-    if (!unit.empty()) os << " " << unit;
-    Fail(os.str());
-  }
-  void Positive(const std::string& field, double v, const std::string& unit) {
-    Range(field, v, 0, kInf, true, true, unit);
-  }
-  static constexpr double kInf = std::numeric_limits<double>::infinity();
-
- private:
-  std::string* error_ = nullptr;
-  bool ok_ = true;
-};
+using Checker = FieldChecker;
 
 std::string Indexed(const std::string& name, size_t i) { return name + "[" + std::to_string(i) + "]"; }
 
@@ -57,9 +26,11 @@ void CheckMaterials(const Scene& s, Checker& c) {
   for (size_t i = 0; i < s.materials.size(); ++i) {
     const Material& m = s.materials[i];
     const std::string f = Indexed("materials", i);
-    c.Positive(f + ".youngs_modulus_Pa", m.youngs_modulus_Pa, "Pa");
-    c.Range(f + ".poisson_ratio", m.poisson_ratio, -1, 0.5, true, true);
-    c.Range(f + ".density_kg_m3", m.density_kg_m3, 0, 1e5, false, false, "kg/m3");
+    c.Within(f + ".youngs_modulus_Pa", m.youngs_modulus_Pa, limits::kYoungsModulus, "Pa");
+    c.Within(f + ".poisson_ratio", m.poisson_ratio, limits::kPoissonRatio);
+    // A wall material needs no density (0); a particle material's is checked with its species.
+    c.Range(f + ".density_kg_m3", m.density_kg_m3, 0, limits::kParticleDensity.hi, false, false,
+            "kg/m3");
   }
 }
 
@@ -70,25 +41,34 @@ void CheckSpecies(const Scene& s, Checker& c) {
     if (sp.material < 0 || sp.material >= static_cast<int>(s.materials.size()))
       c.Fail("field '" + f + ".material' names no defined material");
     else
-      c.Range(f + ".material density", s.materials[sp.material].density_kg_m3, 0, 1e5, true, false,
-              "kg/m3");
+      c.Within(f + ".material density", s.materials[sp.material].density_kg_m3,
+               limits::kParticleDensity, "kg/m3");
     const SizeDistribution& d = sp.size;
     using K = SizeDistribution::Kind;
-    if (d.kind == K::kFixed) c.Range(f + ".diameter_m", d.diameter_m, 0, 10, true, false, "m");
+    if (d.kind == K::kFixed) c.Within(f + ".diameter_m", d.diameter_m, limits::kDiameter, "m");
     if (d.kind == K::kUniform) {
-      c.Range(f + ".diameter_m.min", d.min_diameter_m, 0, 10, true, false, "m");
-      c.Range(f + ".diameter_m.max", d.max_diameter_m, d.min_diameter_m, 10, false, false, "m");
+      c.Within(f + ".diameter_m.min", d.min_diameter_m, limits::kDiameter, "m");
+      c.Range(f + ".diameter_m.max", d.max_diameter_m, d.min_diameter_m, limits::kDiameter.hi,
+              false, false, "m");
     }
     if (d.kind == K::kTable) {
       if (d.table_diameter_m.empty() || d.table_diameter_m.size() != d.table_number_fraction.size())
         c.Fail("field '" + f + ".diameter_table' needs equally long non-empty diameter and fraction lists");
       double sum = 0;
       for (size_t k = 0; k < d.table_diameter_m.size(); ++k) {
-        c.Range(f + ".diameter_table[" + std::to_string(k) + "].diameter_m", d.table_diameter_m[k], 0, 10, true, false, "m");
+        c.Within(f + ".diameter_table[" + std::to_string(k) + "].diameter_m",
+                 d.table_diameter_m[k], limits::kDiameter, "m");
         c.Range(f + ".diameter_table[" + std::to_string(k) + "].number_fraction", d.table_number_fraction[k], 0, 1, false, false);
         sum += d.table_number_fraction[k];
       }
       if (std::abs(sum - 1.0) > 1e-6) c.Fail("field '" + f + ".diameter_table' number fractions must sum to 1");
+    }
+    for (size_t k = 0; k < sp.clump_shape.size(); ++k) {
+      const std::string member = f + ".clump.spheres[" + std::to_string(k) + "]";
+      c.Within(member + ".radius", sp.clump_shape[k].radius, limits::kClumpLength);
+      for (int a = 0; a < 3; ++a)
+        c.Range(member + ".centre[" + std::to_string(a) + "]", sp.clump_shape[k].centre[a],
+                -limits::kClumpLength.hi, limits::kClumpLength.hi, false, false);
     }
   }
 }
@@ -103,10 +83,11 @@ void CheckPairs(const Scene& s, Checker& c) {
     for (size_t j = 0; j < n; ++j) {
       const PairParameters& p = s.pair_parameters[i * n + j];
       const std::string f = "interactions[" + s.materials[i].name + "," + s.materials[j].name + "]";
-      c.Range(f + ".sliding_friction", p.sliding_friction, 0, 10, false, false);
-      c.Range(f + ".rolling_friction", p.rolling_friction, 0, 10, false, false);
-      c.Range(f + ".restitution", p.restitution, 0, 1, true, false);
-      c.Range(f + ".interfacial_energy_J_m2", p.interfacial_energy_J_m2, 0, 1e3, false, false, "J/m2");
+      c.Within(f + ".sliding_friction", p.sliding_friction, limits::kFriction);
+      c.Within(f + ".rolling_friction", p.rolling_friction, limits::kFriction);
+      c.Within(f + ".restitution", p.restitution, limits::kRestitution);
+      c.Within(f + ".interfacial_energy_J_m2", p.interfacial_energy_J_m2,
+               limits::kInterfacialEnergy, "J/m2");
     }
   }
 }
@@ -191,19 +172,25 @@ void CheckWall(const Scene& s, size_t i, Checker& c) {
         break;
       }
   }
-  if (!IsFinite(w.velocity_m_s)) c.Fail("field '" + f + ".velocity_m_s' must be finite");
-  if (!IsFinite(w.load_point_m)) c.Fail("field '" + f + ".load_point_m' must be finite");
+  c.Magnitude(f + ".velocity_m_s", w.velocity_m_s, limits::kSpeed, "m/s");
+  const char* origin = std::holds_alternative<MeshRef>(w.shape)        ? ".offset_m"
+                       : std::holds_alternative<PlaneSurface>(w.shape) ? ".point_m"
+                                                                       : ".axis_point_m";
+  c.Point(f + origin, ShapeOrigin(w.shape));
+  c.Point(f + ".load_point_m", w.load_point_m);
   c.Range(f + ".motion_start_s", w.motion_start_s, 0, 1e9, false, false, "s");
   if (!std::isinf(w.motion_end_s) || w.motion_end_s < 0)
     c.Range(f + ".motion_end_s", w.motion_end_s, w.motion_start_s, 1e9, false, false, "s");
 }
 
 void CheckGeometry(const Scene& s, Checker& c) {
+  c.Point("domain.min_m", s.domain_min_m);
+  c.Point("domain.max_m", s.domain_max_m);
   for (int a = 0; a < 3; ++a)
     if (!(s.domain_max_m[a] > s.domain_min_m[a]))
       c.Fail("field 'domain.max_m' must exceed 'domain.min_m' on every axis");
   for (size_t i = 0; i < s.walls.size(); ++i) CheckWall(s, i, c);
-  if (!IsFinite(s.gravity_m_s2)) c.Fail("field 'gravity_m_s2' must be finite");
+  c.Magnitude("gravity_m_s2", s.gravity_m_s2, limits::kGravity, "m/s2");
   const char* axis_names[3] = {"x", "y", "z"};
   for (int a = 0; a < 3 && c.ok(); ++a) {
     if (!s.periodic[a]) continue;
@@ -229,12 +216,13 @@ void CheckParticles(const Scene& s, Checker& c) {
     const ParticleSpec& p = s.particles[i];
     const std::string f = Indexed("particles", i);
     if (p.species < 0 || p.species >= ns) c.Fail("field '" + f + ".species' names no defined species");
-    c.Range(f + ".diameter_m", p.diameter_m, 0, 10, false, false, "m");
+    if (p.diameter_m != 0) c.Within(f + ".diameter_m", p.diameter_m, limits::kDiameter, "m");
     for (int a = 0; a < 3; ++a)
       if (p.position_m[a] < s.domain_min_m[a] || p.position_m[a] > s.domain_max_m[a])
         c.Fail("field '" + f + ".position_m' lies outside the domain");
-    if (!IsFinite(p.velocity_m_s) || !IsFinite(p.angular_velocity_rad_s))
-      c.Fail("field '" + f + "' has a non-finite velocity");
+    c.Magnitude(f + ".velocity_m_s", p.velocity_m_s, limits::kSpeed, "m/s");
+    c.Magnitude(f + ".angular_velocity_rad_s", p.angular_velocity_rad_s, limits::kAngularSpeed,
+                "rad/s");
     if (p.fixed && p.species >= 0 && p.species < ns && !s.species[p.species].clump_shape.empty())
       c.Fail("field '" + f + ".fixed': only spheres can be fixed, species '" +
              s.species[p.species].name + "' is a clump");
@@ -248,6 +236,7 @@ void CheckParticles(const Scene& s, Checker& c) {
     const std::string f = Indexed("fills", i);
     if (fl.species < 0 || fl.species >= ns) c.Fail("field '" + f + ".species' names no defined species");
     c.Range(f + ".count", static_cast<double>(fl.count), 0, 1e8, true, false);
+    c.Magnitude(f + ".velocity_m_s", fl.velocity_m_s, limits::kSpeed, "m/s");
     for (int a = 0; a < 3; ++a) {
       if (!(fl.region.max_m[a] > fl.region.min_m[a]))
         c.Fail("field '" + f + ".region' must be non-empty on every axis");
@@ -280,7 +269,7 @@ void CheckFactories(const Scene& s, Checker& c) {
       d_max = std::max(d_max, sp.size.MaxDiameter());
     }
     if (std::abs(sum - 1) > 1e-6) c.Fail("field '" + name + ".species' mass fractions must sum to 1");
-    c.Positive(name + ".mass_rate_kg_s", f.mass_rate_kg_s, "kg/s");
+    c.Within(name + ".mass_rate_kg_s", f.mass_rate_kg_s, limits::kMassRate, "kg/s");
     c.Range(name + ".start_s", f.start_s, 0, 1e9, false, false, "s");
     if (!std::isinf(f.end_s)) c.Range(name + ".end_s", f.end_s, f.start_s, 1e9, true, false, "s");
     if (!std::isinf(f.total_mass_kg))
@@ -288,8 +277,8 @@ void CheckFactories(const Scene& s, Checker& c) {
     c.Range(name + ".batch_interval_s", f.batch_interval_s, 0, 1e6, false, false, "s");
     c.Range(name + ".follow_heap.clearance_m", f.follow_heap_clearance_m, 0, 1e3, false, false, "m");
     c.Range(name + ".follow_heap.settled_speed_m_s", f.settled_speed_m_s, 0, 1e3, true, false, "m/s");
-    if (!IsFinite(f.region_velocity_m_s))
-      c.Fail("field '" + name + ".region_velocity_m_s' must be finite");
+    c.Magnitude(name + ".velocity_m_s", f.velocity_m_s, limits::kSpeed, "m/s");
+    c.Magnitude(name + ".region_velocity_m_s", f.region_velocity_m_s, limits::kSpeed, "m/s");
     for (int a = 0; a < 3; ++a)
       if (f.region.min_m[a] < s.domain_min_m[a] || f.region.max_m[a] > s.domain_max_m[a] ||
           !(f.region.max_m[a] > f.region.min_m[a]))
@@ -359,7 +348,9 @@ bool Scene::IsValid(std::string* error) const {
   RollingModel model;
   if (c.ok() && !MakeRollingModel(rolling, &model))
     c.Fail("field 'contact_model.rolling' = '" + rolling.name + "' is not one of none|cdt|epsd|epsd2");
-  if (c.ok()) c.Range("contact_model.epsd_damping_ratio", rolling.epsd_damping_ratio, 0, 1, false, false);
+  if (c.ok())
+    c.Within("contact_model.epsd_damping_ratio", rolling.epsd_damping_ratio,
+             limits::kDampingRatio);
   JkrRollingLoad load{};
   if (c.ok() && !ParseJkrRollingLoad(rolling.jkr_rolling_load, &load))
     c.Fail("field 'contact_model.jkr_rolling_load' = '" + rolling.jkr_rolling_load +
@@ -367,6 +358,7 @@ bool Scene::IsValid(std::string* error) const {
   if (c.ok() && species.empty() && (!particles.empty() || !fills.empty() || !factories.empty()))
     c.Fail("field 'species' must list at least one species");
   if (c.ok()) CheckTime(*this, c);
+  if (c.ok()) CheckSceneMotion(*this, c);
   return c.ok();
 }
 

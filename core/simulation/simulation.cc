@@ -103,6 +103,10 @@ bool Simulation::Initialize(std::string* error) {
                     system_.spheres.Size() *
                         AdhesiveEnergyBoundPerParticle(scene_, table_, normal_) +
                     system_.ReleasableGravitationalEnergy(g, lowest_point_);
+  initial_bodies_ = system_.BodyCount();
+  initial_energy_scale_J_ = energy_scale_J_;
+  inserted_energy_bound_J_ =
+      InsertedEnergyBound(AdhesiveEnergyBoundPerParticle(scene_, table_, normal_));
   initialized_ = true;
   return true;
 }

@@ -142,6 +142,18 @@ class Simulation {
   bool CheckRestoredState(std::string* error) const;
   bool CheckRestoredBodies(std::string* error) const;
   bool CheckRestoredProgress(std::string* error) const;
+  // Physical consistency of a restored state with what can be derived from the scene
+  // (core/checkpoint/checkpoint_checks_physics.cc): masses and inertias from radius and density,
+  // clump centres from their members, the energy budget and scale, sink and factory counters.
+  bool CheckRestoredPhysics(std::string* error) const;
+  bool CheckRestoredEnergy(std::string* error) const;
+  bool CheckRestoredCounters(std::string* error) const;
+  // The least and most mass one body of species k can have (its size distribution and the
+  // scene's explicit diameters).
+  void BodyMassRange(int k, double* lo_kg, double* hi_kg) const;
+  // The most one inserted body can add to the energy scale: its kinetic energy at the fastest
+  // factory velocity, a fall through the whole domain and the adhesion bound of its spheres.
+  double InsertedEnergyBound(double adhesion_per_sphere_J) const;
   // `removed` (may be empty): the old slot of each remaining slot after a removal this step.
   void RebuildNeighbours(bool allow_reorder, const std::vector<uint32_t>& removed = {});
   // Returns kOk, or the failure found by the periodic checks (and fills message).
@@ -176,6 +188,11 @@ class Simulation {
   double energy_budget_J_ = 0;   // initial KE + PE (+ inserted energy)
   double energy_scale_J_ = 0;    // energy that gravity and the initial state can release
   Vec3 lowest_point_;            // of the domain along gravity
+  // What a restored state is checked against, recorded by Initialize: the bodies the scene
+  // places at the start, the energy scale of that state, and InsertedEnergyBound.
+  size_t initial_bodies_ = 0;
+  double initial_energy_scale_J_ = 0;
+  double inserted_energy_bound_J_ = 0;
   double adhesive_gap_m_ = 0;  // the normal law's largest break gap (MaxAdhesiveBreakGap)
   bool initialized_ = false;
 };

@@ -11,15 +11,16 @@
 #include <cstdio>
 #include <limits>
 
+#include "core/scene/physical_limits.h"
 #include "core/walls/stl_ascii_parser.h"
 
 namespace demcal::core {
 namespace {
 
 constexpr size_t kHeaderBytes = 80;
-// 1000 km: far beyond any DEM geometry, and small enough that products of coordinates (areas,
-// cross products, squared distances) stay finite.
-constexpr double kMaxCoordinateM = 1e6;
+// The coordinate bound of every scene position (physical_limits.h); it also keeps products of
+// coordinates (areas, cross products, squared distances) finite.
+constexpr double kMaxCoordinateM = limits::kCoordinate.hi;
 
 std::string FormatG(double v) {
   char text[32];

@@ -105,6 +105,9 @@ class WallContacts {
   static constexpr uint32_t kNoMesh = ~uint32_t{0};
   // Mesh candidate `slot`'s near triangles exist in `wall`'s mesh, ascending (CheckRestored).
   bool NearTrianglesFit(uint32_t slot, const Wall& wall) const;
+  // "" if mesh history `m` of a candidate of mesh wall `wall` keys each contact by a distinct
+  // feature of the mesh; else the problem (CheckRestored).
+  static std::string MeshHistoryProblem(const MeshHistory& m, const Wall& wall);
 
   template <class Model>
   void SumOne(const Particles& p, uint32_t i, uint32_t e, const Vec3& wall_velocity,

@@ -1,7 +1,9 @@
 #include "experiments/common/experiment_sections.h"
 
+#include "core/scene/physical_limits.h"
 #include "files/scene_json_sections.h"
 
+#include <cmath>
 #include <cstring>
 #include <utility>
 
@@ -15,9 +17,16 @@ void ParseFeed(const json& value, const std::string& path, const core::Scene& mo
                {"components", "mass_kg", "mass_rate_kg_s", "start_s", "velocity_m_s"}, status);
   const json* components = f.Array("components", kRequired);
   f.Number("mass_kg", &feed->mass_kg, kRequired, Range::LeftOpen(0, 1e4, "kg"));
-  f.Number("mass_rate_kg_s", &feed->mass_rate_kg_s, kRequired, Range::LeftOpen(0, 1e4, "kg/s"));
+  f.Number("mass_rate_kg_s", &feed->mass_rate_kg_s, kRequired,
+           Range::Of(core::limits::kMassRate, "kg/s"));
   f.Number("start_s", &feed->start_s, kOptional, Range::Closed(0, 1e4, "s"));
   f.Vector("velocity_m_s", &feed->velocity_m_s, kOptional);
+  const core::Vec3& v = feed->velocity_m_s;
+  if (const double speed = std::hypot(v.x, v.y, v.z);  // no overflow of the squares
+      f.ok() && !core::limits::kSpeed.Contains(speed))
+    f.Fail("velocity_m_s", "has magnitude " + FormatNumber(speed) +
+                               " m/s, outside the allowed range " + core::limits::kSpeed.Text() +
+                               " m/s");
   if (!components || !status->ok()) return;
   const std::vector<std::string> names = internal::SpeciesNames(model);
   feed->components.clear();

@@ -8,26 +8,17 @@
 //
 //   if (!limits::kSizeScale.Contains(x))
 //     error = "size_scale = ... is outside the allowed range " + limits::kSizeScale.Text();
-#include <string>
-
 #include "core/bodies/clump_shapes.h"
+#include "core/scene/physical_limits.h"
 
 namespace demcal::objectives::limits {
 
-// An interval of allowed values; open ends exclude the bound.
-struct Limit {
-  double lo = 0, hi = 0;
-  bool lo_open = false, hi_open = false;
-  // False for NaN.
-  constexpr bool Contains(double v) const {
-    return (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
-  }
-  std::string Text() const;  // "[1, 20]", "(0, 1]" (numbers to 6 significant digits)
-};
-
-constexpr Limit Closed(double lo, double hi) { return {lo, hi, false, false}; }
-constexpr Limit LeftOpen(double lo, double hi) { return {lo, hi, true, false}; }
-constexpr Limit Open(double lo, double hi) { return {lo, hi, true, true}; }
+// The interval type and the scene's physical ranges live in the core (Scene::IsValid uses them):
+// core/scene/physical_limits.h. They are part of this table.
+using core::limits::Closed;
+using core::limits::LeftOpen;
+using core::limits::Limit;
+using core::limits::Open;
 
 // A run's fidelity (objectives/common/fidelity.h): experiment files, reproduce workflow files,
 // Fidelity::IsValid. Never finer nor stiffer than the real particles.
@@ -68,5 +59,13 @@ inline constexpr Limit kCohesionPoisson = Open(-1, 0.5);
 inline constexpr Limit kCohesionRadius = LeftOpen(0, 1);      // m
 inline constexpr Limit kCohesionDensity = LeftOpen(0, 1e5);   // kg/m3
 inline constexpr Limit kCohesionGravity = LeftOpen(0, 1e3);   // m/s2
+
+// A measurement's uncertainty (the tidy table's column, a study's stated uncertainty): at least
+// this fraction of its observable's physical span (calibrate/observable_registry.h). A residual
+// is at most the span, so every χ² term ((simulated − measured) / u)² stays below 1e24 and the
+// cost finite for any number of targets. No instrument resolves 1e-12 of a span (an angle to
+// 1e-10 degree, a mass flow to 1 mg/s in the 1e6 kg/s span); a smaller value is a typing or unit
+// mistake (1e-320 made the cost NaN).
+inline constexpr double kMinUncertaintyFraction = 1e-12;
 
 }  // namespace demcal::objectives::limits

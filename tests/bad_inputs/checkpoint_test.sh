@@ -44,6 +44,11 @@ edit "$good" "$work/nan_time_reframed.bin" time nan --reframe
 expect nan_time "checkpoint: time nan s is not finite" "$work/nan_time_reframed.bin"
 edit "$good" "$work/steps_max.bin" steps 9223372036854775807 --reframe
 expect steps_max "checkpoint: step count 9223372036854775807 does not match" "$work/steps_max.bin"
+# Physically inconsistent states behind a valid checksum (checkpoint_checks_physics.cc).
+edit "$good" "$work/budget_huge.bin" budget 1e308 --reframe
+expect budget_huge "checkpoint: energy budget 1e+308 J is" "$work/budget_huge.bin"
+edit "$good" "$work/mass_edited.bin" mass 1.5 --reframe
+expect mass_edited "mass or inertia edited without the radius?" "$work/mass_edited.bin"
 edit "$good" "$work/old_format.bin" old-format
 expect old_format "checkpoint: format 'demcal-checkpoint/4' of an older demcal" "$work/old_format.bin"
 : >"$work/empty.bin"

@@ -128,8 +128,8 @@ void ParseClumpCount(const nlohmann::json& j, const std::string& path, StudyFile
   f.String("species", &c.species, kRequired);
   f.Vector("semi_axes", &c.semi_axes, kRequired);
   if (!f.ok()) return;
-  if (!(c.semi_axes.x >= c.semi_axes.y && c.semi_axes.y >= c.semi_axes.z && c.semi_axes.z > 0))
-    return f.Fail("semi_axes", "must be [a, b, c] with a >= b >= c > 0");
+  if (std::string why; !core::CheckEllipsoidSemiAxes(c.semi_axes, &why))
+    return f.Fail("semi_axes", why);
   std::vector<int64_t> counts;
   f.Integers("counts", &counts, kRequired, Range::Of(limits::kClumpSpheres));
   if (!f.ok()) return;

@@ -15,6 +15,18 @@ std::string ObservableChoice(JsonFields& f, const std::string& key, std::string*
   return *out;
 }
 
+// A stated uncertainty at least the observable's floor, so that every χ² term stays finite
+// (limits::kMinUncertaintyFraction, objectives/common/input_limits.h).
+void CheckUncertainty(JsonFields& f, const std::string& key, const std::string& observable,
+                      double u) {
+  const calibrate::ObservableInfo* info = calibrate::FindObservable(observable);
+  if (!f.ok() || !info || (u >= info->MinUncertainty() && u <= info->max - info->min)) return;
+  std::ostringstream os;
+  os << "= " << u << " " << info->unit << " is outside the allowed range "
+     << info->UncertaintyRangeText() << " for " << observable;
+  f.Fail(key, os.str());
+}
+
 // Fills value, uncertainty, provenance and source of *t from the table row.
 struct MeasureKeys {
   const char* table;
@@ -30,6 +42,8 @@ void Measure(const std::string& table_path, const std::string& material, double 
   if (!row) return f.Fail(keys.table, error);
   t->target.value = row->value;
   t->target.uncertainty = row->HasUncertainty() ? row->uncertainty : assumed;
+  if (!row->HasUncertainty() && assumed > 0)
+    CheckUncertainty(f, keys.uncertainty, t->target.observable, assumed);
   t->target.source = table.path + " line " + std::to_string(row->line) + " (" + row->source + ")";
   t->provenance = row->provenance;
   t->condition = row->conditions;  // the row's whole condition: what this target stands for
@@ -81,6 +95,7 @@ void ParseStudyCandidateTarget(const nlohmann::json& j, const std::string& path,
   f.String("experiment_file", &experiment, kRequired);
   ObservableChoice(f, "observable", &t.observable);
   f.Number("uncertainty", &t.uncertainty, kRequired, Range::LeftOpen(0, 1e6));
+  CheckUncertainty(f, "uncertainty", t.observable, t.uncertainty);
   if (const nlohmann::json* c = f.Object("condition", kOptional); c && f.ok())
     ParseCondition(*c, f.PathOf("condition"), &t.condition, status);
   if (!f.ok()) return;

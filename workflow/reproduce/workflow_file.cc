@@ -5,6 +5,7 @@
 #include <functional>
 #include <sstream>
 
+#include "calibrate/observable_registry.h"
 #include "files/json_document.h"
 #include "files/json_fields.h"
 #include "objectives/common/input_limits.h"
@@ -68,6 +69,10 @@ void ParseSpecies(const nlohmann::json& j, const std::string& path, const std::s
   s->clump_counts.assign(counts.begin(), counts.end());  // each within kClumpSpheres
   NumberList(f, "semi_axes", s->clump_counts.empty() ? kOptional : kRequired,
              Range::LeftOpen(0, 1e3), 3, &s->semi_axes, status);
+  if (std::string why; status->ok() && s->semi_axes.size() == 3 &&
+                       !core::CheckEllipsoidSemiAxes(
+                           {s->semi_axes[0], s->semi_axes[1], s->semi_axes[2]}, &why))
+    f.Fail("semi_axes", why);
 }
 
 void ParseCoating(const nlohmann::json& j, const std::string& path, const std::string& file,
@@ -193,8 +198,10 @@ bool LoadWorkflowFile(const std::string& path, WorkflowFile* out, std::string* e
   out->measurements = Resolve(path, out->measurements);
   f.String("synthetic_measurements", &out->synthetic_measurements, kOptional);
   out->synthetic_measurements = Resolve(path, out->synthetic_measurements);
+  // From the floor that keeps χ² finite (limits::kMinUncertaintyFraction) to 20 deg: a repose
+  // angle that scatters more is not a repeatable measurement.
   f.Number("angle_uncertainty_deg", &out->angle_uncertainty_deg, kRequired,
-           Range::LeftOpen(0, 20, "deg"));
+           Range::Closed(calibrate::FindObservable("angle_deg")->MinUncertainty(), 20, "deg"));
   f.String("angle_uncertainty_note", &out->angle_uncertainty_note, kRequired);
   int64_t replicates = out->replicates;
   f.Integer("replicates", &replicates, kOptional, Range::Of(limits::kWorkflowReplicates));

@@ -17,6 +17,7 @@
 #include "core/checkpoint/checkpoint_file.h"
 #include "core/checkpoint/checkpoint_scene.h"
 #include "core/simulation/simulation.h"
+#include "core/walls/wall_test_support.h"
 
 using namespace demcal::core;
 
@@ -72,10 +73,12 @@ std::string Payload(const std::string& file) { return file.substr(kCheckpointHea
 // starts, after the length of a vector).
 class Layout {
  public:
-  enum Item { kTime, kSteps, kPosition, kRadius = kPosition + 5, kSpecies = kRadius + 4,
-              kMaterial, kBody, kId, kClumpPosition, kMemberSlot = kClumpPosition + 10,
-              kRowStart = kClumpPosition + 12, kPartner, kReverseStart, kReverseEntry,
-              kReference, kPairHistory, kPairActive, kWallStart, kWallIndex };
+  enum Item { kTime, kSteps, kPosition, kRadius = kPosition + 5, kMass, kInvMass, kInvInertia,
+              kSpecies, kMaterial, kBody, kId, kClumpPosition,
+              kClumpInertia = kClumpPosition + 3, kClumpMass,
+              kMemberSlot = kClumpPosition + 10, kRowStart = kClumpPosition + 12, kPartner,
+              kReverseStart, kReverseEntry, kReference, kPairHistory, kPairActive, kWallStart,
+              kWallIndex, kWallHistory, kWallActive, kMeshSlots, kMeshHistory };
 
   explicit Layout(const std::string& payload) : p_(payload) {
     const uint64_t parts = U64(0);
@@ -98,7 +101,12 @@ class Layout {
     end_ += 8 + 8 + 4;                                     // half skin², builds, first fixed
     Vector(sizeof(ContactHistory)), Vector(1);             // pair histories, flags
     Vector(4), Vector(4);                                  // wall candidate rows, wall index
+    Vector(sizeof(ContactHistory)), Vector(1), Vector(4);  // wall histories, flags, mesh slots
+    Vector(kMeshHistoryBytes);                             // mesh histories
   }
+  // WallContacts::MeshHistory: kMaxMeshContacts slots of (key, history), then count and padding.
+  static constexpr size_t kMeshSlotBytes = 8 + sizeof(ContactHistory);
+  static constexpr size_t kMeshHistoryBytes = WallContacts::kMaxMeshContacts * kMeshSlotBytes + 8;
   size_t At(Item k) const { return start_.at(k); }
   uint64_t Count(Item k) const { return U64(start_.at(k) - 8); }
 
@@ -125,6 +133,29 @@ template <class T>
 std::string Edited(std::string payload, size_t offset, T value) {
   std::memcpy(payload.data() + offset, &value, sizeof(T));
   return FrameCheckpoint(payload);
+}
+
+template <class T>
+T Read(const std::string& payload, size_t offset) {
+  T value;
+  std::memcpy(&value, payload.data() + offset, sizeof(T));
+  return value;
+}
+
+// The checkpoint after `seconds` of `scene`.
+std::string CheckpointOf(const Scene& scene, double seconds) {
+  const std::string path = (std::filesystem::temp_directory_path() /
+                            ("demcal_integrity_physics_" + std::to_string(::getpid()) + ".bin"))
+                               .string();
+  std::string err;
+  Simulation sim(scene, {.threads = 1});
+  REQUIRE(sim.Initialize(&err));
+  REQUIRE(sim.Run(seconds).ok());
+  REQUIRE(sim.SaveCheckpoint(path, &err));
+  std::ifstream in(path, std::ios::binary);
+  std::string b((std::istreambuf_iterator<char>(in)), {});
+  std::filesystem::remove(path);
+  return b;
 }
 
 }  // namespace
@@ -260,4 +291,96 @@ TEST_CASE("random edits behind a valid checksum never crash the loader or the ru
   // Most flips land in histories and positions whose damage is only caught when not finite or
   // out of range; what matters is that none crashed. Some must have been refused.
   CHECK(refused > 10);
+}
+
+TEST_CASE("edits that break the physics of the state are refused naming the check",
+          "[unit][checkpoint]") {
+  const std::string payload = Payload(Reference());
+  const Layout at(payload);
+  size_t free = 0;  // the first sphere that is not a clump member
+  while (Read<int>(payload, at.At(Layout::kBody) + 4 * free) >= 0) ++free;
+  REQUIRE(free < at.Count(Layout::kBody));
+  const std::string sphere = "particles: slot " + std::to_string(free) + " (id ";
+  const size_t mass = at.At(Layout::kMass) + 8 * free;
+  // 1e-9 relative: far above round-off (1e-12), far below anything a run could tell apart.
+  const std::string edited_mass = Edited(payload, mass, Read<double>(payload, mass) * (1 + 1e-9));
+  CHECK_THAT(Load(edited_mass), Catch::Contains(sphere));
+  CHECK_THAT(Load(edited_mass), Catch::Contains("mass or inertia edited without the radius?"));
+  const size_t inertia = at.At(Layout::kInvInertia) + 8 * free;
+  CHECK_THAT(Load(Edited(payload, inertia, Read<double>(payload, inertia) * 2)),
+             Catch::Contains("is not that of a sphere of radius"));
+  const size_t inv_mass = at.At(Layout::kInvMass) + 8 * free;
+  CHECK_THAT(Load(Edited(payload, inv_mass, Read<double>(payload, inv_mass) * 0.5)),
+             Catch::Contains("is not that of a sphere of radius"));
+  // The first clump: its mass, its inertia, and its centre moved 0.1 mm from its spheres.
+  REQUIRE(at.Count(Layout::kClumpMass) > 0);
+  const size_t clump_mass = at.At(Layout::kClumpMass);
+  CHECK_THAT(Load(Edited(payload, clump_mass, Read<double>(payload, clump_mass) * 1.01)),
+             Catch::Contains("clumps: clump 0 (id "));
+  const size_t clump_inertia = at.At(Layout::kClumpInertia) + 8;  // I2
+  CHECK_THAT(Load(Edited(payload, clump_inertia, Read<double>(payload, clump_inertia) * 1.5)),
+             Catch::Contains("or inertia is not that of its shape"));
+  size_t member = 0;  // the first clump member sphere
+  while (Read<int>(payload, at.At(Layout::kBody) + 4 * member) < 0) ++member;
+  const size_t member_mass = at.At(Layout::kMass) + 8 * member;
+  CHECK_THAT(Load(Edited(payload, member_mass, Read<double>(payload, member_mass) * 1.01)),
+             Catch::Contains("a clump member whose mass is not its clump's"));
+  const size_t centre = at.At(Layout::kClumpPosition);
+  CHECK_THAT(Load(Edited(payload, centre, Read<double>(payload, centre) + 1e-4)),
+             Catch::Contains("from where its shape puts it about the clump centre"));
+  // An energy budget of 1e308 would switch the blow-up check off; so would a scale of 1e308.
+  const size_t budget = at.At(Layout::kSteps) + 16, scale = budget + 8;
+  CHECK_THAT(Load(Edited(payload, budget, 1e308)),
+             Catch::Contains("checkpoint: energy budget 1e+308 J is"));
+  CHECK_THAT(Load(Edited(payload, scale, 1e308)),
+             Catch::Contains("checkpoint: energy scale 1e+308 J exceeds what the scene's"));
+  // The factory's inserted bodies and mass (the 3rd and 4th of its 8 progress values, before
+  // the last sink pass step): one body more than exist, or a mass its bodies cannot have.
+  const size_t particles = payload.size() - 8 - 64 + 16;
+  CHECK_THAT(Load(Edited(payload, particles, Read<int64_t>(payload, particles) + 1)),
+             Catch::Contains("checkpoint: counters: "));
+  CHECK_THAT(Load(Edited(payload, particles + 8, Read<double>(payload, particles + 8) * 3)),
+             Catch::Contains("factories[0] 'feed': "));
+}
+
+TEST_CASE("absurd sink counters are refused", "[unit][checkpoint]") {
+  Scene scene = PourScene();
+  scene.sinks = {SinkSpec::Box("floor", {0, 0, -0.01}, {0.03, 0.03, 0.004})};
+  const std::string payload = Payload(CheckpointOf(scene, 0.1));
+  CHECK(Load(FrameCheckpoint(payload), scene).empty());
+  // The reports of sink "floor" and of the domain (2 species each), then the last sink pass.
+  const size_t report = 8 + 2 * 8 + 8 + 2 * 8 + 8;
+  const size_t floor_count = payload.size() - 8 - 2 * report + 8;
+  const int64_t removed = Read<int64_t>(payload, floor_count);
+  REQUIRE(removed > 0);
+  CHECK_THAT(Load(Edited(payload, floor_count, removed + 1), scene),
+             Catch::Contains("checkpoint: counters: "));
+  CHECK_THAT(Load(Edited(payload, floor_count, int64_t{1} << 40), scene),
+             Catch::Contains("sink 'floor': 1099511627776 removed bodies of species 'balls'"));
+}
+
+TEST_CASE("a mesh history shared by two contacts or naming no feature is refused",
+          "[unit][checkpoint]") {
+  Scene scene = PourScene();
+  scene.walls = {wall_test::MeshBox("box", {0, 0, 0}, {0.03, 0.03, 0.1}, /*open_top=*/true)};
+  const std::string payload = Payload(CheckpointOf(scene, 0.1));
+  CHECK(Load(FrameCheckpoint(payload), scene).empty());
+  const Layout at(payload);
+  const size_t histories = at.Count(Layout::kMeshHistory);
+  size_t h = 0, base = 0;
+  for (; h < histories; ++h) {
+    base = at.At(Layout::kMeshHistory) + h * Layout::kMeshHistoryBytes;
+    if (Read<uint32_t>(payload, base + Layout::kMeshHistoryBytes - 8) >= 1) break;
+  }
+  REQUIRE(h < histories);
+  const uint64_t key = Read<uint64_t>(payload, base);
+  // A second contact with the first one's key: two histories for one mesh feature.
+  std::string shared = payload;
+  std::memcpy(shared.data() + base + Layout::kMeshSlotBytes, &key, 8);
+  const uint32_t two = 2;
+  std::memcpy(shared.data() + base + Layout::kMeshHistoryBytes - 8, &two, 4);
+  CHECK_THAT(Load(FrameCheckpoint(shared), scene),
+             Catch::Contains("contacts 0 and 1 share the key " + std::to_string(key)));
+  CHECK_THAT(Load(Edited(payload, base, uint64_t{999999}), scene),
+             Catch::Contains("has the key 999999, which names no face, edge or vertex"));
 }

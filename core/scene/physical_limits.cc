@@ -1,8 +1,8 @@
-#include "objectives/common/input_limits.h"
+#include "core/scene/physical_limits.h"
 
 #include <sstream>
 
-namespace demcal::objectives::limits {
+namespace demcal::core::limits {
 
 std::string Limit::Text() const {
   std::ostringstream os;  // default stream precision: 6 significant digits, as every message
@@ -10,4 +10,4 @@ std::string Limit::Text() const {
   return os.str();
 }
 
-}  // namespace demcal::objectives::limits
+}  // namespace demcal::core::limits
