@@ -71,6 +71,7 @@ void CheckRegionTravel(const Scene& s, size_t i, FieldChecker& c) {
 }  // namespace
 
 void CheckSceneMotion(const Scene& s, FieldChecker& c) {
+  if (s.time.force_timestep) return;  // the user insists on the step (physical_limits.h)
   StepScale k;
   k.dt_s = s.time.timestep_s > 0 ? s.time.timestep_s : s.time.rayleigh_fraction * RayleighTime(s);
   k.radius_m = 0.5 * s.MinDiameter();
