@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "diagnose/gap/gap_significance.h"
 #include "diagnose/loop/fit_state.h"
 
 namespace demcal::diagnose {
@@ -26,12 +27,20 @@ double Chi2(const std::vector<Observation>& observations, const Prediction& p,
 }  // namespace
 
 BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observations,
-                   double floor_factor, const std::function<void(const std::string&)>& progress) {
+                   double floor_factor, double significance,
+                   const std::function<void(const std::string&)>& progress) {
   BaseFit b;
   double previous = INFINITY;
   for (b.budget_scale = 1;; b.budget_scale *= 2) {
     b.base = model.CalibrateBase(b.budget_scale);
     if (!b.base.ok || b.base.settled) break;
+    // Within noise already: more budget could only lower χ² further, and "no missing effect"
+    // stands; the extension is for a gap an unsettled fit might have made itself.
+    const std::vector<Observation> here =
+        WithPrediction(observations, b.base.prediction, floor_factor);
+    if (b.base.prediction.ok &&
+        !TestGap(here, static_cast<int>(b.base.base_unit.size()), {significance}).gap_detected)
+      break;
     // Stagnation: twice the budget lowered the best χ² by less than 1 (one standard deviation
     // of a fitted parameter, the profile-likelihood unit): the search has settled where it is,
     // even if a noisy objective never meets the optimiser's own tolerance.
