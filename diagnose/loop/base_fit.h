@@ -35,8 +35,9 @@ inline constexpr int kMaxBaseBudgetScale = 4;
 
 struct BaseFit {
   BaseCalibration base;
-  int budget_scale = 1;    // the study's budget times this was used
-  bool stagnated = false;  // settled because twice the budget lowered χ² by less than 1
+  int budget_scale = 1;       // the study's budget times this was used
+  bool within_noise = false;  // not settled, not extended: no gap at this fit
+  bool stagnated = false;     // settled because twice the budget lowered χ² by less than 1
   calibrate::IdentifiabilityReport identifiability;
   std::string summary;  // in words: settled or not, with which budget, what is undetermined
 };
