@@ -4,6 +4,8 @@
 //  - chi² = Σ r_i² of the standardised residuals (observation.h) against a chi-square with
 //    dof = n − p degrees of freedom (p: parameters fitted to these n values). A gap exists when
 //    P(χ²_dof > chi²) < significance: the residuals are larger than noise at the stated level.
+//    With C numeric condition columns, also when the pooled residual trend along one of them has
+//    p < significance/(2C), the chi-square then at significance/2 (Bonferroni over both tests).
 //  - Where: the observations with |r_i| above the two-sided normal quantile at significance/n
 //    (Bonferroni over the n residuals, so a clean fit flags none with probability 1 − α), and
 //    chi² per observable (which kind of measurement carries the misfit).
@@ -36,16 +38,16 @@ struct ObservableChi2 {
 };
 
 struct GapReport {
-  int n = 0;                 // observations
+  int n = 0;  // observations
   int fitted_parameters = 0;
-  int dof = 0;               // n − p (at least 1)
+  int dof = 0;  // n − p (at least 1)
   double chi2 = 0;
   double chi2_per_dof = 0;
   double p_value = 1;        // P(χ²_dof > chi2)
   double critical_chi2 = 0;  // the chi2 at which p = significance
   bool gap_detected = false;
-  double outlier_threshold = 0;         // |r| above it is flagged
-  std::vector<int> outliers;            // indices into the observations
+  double outlier_threshold = 0;  // |r| above it is flagged
+  std::vector<int> outliers;     // indices into the observations
   std::vector<ObservableChi2> by_observable;
   std::vector<CovariateTrend> trends;
   std::string summary;  // one line in words

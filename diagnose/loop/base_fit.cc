@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "diagnose/gap/gap_significance.h"
 #include "diagnose/loop/fit_state.h"
 
 namespace demcal::diagnose {
@@ -26,12 +27,22 @@ double Chi2(const std::vector<Observation>& observations, const Prediction& p,
 }  // namespace
 
 BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observations,
-                   double floor_factor, const std::function<void(const std::string&)>& progress) {
+                   double floor_factor, double significance,
+                   const std::function<void(const std::string&)>& progress) {
   BaseFit b;
   double previous = INFINITY;
   for (b.budget_scale = 1;; b.budget_scale *= 2) {
     b.base = model.CalibrateBase(b.budget_scale);
     if (!b.base.ok || b.base.settled) break;
+    // Within noise already: more budget could only lower χ² further, and "no missing effect"
+    // stands; the extension is for a gap an unsettled fit might have made itself.
+    const std::vector<Observation> here =
+        WithPrediction(observations, b.base.prediction, floor_factor);
+    if (b.base.prediction.ok &&
+        !TestGap(here, static_cast<int>(b.base.base_unit.size()), {significance}).gap_detected) {
+      b.within_noise = true;
+      break;
+    }
     // Stagnation: twice the budget lowered the best χ² by less than 1 (one standard deviation
     // of a fitted parameter, the profile-likelihood unit): the search has settled where it is,
     // even if a noisy objective never meets the optimiser's own tolerance.
@@ -54,7 +65,9 @@ BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observat
     << (b.budget_scale > 1 ? " (" + std::to_string(b.budget_scale) + "x the study's budget)" : "");
   if (!b.base.ok) return b.summary = s.str(), b;
   if (b.stagnated) s << ": settled, twice the budget lowered chi2 by less than 1";
-  if (!b.base.settled) s << ": not settled by the calibration's own criterion";
+  if (!b.base.settled)
+    s << ": not settled by the calibration's own criterion"
+      << (b.within_noise ? ", but within noise there (more budget could only lower chi2)" : "");
   const std::vector<Observation> at = WithPrediction(observations, b.base.prediction, floor_factor);
   const int n = static_cast<int>(observations.size()),
             p = static_cast<int>(b.base.base_unit.size());

@@ -6,14 +6,16 @@
 // already made, so each extension costs only its new candidates. It also counts as settled when
 // twice the budget lowered the best χ² by less than 1 (stagnation: a noisy DEM objective may
 // never meet the optimiser's tolerance, yet more evaluations no longer move the fit by one
-// standard deviation of a fitted parameter). A fit that has not settled then
+// standard deviation of a fitted parameter). A base within noise (no gap at the significance) is
+// not extended: more budget could only lower its χ², and "no missing effect" stands. A fit that
+// has not settled then
 // is reported as such and no effect is ranked on it: an unsettled base leaves a gap the
 // calibration itself would have closed, and any effect "explains" it.
 // At the settled fit, the identifiability of the base parameters (calibrate/identifiability.h on
 // the standardised sensitivities): a combination the data leave undetermined is reported
 // before any effect is named, since an effect traded against it is not told apart from it.
 //
-//   BaseFit b = SettleBase(model, observations, 1.0, progress);
+//   BaseFit b = SettleBase(model, observations, 1.0, 0.01, progress);
 //   if (!b.base.settled) ...;  // DiagnosisTermination::kBaseUnsettled
 //
 // Thread-safety: runs on the calling thread; the model parallelises.
@@ -33,13 +35,15 @@ inline constexpr int kMaxBaseBudgetScale = 4;
 
 struct BaseFit {
   BaseCalibration base;
-  int budget_scale = 1;    // the study's budget times this was used
-  bool stagnated = false;  // settled because twice the budget lowered χ² by less than 1
+  int budget_scale = 1;       // the study's budget times this was used
+  bool within_noise = false;  // not settled, not extended: no gap at this fit
+  bool stagnated = false;     // settled because twice the budget lowered χ² by less than 1
   calibrate::IdentifiabilityReport identifiability;
   std::string summary;  // in words: settled or not, with which budget, what is undetermined
 };
 
 BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observations,
-                   double floor_factor, const std::function<void(const std::string&)>& progress);
+                   double floor_factor, double significance,
+                   const std::function<void(const std::string&)>& progress);
 
 }  // namespace demcal::diagnose

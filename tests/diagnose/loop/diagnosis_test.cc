@@ -82,6 +82,13 @@ TEST_CASE("an unsettled base calibration gets more budget, and nothing is ranked
   CHECK(d.steps.empty());
   CHECK(d.named.empty());
   CHECK(d.message.find("no effect ranked") != std::string::npos);
+  // An unsettled base already within noise is not extended: "no missing effect" stands.
+  AnalyticForwardModel within;
+  within.settle_at_scale = 1000;
+  obs = testing::MakeObservations(&within, 1.0, {}, 1);  // the truth where the search stopped
+  d = Diagnose(within, obs, testing::Candidates(), DiagnoseOptions{});
+  CHECK(within.base_scales == std::vector<int>{1});
+  CHECK(d.termination == DiagnosisTermination::kNoMissingEffect);
   // A search that gains nothing from twice the budget has settled where it is (stagnation).
   AnalyticForwardModel stalled;
   stalled.settle_at_scale = 1000;
