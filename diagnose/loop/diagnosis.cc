@@ -74,7 +74,7 @@ std::string FloorText(double phi) {
   return s.str();
 }
 
-// "jkr_adhesion or particle_shape (delta BIC -12.1 and -11.4, within 2)" from the last step.
+// "jkr_adhesion or particle_shape (delta BIC -12.1 and -11.4, within 6)" from the last step.
 std::string TieText(const Diagnosis& d, const std::vector<CandidateEffect>& candidates) {
   std::ostringstream s;
   s.precision(3);

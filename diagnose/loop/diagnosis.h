@@ -18,7 +18,7 @@
 //     The evidence carries the discrepancy floor estimated from the data (evidence.h) at α/K.
 //  5. The winner is added (its refitted point becomes the current fit, its signature a fitted
 //     direction), the gap tested again, and 3-5 repeated while a significant gap remains (at
-//     most max_effects). No winner: "model-form offset". Two within ΔBIC 2: "not told apart"
+//     most max_effects). No winner: "model-form offset". Two within ΔBIC 6: "not told apart"
 //     with the measurement that would separate them (separating_measurement.h). A control
 //     (a copy of a fitted parameter) first or level with the winner: "model-form offset / no
 //     missing effect", never the control.

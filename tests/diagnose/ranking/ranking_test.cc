@@ -38,7 +38,7 @@ TEST_CASE("ranking names the best simulated significant candidate and flags a ne
   CHECK(r.order.front() == 2);  // best ΔBIC, but only linearised: cannot win
   REQUIRE(r.winner == 1);
   CHECK(r.distinguished);
-  entries[0] = Entry("a", 50, 9, true);  // within 2 of b's ΔBIC
+  entries[0] = Entry("a", 50, 9, true);  // within kBicIndistinct of b's ΔBIC
   r = RankCandidates(entries);
   CHECK(r.winner == 1);
   CHECK_FALSE(r.distinguished);
@@ -61,7 +61,7 @@ TEST_CASE("ranking: a tie is named, and the control never wins", "[unit]") {
   CHECK(r.winner == -1);
   CHECK(r.control_first);
   CHECK(r.message.find("model-form offset") != std::string::npos);
-  // The control level with the winner (ΔBIC within 2): an effect no better than re-tuning a fitted
+  // The control level with the winner (ΔBIC within kBicIndistinct): an effect no better than re-tuning a fitted
   // parameter is not named either.
   entries = {Entry("a", 50, 10, true), Entry("control", 50, 11, true, true)};
   r = RankCandidates(entries);
