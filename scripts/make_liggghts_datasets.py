@@ -37,8 +37,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OUT = os.path.join(ROOT, "datasets", "liggghts_crossengine")
 LIGGGHTS = "/usr/bin/liggghts"
 VERSION = "LIGGGHTS-PUBLIC 3.8.0 (Debian liggghts package)"
-# The table reader knows measured/inferred/synthetic; `simulated:liggghts-3.8` once it accepts it.
-PROVENANCE = "synthetic"
+# Values made by another engine: the table reader's provenance for them (datasets/README.md).
+PROVENANCE = "simulated:liggghts-3.8"
 SEED_BASE, REPLICATES, NOISE_SEED = 100000, 4, 200
 COATINGS = [0.0, 1.5, 3.0]
 RIGS = {"slot": ("aor_bp_heap.json", "pseudo-2D heap"),

@@ -36,6 +36,14 @@ void Score(const std::string& name) {
   if (truth["hidden_effect"].is_null()) {
     CHECK(d["termination"] == "no_missing_effect");
     CHECK(d["named_effect"].is_null());
+  } else if (d["termination"] == "not_told_apart") {
+    // The acceptance rule: the right effect, or an honest "not told apart" whose pair
+    // holds it (with the measurement that would separate them); never a wrong effect alone.
+    CHECK(d["gap_detected"] == true);
+    bool holds_truth = false;
+    for (const auto& key : d["not_told_apart"]) holds_truth |= key == truth["hidden_effect"];
+    CHECK(holds_truth);
+    CHECK_FALSE(d["separating_measurement"].is_null());
   } else {
     CHECK(d["gap_detected"] == true);
     CHECK(d["named_effect"] == truth["hidden_effect"]);
