@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "calibrate/jacobian_svd.h"
+#include "core/math/number_text.h"
 
 namespace demcal::calibrate {
 namespace {
@@ -71,7 +72,7 @@ ParameterCovariance CovarianceFromJacobian(const Eigen::MatrixXd& jacobian,
                          : "J is rank-deficient (rank " + std::to_string(svd.rank) + " of " +
                                std::to_string(n) +
                                (noise_floor > 0 ? " above the noise floor " +
-                                                      std::to_string(noise_floor) +
+                                                      core::NumberText(noise_floor) +
                                                       " of its entries' standard errors"
                                                 : std::string()) +
                                "): parameters along the unresolved directions have no "

@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
+
+#include "core/math/number_text.h"
 
 namespace demcal::workflow {
 namespace {
@@ -47,11 +48,7 @@ bool ToInt64(const nlohmann::json& v, int64_t* out) {
 
 }  // namespace
 
-std::string FormatNumber(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
+std::string FormatNumber(double v) { return core::NumberText(v); }
 
 bool Range::Contains(double v) const {
   return std::isfinite(v) && (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);

@@ -124,6 +124,21 @@ void CheckWall(const Scene& s, size_t i, Checker& c) {
              message.substr(space) + " (" + ShapeName(w.shape) + " '" + w.name + "')");
     }
   }
+  // Finite is not enough for the round walls' sizes either (limits::kWallRadius, kCoordinate);
+  // an unbounded cylinder keeps its infinite axial ends.
+  if (const auto* cyl = std::get_if<CylinderSurface>(&w.shape); cyl && c.ok()) {
+    c.Within(f + ".radius_m", cyl->radius_m, limits::kWallRadius, "m");
+    if (std::isfinite(cyl->axial_min_m))
+      c.Within(f + ".axial_min_m", cyl->axial_min_m, limits::kCoordinate, "m");
+    if (std::isfinite(cyl->axial_max_m))
+      c.Within(f + ".axial_max_m", cyl->axial_max_m, limits::kCoordinate, "m");
+  }
+  if (const auto* cone = std::get_if<ConeFrustumSurface>(&w.shape); cone && c.ok()) {
+    c.Within(f + ".radius0_m", cone->radius0_m, limits::kWallRadius, "m");
+    c.Within(f + ".radius1_m", cone->radius1_m, limits::kWallRadius, "m");
+    c.Within(f + ".height0_m", cone->height0_m, limits::kCoordinate, "m");
+    c.Within(f + ".height1_m", cone->height1_m, limits::kCoordinate, "m");
+  }
   if (!c.ok()) return;
   const char* axes = "xyz";
   // docs/scene_format.md: no wall across a periodic axis (particles would wrap through it); a
@@ -344,6 +359,12 @@ bool Scene::IsValid(std::string* error) const {
   for (size_t i = 0; i < sinks.size() && c.ok(); ++i) {
     const std::string problem = SinkProblem(sinks[i]);
     if (!problem.empty()) c.Fail("field '" + Indexed("sinks", i) + problem);
+    if (sinks[i].shape == SinkSpec::Shape::kPlane) {
+      c.Point(Indexed("sinks", i) + ".point_m", sinks[i].point_m);
+    } else {
+      c.Point(Indexed("sinks", i) + ".min_m", sinks[i].min_m);
+      c.Point(Indexed("sinks", i) + ".max_m", sinks[i].max_m);
+    }
   }
   RollingModel model;
   if (c.ok() && !MakeRollingModel(rolling, &model))

@@ -12,6 +12,7 @@
 
 #include "core/contact/normal_model.h"
 #include "core/insertion/insertion.h"
+#include "core/math/number_text.h"
 #include "core/math/random.h"
 #include "core/math/seed_streams.h"
 
@@ -337,8 +338,8 @@ RunSummary Simulation::Run(double duration_s, const Observer& observer) {
         if (s.termination == Termination::kOk && scene_.max_wall_time_s > 0 &&
             elapsed() > scene_.max_wall_time_s) {
           s.termination = Termination::kWallTimeExceeded;
-          s.message = "wall-time budget of " + std::to_string(scene_.max_wall_time_s) +
-                      " s exceeded at t = " + std::to_string(time_s_) + " s";
+          s.message = "wall-time budget of " + NumberText(scene_.max_wall_time_s) +
+                      " s exceeded at t = " + NumberText(time_s_) + " s";
         }
         if (s.termination != Termination::kOk) break;
       }

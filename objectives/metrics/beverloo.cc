@@ -1,4 +1,5 @@
 #include "objectives/metrics/beverloo.h"
+#include "core/math/number_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -101,8 +102,9 @@ BeverlooFit FitBeverloo(const std::vector<BeverlooPoint>& points, double bulk_de
   // The search cannot reach D = k d itself; an open width below 1% of a grain there means the data
   // ask for a blocked smallest orifice.
   if (d_min - fit.k * particle_diameter_m < kMinOpenWidth * particle_diameter_m) {
-    fit.message = "the best k = " + std::to_string(fit.k) + " nearly closes the smallest orifice" +
-                  " (min D/d = " + std::to_string(k_limit) + "): the data ask for D <= k d";
+    fit.message = "the best k = " + core::NumberText(fit.k) +
+                  " nearly closes the smallest orifice (min D/d = " + core::NumberText(k_limit) +
+                  "): the data ask for D <= k d";
     return fit;
   }
   fit.ok = true;

@@ -162,4 +162,13 @@ TEST_CASE("sinks are validated", "[unit][sink]") {
   s.sinks = {SinkSpec::Box("bin", {0, 0, 0}, {1, -1, 1})};
   CHECK_FALSE(s.IsValid(&err));
   CHECK_THAT(err, Catch::Contains("sinks[0].max_m"));
+  // Finite is not enough: a point a galaxy away is a unit mistake (limits::kCoordinate).
+  s.sinks = {SinkSpec::Plane("below", {0, 0, -1e300}, {0, 0, -1})};
+  CHECK_FALSE(s.IsValid(&err));
+  CHECK_THAT(err, Catch::Contains("sinks[0].point_m[2]"));
+  s.sinks = {SinkSpec::Box("bin", {0, 0, 0}, {1, 1, 1e12})};
+  CHECK_FALSE(s.IsValid(&err));
+  CHECK_THAT(err, Catch::Contains("sinks[0].max_m[2]"));
+  s.sinks = {SinkSpec::Plane("below", {0, 0, -0.02}, {0, 0, -1})};
+  CHECK(s.IsValid(&err));
 }

@@ -134,3 +134,27 @@ TEST_CASE("clump semi-axes are refused outside the range the builder is meaningf
   ShapeApproximation shape;
   CHECK_FALSE(ApproximateEllipsoid({1e300, 1, 1e-300}, 3, &shape, &why));
 }
+
+TEST_CASE("round walls: radii, heights and finite axial ends within the table's limits",
+          "[unit]") {
+  Scene s = Beads();
+  CylinderSurface silo{{0.01, 0.01, 0}, {0, 0, 1}, 0.009};  // unbounded along its axis
+  s.walls.push_back(Wall("silo", 0, silo));
+  CHECK(ErrorOf(s).empty());
+  s.walls[1] = Wall("silo", 0, CylinderSurface{{0.01, 0.01, 0}, {0, 0, 1}, 1e300});
+  CHECK_THAT(ErrorOf(s), Catch::Contains("walls[1].radius_m"));
+  silo.axial_max_m = 1e300;
+  s.walls[1] = Wall("silo", 0, silo);
+  CHECK_THAT(ErrorOf(s), Catch::Contains("walls[1].axial_max_m"));
+  const ConeFrustumSurface funnel{{0.01, 0.01, 0.02}, {0, 0, 1}, 0, 0.003, 0.01, 0.009};
+  s.walls[1] = Wall("funnel", 0, funnel);
+  CHECK(ErrorOf(s).empty());
+  ConeFrustumSurface tall = funnel;
+  tall.height1_m = 1e300;
+  s.walls[1] = Wall("funnel", 0, tall);
+  CHECK_THAT(ErrorOf(s), Catch::Contains("walls[1].height1_m"));
+  ConeFrustumSurface wide = funnel;
+  wide.radius1_m = 1e300;
+  s.walls[1] = Wall("funnel", 0, wide);
+  CHECK_THAT(ErrorOf(s), Catch::Contains("walls[1].radius1_m"));
+}
