@@ -5,7 +5,7 @@
 #include <map>
 
 #include "files/scene_json_sections.h"
-#include "core/scene/physical_limits.h"
+#include "core/limits/physical_limits.h"
 #include "core/walls/walls.h"
 
 namespace demcal::workflow::internal {

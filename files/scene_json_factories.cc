@@ -3,7 +3,7 @@
 
 #include "files/scene_json_sections.h"
 #include "core/insertion/factory.h"
-#include "core/scene/physical_limits.h"
+#include "core/limits/physical_limits.h"
 
 namespace demcal::workflow::internal {
 

@@ -29,11 +29,6 @@ std::string Gibibytes(double bytes) {
 
 }  // namespace
 
-double EffectiveTimestep(const core::Scene& scene) {
-  return scene.time.timestep_s > 0 ? scene.time.timestep_s
-                                   : scene.time.rayleigh_fraction * core::RayleighTime(scene);
-}
-
 double EstimatedSpheres(const core::Scene& scene) {
   double spheres = 0;
   for (const core::ParticleSpec& p : scene.particles)
@@ -57,7 +52,7 @@ double EstimatedSpheres(const core::Scene& scene) {
 bool CheckSceneLimits(const SceneFile& file, std::string* error, double memory_bytes) {
   const core::Scene& scene = file.scene;
   std::ostringstream os;
-  const double dt = EffectiveTimestep(scene);
+  const double dt = core::TimeStep(scene);
   const double steps = scene.time.duration_s / dt;
   if (!(dt > 0) || !std::isfinite(steps) || steps > kMaxStepsPerRun) {
     os << "field 'time.duration_s' = " << scene.time.duration_s << " s is " << steps

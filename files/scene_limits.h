@@ -19,13 +19,10 @@ namespace demcal::workflow {
 inline constexpr double kMaxStepsPerRun = 1e9;
 // 10^5 VTK snapshots per run: 10^5 files in one folder is already beyond ParaView's comfort.
 inline constexpr double kMaxSnapshotsPerRun = 1e5;
-// Memory budgeted per sphere (state, neighbour pairs with contact history, cells, output
-// buffers), a generous upper estimate (not a measurement): a refusal is only for scenes far beyond the machine.
-inline constexpr double kBytesPerSphere = 1024;
-
-// The time step a scene will run with (time.timestep_s, or the Rayleigh fraction of the
-// Rayleigh time), as core::Simulation computes it.
-double EffectiveTimestep(const core::Scene& scene);
+// Memory budgeted per sphere: the measured peak resident set of a dense bed (2,356 B/sphere,
+// `demcal_bench memory`, docs/performance.md) rounded up; looser packs and clumps need less. A
+// budget below the measurement would pass scenes that then run out of memory mid-run.
+inline constexpr double kBytesPerSphere = 2400;
 
 // An upper estimate of the spheres the scene holds at its end (listed, filled and inserted by
 // factories over the run; clumps count their member spheres).

@@ -6,7 +6,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "core/scene/physical_limits.h"
+#include "core/limits/physical_limits.h"
 
 namespace demcal::core {
 namespace {

@@ -49,7 +49,7 @@ struct ShapeApproximation {
 inline constexpr int kMaxEllipsoidSpheres = 5;
 
 // Whether semi-axes [a, b, c] are ones the builder is meaningful for: a >= b >= c, each within
-// limits::kClumpLength and a/c within limits::kClumpAspectRatio (core/scene/physical_limits.h,
+// limits::kClumpLength and a/c within limits::kClumpAspectRatio (core/limits/physical_limits.h,
 // with the reasons). False with the problem in *error ("must be ...", "... is outside ...").
 bool CheckEllipsoidSemiAxes(const Vec3& semi_axes, std::string* error);
 

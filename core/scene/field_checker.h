@@ -8,7 +8,7 @@
 #include <string>
 
 #include "core/math/vec3.h"
-#include "core/scene/physical_limits.h"
+#include "core/limits/physical_limits.h"
 
 namespace demcal::core {
 
@@ -43,7 +43,7 @@ class FieldChecker {
   void Positive(const std::string& field, double v, const std::string& unit) {
     Range(field, v, 0, kInf, true, true, unit);
   }
-  // A limit of the table (core/scene/physical_limits.h).
+  // A limit of the table (core/limits/physical_limits.h).
   void Within(const std::string& field, double v, const limits::Limit& l,
               const std::string& unit = "") {
     Range(field, v, l.lo, l.hi, l.lo_open, l.hi_open, unit);

@@ -76,4 +76,9 @@ double RayleighTime(const Scene& scene) {
   return t;
 }
 
+double TimeStep(const Scene& scene) {
+  return scene.time.timestep_s > 0 ? scene.time.timestep_s
+                                   : scene.time.rayleigh_fraction * RayleighTime(scene);
+}
+
 }  // namespace demcal::core

@@ -87,6 +87,10 @@ struct Scene {
 // Δt_R = π R sqrt(ρ/G) / (0.1631 ν + 0.8766), minimised over species.
 double RayleighTime(const Scene& scene);
 
+// The time step a run of the scene takes: time.timestep_s if set, else time.rayleigh_fraction ×
+// RayleighTime (s).
+double TimeStep(const Scene& scene);
+
 // Largest separation a contact of the scene's normal law (SelectNormalModel) survives, over all
 // material pairs, for the scene's largest spheres (m); 0 without adhesion.
 double MaxAdhesiveBreakGap(const Scene& scene);

@@ -1,6 +1,6 @@
 // Derived motion checks of Scene::IsValid: each speed may be inside kSpeed while the scene makes
 // no sense with it, because what matters is how far a body travels in one time step
-// (kMaxStepTravelRadii, core/scene/physical_limits.h), and whether a moving factory region
+// (kMaxStepTravelRadii, core/limits/physical_limits.h), and whether a moving factory region
 // stays where particles can be inserted.
 #include <algorithm>
 #include <cmath>
@@ -73,7 +73,7 @@ void CheckRegionTravel(const Scene& s, size_t i, FieldChecker& c) {
 void CheckSceneMotion(const Scene& s, FieldChecker& c) {
   if (s.time.force_timestep) return;  // the user insists on the step (physical_limits.h)
   StepScale k;
-  k.dt_s = s.time.timestep_s > 0 ? s.time.timestep_s : s.time.rayleigh_fraction * RayleighTime(s);
+  k.dt_s = TimeStep(s);
   k.radius_m = 0.5 * s.MinDiameter();
   if (!(k.dt_s > 0) || !std::isfinite(k.dt_s) || !(k.radius_m > 0) || !std::isfinite(k.radius_m))
     return;  // no particle species: nothing moves

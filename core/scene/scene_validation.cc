@@ -8,7 +8,7 @@
 
 #include "core/contact/jkr.h"
 #include "core/scene/field_checker.h"
-#include "core/scene/physical_limits.h"
+#include "core/limits/physical_limits.h"
 #include "core/scene/scene.h"
 #include "core/scene/scene_overlaps.h"
 #include "core/walls/triangle_mesh.h"

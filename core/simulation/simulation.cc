@@ -58,8 +58,7 @@ bool Simulation::Initialize(std::string* error) {
   table_ = InteractionTable(scene_.materials, scene_.pair_parameters);
   MakeRollingModel(scene_.rolling, &rolling_);
   MakeNormalModel(scene_.pair_parameters, scene_.rolling, &normal_);
-  dt_ = scene_.time.timestep_s > 0 ? scene_.time.timestep_s
-                                   : scene_.time.rayleigh_fraction * RayleighTime(scene_);
+  dt_ = TimeStep(scene_);
   if (!system_.SetSpecies(scene_.species, error)) return false;
   std::string placement_error;
   PlaceInitialParticles(&placement_error);

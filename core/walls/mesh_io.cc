@@ -11,7 +11,7 @@
 #include <cstdio>
 #include <limits>
 
-#include "core/scene/physical_limits.h"
+#include "core/limits/physical_limits.h"
 #include "core/walls/stl_ascii_parser.h"
 
 namespace demcal::core {

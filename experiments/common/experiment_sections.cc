@@ -1,6 +1,6 @@
 #include "experiments/common/experiment_sections.h"
 
-#include "core/scene/physical_limits.h"
+#include "core/limits/physical_limits.h"
 #include "files/scene_json_sections.h"
 
 #include <cmath>

@@ -9,12 +9,12 @@
 //   if (!limits::kSizeScale.Contains(x))
 //     error = "size_scale = ... is outside the allowed range " + limits::kSizeScale.Text();
 #include "core/bodies/clump_shapes.h"
-#include "core/scene/physical_limits.h"
+#include "core/limits/physical_limits.h"
 
 namespace demcal::objectives::limits {
 
 // The interval type and the scene's physical ranges live in the core (Scene::IsValid uses them):
-// core/scene/physical_limits.h. They are part of this table.
+// core/limits/physical_limits.h. They are part of this table.
 using core::limits::Closed;
 using core::limits::LeftOpen;
 using core::limits::Limit;

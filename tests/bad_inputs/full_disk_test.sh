@@ -9,20 +9,10 @@ demcal=$1
 files=$2
 work=$(mktemp -d "${TMPDIR:-/tmp}/demcal_full_disk.XXXXXX")
 trap 'rm -rf "$work"' EXIT
-fail=0
-# expect NAME FRAGMENT -- demcal arguments: exit 4 within 60 s, the fragment in the output.
-expect() {
-  local name=$1 fragment=$2
-  shift 3
-  # The output goes through a pipe: a file would be held to the limit too.
-  local output rc
-  output=$( (trap '' XFSZ; ulimit -f 0; exec timeout 60 "$demcal" "$@") 2>&1 </dev/null)
-  rc=$?
-  echo "[$name] demcal $* -> exit $rc"
-  echo "$output"
-  [[ $rc == 4 ]] || { echo "FAIL [$name]: exit $rc, expected 4"; fail=1; }
-  grep -qF -- "$fragment" <<<"$output" || { echo "FAIL [$name]: missing: $fragment"; fail=1; }
-}
+source "$(dirname "$0")/expect.sh"
+# The file size limit holds only demcal's writes; its output goes through expect_exit's pipe.
+launch() { (trap '' XFSZ; ulimit -f 0; exec timeout 60 "$demcal" "$@"); }
+expect() { expect_exit 4 "$@"; }
 
 expect calibrate_header "$work/calibrate/journal.jsonl: cannot write: File too large" -- \
   calibrate "$files/diagnose_study.json" --out "$work/calibrate" --max-evaluations 1 --quiet

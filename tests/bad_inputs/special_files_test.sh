@@ -10,19 +10,8 @@ files=$2
 root="$(cd "$files/../../.." && pwd)"
 work=$(mktemp -d "${TMPDIR:-/tmp}/demcal_special.XXXXXX")
 trap 'rm -rf "$work"' EXIT
-fail=0
-# expect NAME FRAGMENT -- demcal arguments: exit 2 within 60 s, the fragment in the output.
-expect() {
-  local name=$1 fragment=$2
-  shift 3
-  timeout 60 "$demcal" "$@" >"$work/$name.out" 2>&1 </dev/null
-  local rc=$?
-  echo "[$name] demcal $* -> exit $rc"
-  cat "$work/$name.out"
-  if ((rc == 124)); then echo "FAIL [$name]: hung (killed after 60 s)"; fail=1; return; fi
-  [[ $rc == 2 ]] || { echo "FAIL [$name]: exit $rc, expected 2"; fail=1; }
-  grep -qF -- "$fragment" "$work/$name.out" || { echo "FAIL [$name]: missing: $fragment"; fail=1; }
-}
+source "$(dirname "$0")/expect.sh"
+expect() { expect_exit 2 "$@"; }
 link_message="is a symbolic link; demcal does not follow links for its lock/journal files"
 
 # A lock file linked to a user's file: refused, the file keeps its bytes.

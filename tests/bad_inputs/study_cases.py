@@ -52,20 +52,17 @@ def add(case):
     study_case("study_bounds_after_curve", CURVE, restitution_after_curve,
                "parameters[1].min/max: need min < max within [0, 1] (got [0.1, 2])")
 
-    def curve_and_global(s):
+    def add_global_gamma(s):
         s["parameters"].append({"name": "gamma_BP", "property": "interfacial_energy_J_m2",
                                 "materials": ["BP", "BP"], "min": 0, "max": 0.04})
-    study_case("study_curve_and_global", CURVE, curve_and_global,
+    study_case("study_curve_and_global", CURVE, add_global_gamma,
                "field 'parameters[1]' sets the pair property that the curve 'gamma_BP_BP' "
                "(parameters[0].curve) overwrites for every target, so it would never act")
     study_case("study_when_no_target", LEVELS,
                lambda s: s["parameters"][2]["when"].update(coating_PEG_wt_pct=7),
                "field 'parameters[2].when' (coating_PEG_wt_pct=7) is the condition of no target")
 
-    def when_then_global(s):
-        s["parameters"].append({"name": "gamma_BP", "property": "interfacial_energy_J_m2",
-                                "materials": ["BP", "BP"], "min": 0, "max": 0.04})
-    study_case("study_when_then_global", LEVELS, when_then_global,
+    study_case("study_when_then_global", LEVELS, add_global_gamma,
                "field 'parameters[0]' sets the pair property that 'gamma_BP' (parameters[3]) sets "
                "again wherever this one applies")
     def bounds_apart(s):

@@ -137,8 +137,7 @@ bool LiggghtsDeck(const ExportRun& run, const ExportOptions& options,
              "only where they leave the domain)";
     return false;
   }
-  const double dt =
-      s.time.timestep_s > 0 ? s.time.timestep_s : s.time.rayleigh_fraction * core::RayleighTime(s);
+  const double dt = core::TimeStep(s);
   LiggghtsWallSet walls;
   calibrate::LiggghtsLaw law;
   LiggghtsParticles particles;

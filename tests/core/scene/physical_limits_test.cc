@@ -1,4 +1,4 @@
-// Scene::IsValid against the physical limits (core/scene/physical_limits.h): magnitudes that are
+// Scene::IsValid against the physical limits (core/limits/physical_limits.h): magnitudes that are
 // finite but absurd are refused naming the field and the range, and the derived motion checks
 // refuse a speed that carries a body further than the smallest radius in one time step, with
 // the boundary computed from the Rayleigh time step, not assumed.
@@ -8,7 +8,7 @@
 #include <string>
 
 #include "core/bodies/clump_shapes.h"
-#include "core/scene/physical_limits.h"
+#include "core/limits/physical_limits.h"
 #include "core/scene/scene.h"
 
 using namespace demcal::core;

@@ -1,4 +1,4 @@
-#include "core/scene/physical_limits.h"
+#include "core/limits/physical_limits.h"
 
 #include <sstream>
 
