@@ -193,8 +193,11 @@ bool RunSegregationStage(ReproduceContext& ctx, nlohmann::json* result, std::str
       metrics = {{"error", why}};
     return metrics;
   };
-  auto finish = [&](size_t j, const nlohmann::json& metrics) {  // journals it, then the progress
+  auto finish = [&](size_t j, nlohmann::json metrics) {  // journals it, then the progress
     std::string why = metrics.value("error", "");
+    // The batch's start on this rank's clock, as for calibrate's records (a worker that ran the
+    // replicate stamped its own).
+    if (metrics.contains("run")) metrics["run"]["batch_unix_s"] = batch_unix_s;
     if (why.empty()) ctx.journal->Record(key(j), metrics, &why);
     std::lock_guard lock(mutex);
     if (!why.empty() && first_error.empty()) first_error = why;
