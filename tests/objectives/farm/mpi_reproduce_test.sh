@@ -3,7 +3,8 @@
 # seconds per run (tiny_reproduce/: one species, one coating level, a few-gram segregation heap
 # in 3 scenarios x 2 replicates, a 2-replicate fidelity check), run with --threads 2 and under
 # `mpirun --oversubscribe -np 3`; summary.json, the stage journal and every stage's result must be
-# equal apart from wall times, hosts, ranks and the output folder's name, and only rank 0 writes.
+# equal apart from wall times, hosts, ranks and the output folder's name; a run resumed under
+# mpirun after a kill in the segregation stage reads the finished heaps back.
 # Usage: mpi_reproduce_test.sh DEMCAL REPO_ROOT
 set -euo pipefail
 demcal=$1 root=$2
@@ -65,3 +66,28 @@ stats=$("$demcal" journal-stats "$work/mpi")
 for rank in 1 2; do
   grep -q "^rank $rank on " <<< "$stats" || { echo "journal-stats: no runs of rank $rank"; exit 1; }
 done
+
+# Resumed under mpirun as a kill during the segregation stage leaves it (the excessive scenario's
+# runs, the last two stages' records gone, a last line cut short): every rank reads the same 4
+# finished heaps back, only the 2 missing run, and the summary is the same.
+python3 - "$work/mpi/stages.jsonl" <<'PY'
+import sys
+lines = open(sys.argv[1]).read().splitlines(True)
+keep = [l for l in lines if not any(k in l for k in
+        ('"key":"segregation"', '"key":"fidelity_check"', '"key":"segregation/excessive'))]
+open(sys.argv[1], "w").write("".join(keep) + '{"key":"segregation/exc')
+PY
+mpirun --oversubscribe -np 3 "$demcal" reproduce "$workflow" --quick --out "$work/mpi" \
+  2> "$work/resume.log" || { echo "resumed run failed:"; cat "$work/resume.log"; exit 1; }
+grep -q "3 scenarios x 2 replicates, 4 from the journal" "$work/resume.log" || {
+  echo "the resumed run did not read the journal:"; cat "$work/resume.log"; exit 1; }
+python3 - "$work/local" "$work/mpi" <<'PY'
+import json, sys
+def summary(root):
+    s = json.loads(open(f"{root}/summary.json").read().replace(root, "OUT"))
+    for k in ("stage_wall_time_s", "total_wall_time_s_this_run"):
+        s.pop(k)
+    return s
+assert summary(sys.argv[1]) == summary(sys.argv[2]), "resumed summary.json differs"
+print("resumed under mpirun: 4 heaps from the journal, summary.json the local run's")
+PY
