@@ -2,10 +2,13 @@
 
 #include <iostream>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "apps/cli_checks.h"
 #include "outputs/exit_codes.h"
 #include "workflow/journal_stats/journal_stats.h"
+#include "workflow/journal_stats/wall_time_model.h"
 
 namespace demcal::apps {
 
@@ -13,6 +16,7 @@ Command AddJournalStatsCommand(CLI::App& parent) {
   struct Options {
     std::string dir;
     bool json = false;
+    std::vector<int> model_ranks;
   };
   auto o = std::make_shared<Options>();
   CLI::App* app = parent.add_subcommand(
@@ -22,6 +26,11 @@ Command AddJournalStatsCommand(CLI::App& parent) {
       ->required()
       ->check(NonEmpty());
   app->add_flag("--json", o->json, "print JSON (demcal-journal-stats/1) instead of lines");
+  app->add_option("--model-ranks", o->model_ranks,
+                  "also predict the wall span at these rank counts from the measured run times "
+                  "(e.g. 8,64,512; docs/scale.md)")
+      ->delimiter(',')
+      ->check(CLI::Range(1, 1 << 20));
   return {app, [o] {
             workflow::JournalStats stats;
             std::string error;
@@ -29,8 +38,21 @@ Command AddJournalStatsCommand(CLI::App& parent) {
               std::cerr << "error: " << error << "\n";
               return workflow::kExitInvalidInput;
             }
-            if (o->json) std::cout << workflow::JournalStatsJson(stats).dump(2) << "\n";
-            else std::cout << workflow::JournalStatsText(stats);
+            nlohmann::ordered_json json = workflow::JournalStatsJson(stats);
+            std::string text = workflow::JournalStatsText(stats);
+            if (!o->model_ranks.empty()) {
+              std::vector<workflow::JournalRun> runs;
+              int journals = 0;
+              if (!workflow::ReadJournalRuns(o->dir, &runs, &journals, &error)) {
+                std::cerr << "error: " << error << "\n";
+                return workflow::kExitInvalidInput;
+              }
+              const workflow::WallTimeModel model = workflow::ModelWallTime(runs, o->model_ranks);
+              json["wall_time_model"] = workflow::WallTimeModelJson(model);
+              text += workflow::WallTimeModelText(model);
+            }
+            if (o->json) std::cout << json.dump(2) << "\n";
+            else std::cout << text;
             return workflow::kExitOk;
           }};
 }

@@ -35,7 +35,9 @@ constexpr demcal::apps::CommandFactory kCommands[] = {
 
 // The commands whose runs are farmed over the ranks of an MPI job (objectives/farm/farm.h); the
 // others would have every rank write the same outputs.
-bool Farmable(const std::string& name) { return name == "calibrate" || name == "diagnose"; }
+bool Farmable(const std::string& name) {
+  return name == "calibrate" || name == "diagnose" || name == "reproduce";
+}
 
 int RunCommandLine(int argc, char** argv) {
   using namespace demcal::apps;

@@ -25,7 +25,8 @@ Command AddReproduceCommand(CLI::App& parent) {
       ->required()
       ->check(NonEmpty());
   app->add_flag("--quick", options->quick, "run every experiment at its quick fidelity");
-  app->add_option("--threads", options->threads, "runs side by side on this many cores (0: all)")
+  app->add_option("--threads", options->threads,
+                  "runs side by side on this many cores (0: all; under mpirun: per rank, 0: 1)")
       ->check(CliRange<int>(limits::kThreads));
   app->add_flag("--quiet", options->quiet, "fewer progress lines on stderr");
   return {app, [options] { return RunReproduce(*options, std::cerr); }};

@@ -68,7 +68,9 @@ struct Options {
   // Runs side by side: in this process (0: all cores), or per worker rank (0: 1, one rank per
   // core being mpirun's default layout).
   int threads = 0;
-  double run_time_limit_s = 0;  // farmed: copy a run to another rank after this (0: 4 × median)
+  // Farmed: copy a run to another rank after this (0: 4 × the median; infinity: never, for runs
+  // that write a folder of their own, which a copy would write too).
+  double run_time_limit_s = 0;
 };
 
 // Runs every task once and returns when each has its result on this rank. done(t) is called on
@@ -79,5 +81,11 @@ void RunBatch(const Job& job, const Options& options);
 // Farmed: the manager waits here until every rank has reached this point with the same
 // fingerprint (e.g. after reading the journal, before the manager appends to it); workers go on.
 void Rendezvous(uint64_t fingerprint);
+
+// Farmed: the manager's `bytes` replace every worker's, and a worker waits here until they come,
+// so a worker passes this point only after the manager has (e.g. after the manager has written a
+// file every rank reads next, or decided something the workers must follow). A worker whose
+// manager ended the job before this point exits with the manager's code. The manager goes on.
+void Share(std::string* bytes);
 
 }  // namespace demcal::objectives::farm

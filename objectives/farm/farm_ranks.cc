@@ -23,7 +23,7 @@ using wire::Writer;
 struct JobState {
   int rank = 0, size = 1;
   bool active = false, finished = false;
-  uint64_t batch = 0, rendezvous = 0;  // the last started, counted alike on every rank
+  uint64_t batch = 0, rendezvous = 0, share = 0;  // the last started, counted alike on every rank
 };
 JobState& State() {
   static JobState state;
@@ -73,9 +73,9 @@ void TakeReady(const Message& m) {
 
 // A message that has no place at this point of the program.
 [[noreturn]] void Unexpected(const Message& m, const std::string& where) {
-  static const char* const kNames[] = {"?",    "ready", "task",     "result",
-                                       "batch end", "stop", "finished", "rendezvous"};
-  const char* name = m.tag >= 1 && m.tag <= wire::kRendezvous ? kNames[m.tag] : "?";
+  static const char* const kNames[] = {"?",        "ready",      "task",  "result", "batch end",
+                                       "stop",     "finished",   "rendezvous", "share"};
+  const char* name = m.tag >= 1 && m.tag <= wire::kShare ? kNames[m.tag] : "?";
   wire::Abort(Text("rank %llu got '", State().rank) + name +
               Text("' from rank %llu ", m.source) + where +
               " (the ranks no longer run the same program; run without mpirun to see a "
@@ -291,7 +291,18 @@ void Rendezvous(uint64_t fingerprint) {
     wire::Send(0, wire::kRendezvous, Writer().U64(id).U64(fingerprint).Take());
     return;
   }
-  for (int arrived = 1; arrived < Size();) {
+  // A worker goes on after sending, so it may send the next rendezvous before the manager has
+  // heard every rank at this one: those wait here for their turn.
+  static std::multimap<uint64_t, std::pair<int, uint64_t>> early;  // id -> rank, fingerprint
+  auto check = [&](int rank, uint64_t got) {
+    if (got != fingerprint)
+      wire::Abort(Text("rank %llu read other data than rank 0 (rendezvous %llu); every rank "
+                       "must see the same files", rank, id));
+  };
+  int arrived = 1;
+  for (auto [it, end] = early.equal_range(id); it != end; it = early.erase(it), ++arrived)
+    check(it->second.first, it->second.second);
+  while (arrived < Size()) {
     const Message m = wire::Wait(-1);
     if (m.tag == wire::kResult) continue;  // a copy that lost in the last batch
     if (m.tag == wire::kReady) {
@@ -300,11 +311,31 @@ void Rendezvous(uint64_t fingerprint) {
     }
     if (m.tag != wire::kRendezvous) Unexpected(m, "while waiting for every rank");
     Reader in(m.bytes);
-    if (in.U64() != id || in.U64() != fingerprint)
-      wire::Abort(Text("rank %llu read other data than rank 0 (rendezvous %llu); every rank "
-                       "must see the same files", m.source, id));
+    const uint64_t at = in.U64(), got = in.U64();
+    if (at > id) {
+      early.emplace(at, std::pair{m.source, got});
+      continue;
+    }
+    if (at != id) wire::Abort(Text("rank %llu sent rendezvous %llu at %llu", m.source, at, id));
+    check(m.source, got);
     ++arrived;
   }
+}
+
+void Share(std::string* bytes) {
+  if (!Farmed()) return;
+  const uint64_t id = ++State().share;
+  if (IsManager()) {
+    const std::string message = Writer().U64(id).Text(*bytes).Take();
+    for (int r = 1; r < Size(); ++r) wire::Send(r, wire::kShare, message);
+    return;
+  }
+  const Message m = wire::Wait(0);
+  if (m.tag == wire::kStop) StopHere(m);  // the manager ended the job before this point
+  if (m.tag != wire::kShare) Unexpected(m, Text("while waiting for share %llu", id));
+  Reader in(m.bytes);
+  if (in.U64() != id) Unexpected(m, Text("(not share %llu)", id));
+  *bytes = in.Text();
 }
 
 }  // namespace demcal::objectives::farm

@@ -18,6 +18,7 @@ enum Tag : int {
   kStop,        // manager → worker: the exit code; the job is over
   kFinished,    // worker → manager: the worker has stopped
   kRendezvous,  // worker → manager: rendezvous number, fingerprint
+  kShare,       // manager → worker: share number, the manager's bytes
 };
 
 class Writer {

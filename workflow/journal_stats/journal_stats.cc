@@ -15,13 +15,8 @@ namespace {
 // The evaluation journal's own cap (calibrate/evaluation_journal.cc).
 constexpr size_t kMaxJournalBytes = size_t{256} << 20;
 
-struct Run {
-  std::string host;
-  int rank = 0;
-  double start = 0, end = 0, batch = 0, time_s = 0;
-  bool timed = false;
-  int journal = 0;
-};
+using Run = JournalRun;
+constexpr const char* kStageJournalFormat = "demcal-stage-journal/1";  // reproduce's stages.jsonl
 
 bool Fail(std::string* error, const std::string& message) {
   *error = message;
@@ -34,8 +29,22 @@ double Number(const nlohmann::json& j, const char* key) {
                                                                                : -1;
 }
 
+// The timing of `j` (a record, or a stage record's "run") into *r.
+void TakeTimes(const nlohmann::json& j, Run* r) {
+  r->time_s = std::max(0.0, Number(j, "wall_time_s"));
+  r->start = Number(j, "start_unix_s"), r->end = Number(j, "end_unix_s");
+  r->timed = r->start > 0 && r->end >= r->start;
+  if (r->timed) {
+    r->time_s = r->end - r->start;
+    r->batch = std::max(0.0, Number(j, "batch_unix_s"));
+    r->host = j.value("host", std::string());
+    r->rank = std::max(0, static_cast<int>(Number(j, "rank")));
+  }
+}
+
 // The runs of one journal; false on a line that is not a record. Not a journal at all (another
-// .jsonl, such as reproduce's stages.jsonl): true with *is_journal false.
+// .jsonl): true with *is_journal false. In a stage journal only the records with a timed "run"
+// are runs (the stages' own records are not simulations).
 bool ReadRuns(const std::string& path, int index, std::vector<Run>* runs, bool* is_journal,
               std::string* error) {
   std::string content;
@@ -45,33 +54,37 @@ bool ReadRuns(const std::string& path, int index, std::vector<Run>* runs, bool* 
   std::istringstream lines(content);
   std::string line;
   *is_journal = false;
+  bool stages = false;
   for (int number = 1; std::getline(lines, line); ++number) {
     const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
     const std::string at = path + ":" + std::to_string(number) + ": ";
     if (number == 1) {
-      *is_journal = j.is_object() && j.value("format", "").rfind("demcal-journal/", 0) == 0;
+      const std::string format = j.is_object() ? j.value("format", "") : "";
+      stages = format == kStageJournalFormat;
+      *is_journal = stages || format.rfind("demcal-journal/", 0) == 0;
       if (!*is_journal) return true;
       continue;
     }
-    if (!j.is_object() || !j.contains("seed")) return Fail(error, at + "not a journal record");
     Run r;
     r.journal = index;
-    r.time_s = std::max(0.0, Number(j, "wall_time_s"));
-    r.start = Number(j, "start_unix_s"), r.end = Number(j, "end_unix_s");
-    r.timed = r.start > 0 && r.end >= r.start;
-    if (r.timed) {
-      r.time_s = r.end - r.start;
-      r.batch = std::max(0.0, Number(j, "batch_unix_s"));
-      r.host = j.value("host", std::string());
-      r.rank = std::max(0, static_cast<int>(Number(j, "rank")));
+    if (stages) {
+      if (!j.is_object() || !j.contains("key")) return Fail(error, at + "not a stage record");
+      const nlohmann::json* result = j.contains("result") ? &j["result"] : nullptr;
+      if (!result || !result->is_object() || !result->contains("run")) continue;
+      TakeTimes((*result)["run"], &r);
+      if (r.timed) runs->push_back(std::move(r));
+      continue;
     }
+    if (!j.is_object() || !j.contains("seed")) return Fail(error, at + "not a journal record");
+    TakeTimes(j, &r);
     runs->push_back(std::move(r));
   }
   return true;
 }
 
-// The length of the union of the intervals.
-double Covered(std::vector<std::pair<double, double>> intervals) {
+}  // namespace
+
+double CoveredSeconds(std::vector<std::pair<double, double>> intervals) {
   std::sort(intervals.begin(), intervals.end());
   double total = 0, from = 0, to = -1;
   for (const auto& [a, b] : intervals) {
@@ -85,9 +98,8 @@ double Covered(std::vector<std::pair<double, double>> intervals) {
   return total + std::max(0.0, to - from);
 }
 
-}  // namespace
-
-bool ReadJournalStats(const std::string& dir, JournalStats* stats, std::string* error) {
+bool ReadJournalRuns(const std::string& dir, std::vector<JournalRun>* runs, int* journals,
+                     std::string* error) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) return Fail(error, dir + ": not a directory");
@@ -97,15 +109,22 @@ bool ReadJournalStats(const std::string& dir, JournalStats* stats, std::string* 
     if (it->path().extension() == ".jsonl" && it->is_regular_file(ec)) paths.push_back(it->path());
   if (ec) return Fail(error, dir + ": cannot list: " + ec.message());
   std::sort(paths.begin(), paths.end());
-  std::vector<Run> runs;
-  *stats = JournalStats{};
+  runs->clear();
+  *journals = 0;
   for (const std::string& path : paths) {
     bool is_journal = false;
-    if (!ReadRuns(path, stats->journals, &runs, &is_journal, error)) return false;
-    stats->journals += is_journal;
+    if (!ReadRuns(path, *journals, runs, &is_journal, error)) return false;
+    *journals += is_journal;
   }
-  if (stats->journals == 0)
+  if (*journals == 0)
     return Fail(error, dir + ": no evaluation journal (a .jsonl with a demcal-journal header)");
+  return true;
+}
+
+bool ReadJournalStats(const std::string& dir, JournalStats* stats, std::string* error) {
+  std::vector<Run> runs;
+  *stats = JournalStats{};
+  if (!ReadJournalRuns(dir, &runs, &stats->journals, error)) return false;
   stats->simulations = static_cast<int>(runs.size());
   double first = INFINITY, last = -INFINITY, timed_s = 0;
   std::map<std::tuple<int, double, size_t>, double> longest;  // batch -> its longest run
@@ -132,7 +151,7 @@ bool ReadJournalStats(const std::string& dir, JournalStats* stats, std::string* 
     RankUse use{key.first, key.second, static_cast<int>(intervals.size())};
     for (const auto& [a, b] : intervals) use.run_time_s += b - a;
     if (stats->wall_span_s > 0) {
-      use.busy_fraction = Covered(intervals) / stats->wall_span_s;
+      use.busy_fraction = CoveredSeconds(intervals) / stats->wall_span_s;
       use.runs_at_once = use.run_time_s / stats->wall_span_s;
     }
     stats->ranks.push_back(use);

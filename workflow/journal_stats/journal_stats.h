@@ -2,7 +2,9 @@
 // JournalStats: how a finished (or running) job used its machines, read from its evaluation
 // journals (calibrate/evaluation_journal.h): every `*.jsonl` under a folder whose header is a
 // demcal-journal (a calibration's journal.jsonl, the calibrations of reproduce, diagnose's
-// journal/<hash>.jsonl). What `demcal journal-stats DIR` prints.
+// journal/<hash>.jsonl), and the runs of reproduce's stage journal (stages.jsonl: the records
+// whose result carries "run" {host, rank, start_unix_s, end_unix_s, batch_unix_s}, the
+// segregation replicates and the fidelity check). What `demcal journal-stats DIR` prints.
 //
 // Definitions (all times in seconds):
 //  - run time of a record: end_unix_s − start_unix_s when it has them, else its wall_time_s;
@@ -19,11 +21,29 @@
 //   if (!ReadJournalStats("out/study", &s, &error)) fail(error);
 //   std::cout << JournalStatsText(s);
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 namespace demcal::workflow {
+
+// One finished run of a journal (times in seconds since the epoch).
+struct JournalRun {
+  std::string host;
+  int rank = 0;
+  double start = 0, end = 0, batch = 0, time_s = 0;
+  bool timed = false;  // has start and end (host, rank and batch then too)
+  int journal = 0;     // which journal (batches of different journals are different batches)
+};
+
+// Every run of the journals under `dir`, journal by journal (paths sorted); *journals counts the
+// journals read. False with "FILE:LINE: ..." when a journal cannot be read, or none is there.
+bool ReadJournalRuns(const std::string& dir, std::vector<JournalRun>* runs, int* journals,
+                     std::string* error);
+
+// The length of the union of the intervals [a, b] (the time with at least one of them going).
+double CoveredSeconds(std::vector<std::pair<double, double>> intervals);
 
 struct RankUse {
   std::string host;

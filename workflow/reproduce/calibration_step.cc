@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "objectives/farm/farm.h"
 #include "workflow/calibration/run_study.h"
 #include "outputs/exit_codes.h"
 #include "files/json_document.h"
@@ -89,12 +90,13 @@ bool CheckCalibrationStep(const CalibrationStep& step, std::string* error) {
 
 bool RunCalibrationStep(const ReproduceContext& ctx, const CalibrationStep& step,
                         CalibrationOutcome* out, std::string* error) {
+  const bool writer = objectives::farm::IsManager();  // under mpirun, only rank 0 writes
   std::error_code ec;
-  fs::create_directories(step.dir, ec);
+  if (writer) fs::create_directories(step.dir, ec);
   if (ec) return *error = "cannot create '" + step.dir + "': " + ec.message(), false;
   const std::string study_path = step.dir + "/study.json";
   const nlohmann::ordered_json document = StudyJson(step);
-  if (!WriteJsonFile(study_path, document, error)) return false;  // the record of what ran
+  if (writer && !WriteJsonFile(study_path, document, error)) return false;  // what ran
   *out = CalibrationOutcome{};
   StudyFile study;
   std::string refused;

@@ -3,7 +3,10 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <functional>
+#include <string>
 
+#include "objectives/farm/farm.h"
 #include "outputs/exit_codes.h"
 #include "files/json_document.h"
 #include "outputs/output_lock.h"
@@ -21,6 +24,7 @@ namespace demcal::workflow {
 namespace {
 
 namespace fs = std::filesystem;
+namespace farm = objectives::farm;
 
 double Seconds(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
@@ -43,8 +47,19 @@ DemcalValues CollectValues(const nlohmann::json& results) {
   return values;
 }
 
+// Under mpirun every rank runs every stage (SPMD, objectives/farm/farm.h) and only rank 0 writes.
+// At a stage's end rank 0 waits until each rank has reached it with the same values (a rank that
+// differs ends the job), and the others wait until rank 0 has written the stage's files, which
+// the next stages read (a species' calibrated experiment file).
+void StageEnd(const nlohmann::json& result) {
+  farm::Rendezvous(std::hash<std::string>{}(result.value("values", nlohmann::json()).dump()));
+  std::string none;
+  farm::Share(&none);
+}
+
 // Runs (or reads back from the journal) every stage in order; false with *error.
 bool RunStages(ReproduceContext& ctx, nlohmann::json* timings, std::string* error) {
+  const bool writer = farm::IsManager();
   const auto& stages = ReproduceStages();
   for (size_t k = 0; k < stages.size(); ++k) {
     const Stage& stage = stages[k];
@@ -58,17 +73,18 @@ bool RunStages(ReproduceContext& ctx, nlohmann::json* timings, std::string* erro
     *ctx.log << "reproduce: stage " << k + 1 << "/" << stages.size() << " " << stage.name << ": "
              << stage.title << "\n" << std::flush;
     std::error_code ec;
-    fs::create_directories(ctx.StageDir(stage.name), ec);
+    if (writer) fs::create_directories(ctx.StageDir(stage.name), ec);
     const auto start = std::chrono::steady_clock::now();
     nlohmann::json result;
     if (!stage.run(ctx, &result, error)) return false;
     const double wall = Seconds(start);
     ctx.results[stage.name] = result;
     (*timings)[stage.name] = wall;
-    if (!WriteJsonFile(ctx.StageDir(stage.name) + "/stage_result.json",
-                       nlohmann::ordered_json::parse(result.dump()), error) ||
+    if ((writer && !WriteJsonFile(ctx.StageDir(stage.name) + "/stage_result.json",
+                                  nlohmann::ordered_json::parse(result.dump()), error)) ||
         !ctx.journal->Record(stage.name, {{"result", result}, {"wall_time_s", wall}}, error))
       return false;
+    StageEnd(result);
     *ctx.log << "reproduce: stage " << k + 1 << "/" << stages.size() << " " << stage.name
              << " done in " << std::lround(wall) << " s\n" << std::flush;
   }
@@ -93,23 +109,31 @@ int RunReproduce(const ReproduceOptions& options, std::ostream& log) {
     log << "error: " << error << "\n";
     return kExitInvalidInput;
   }
+  const bool writer = farm::IsManager();  // rank 0 under mpirun; the only rank that writes
   std::error_code ec;
-  fs::create_directories(options.out_dir, ec);
+  if (writer) fs::create_directories(options.out_dir, ec);
   if (ec) {
     log << "error: cannot create '" << options.out_dir << "': " << ec.message() << "\n";
     return kExitOutputError;
   }
   OutputLock lock;  // a held --out is a usage error, as for every command (exit 2)
-  if (!LockOutputDirectory(options.out_dir, "demcal reproduce " + options.workflow, &lock, &error)) {
+  const std::string holder = "demcal reproduce " + options.workflow;
+  if (writer && !LockOutputDirectory(options.out_dir, holder, &lock, &error)) {
     log << "error: " << error << "\n";
     return kExitInvalidInput;
   }
   StageJournal journal;
   const std::string fingerprint = workflow.fingerprint + (options.quick ? "/quick" : "/default");
-  if (!journal.Open(options.out_dir + "/stages.jsonl", fingerprint, &error)) {
+  std::string opened;  // the workers read the journal once rank 0 has opened (or created) it
+  if (writer && journal.Open(options.out_dir + "/stages.jsonl", fingerprint, &error)) opened = "1";
+  farm::Share(&opened);
+  if (opened.empty() ||
+      (!writer && !journal.Open(options.out_dir + "/stages.jsonl", fingerprint, &error, true))) {
     log << "error: " << error << "\n";
     return kExitInvalidInput;
   }
+  farm::Rendezvous(journal.size());  // every rank resumes from the same finished work
+  farm::Share(&opened);              // and no worker starts before that check
   ReproduceContext ctx{.workflow = &workflow, .out_dir = options.out_dir, .quick = options.quick,
                        .threads = options.threads, .quiet = options.quiet, .log = &log,
                        .journal = &journal};
@@ -128,6 +152,7 @@ int RunReproduce(const ReproduceOptions& options, std::ostream& log) {
   summary["total_wall_time_s_this_run"] = Seconds(start);
   ReportInputs report{.workflow = &workflow, .results = &ctx.results, .rows = &rows,
                       .timings = &timings, .quick = options.quick, .out_dir = options.out_dir};
+  if (!writer) return kExitOk;  // the job's exit code is rank 0's (farm::Session::Finish)
   if (!WriteJsonFile(options.out_dir + "/summary.json", summary, &error) ||
       !WriteScenarioParams(ctx, &error) || !WriteReproduceReport(report, &error)) {
     log << "error: " << error << "\n";

@@ -26,8 +26,9 @@ StageJournal::~StageJournal() {
 }
 
 bool StageJournal::Open(const std::string& path, const std::string& fingerprint,
-                        std::string* error) {
+                        std::string* error, bool read_only) {
   path_ = path;
+  read_only_ = read_only;
   std::string text;
   // The journal is appended to in place: a link at its name, or a FIFO or device, is refused
   // rather than read and written through. A missing journal is a fresh run's.
@@ -39,6 +40,7 @@ bool StageJournal::Open(const std::string& path, const std::string& fingerprint,
   complete = complete == std::string::npos ? 0 : complete + 1;
   text.resize(complete);
   if (!Load(text, fingerprint, error)) return false;
+  if (read_only) return true;
   std::string open_error;
   fd_ = core::io::OpenOwnFile(path, O_WRONLY | O_CREAT | O_APPEND, &open_error);
   if (fd_ < 0) return Fail(error, "cannot write the stage journal: " + open_error);
@@ -90,9 +92,9 @@ bool StageJournal::Record(const std::string& key, const nlohmann::json& result,
   std::lock_guard lock(mutex_);
   if (records_.count(key)) return Fail(error, path_ + ": key '" + key + "' already recorded");
   nlohmann::json record{{"key", key}, {"result", result}};
-  if (!AppendLine(record.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n",
-                  error))
-    return false;
+  const std::string line =
+      record.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+  if (!read_only_ && !AppendLine(line, error)) return false;
   records_.emplace(key, result);
   return true;
 }

@@ -34,8 +34,11 @@ class StageJournal {
   StageJournal(const StageJournal&) = delete;
   StageJournal& operator=(const StageJournal&) = delete;
 
-  // Opens (creating if absent) and loads; false with a message naming the file.
-  bool Open(const std::string& path, const std::string& fingerprint, std::string* error);
+  // Opens (creating if absent) and loads; false with a message naming the file. With
+  // `read_only` (the workers of an MPI farm, which run the same stages as the rank that writes)
+  // the file is only read, a missing one is empty, and Record keeps records in memory.
+  bool Open(const std::string& path, const std::string& fingerprint, std::string* error,
+            bool read_only = false);
   // The result recorded under `key`, or nullptr. The pointer stays valid until the journal dies.
   const nlohmann::json* Find(const std::string& key) const;
   // Appends (and fsyncs) a record; false if the key is already recorded or the write fails.
@@ -49,6 +52,7 @@ class StageJournal {
 
   std::string path_;
   int fd_ = -1;
+  bool read_only_ = false;
   std::map<std::string, nlohmann::json> records_;
   mutable std::mutex mutex_;
 };

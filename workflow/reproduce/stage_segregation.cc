@@ -9,7 +9,10 @@
 // replicate r: the file's seed replaced by ReplicateSeed(seed, r), one replicate each) side by
 // side, each journalled when it finishes, so a kill loses only the runs in flight. Means ± sem
 // over the replicates of each scenario feed summary.json.
+#include <algorithm>
 #include <atomic>
+#include <functional>
+#include <limits>
 #include <cmath>
 #include <filesystem>
 #include <mutex>
@@ -17,6 +20,7 @@
 #include <thread>
 
 #include "objectives/common/replicates.h"
+#include "objectives/farm/farm.h"
 #include "experiments/common/run_experiment.h"
 #include "experiments/common/experiment_file.h"
 #include "experiments/segregation/segregation_result.h"
@@ -29,6 +33,7 @@ namespace demcal::workflow {
 namespace {
 
 namespace fs = std::filesystem;
+constexpr double kNeverCopy = std::numeric_limits<double>::infinity();  // farm::Options
 
 struct Scenario {
   std::string name;
@@ -74,8 +79,12 @@ bool BuildScenarios(const ReproduceContext& ctx, std::vector<Scenario>* out, std
 }
 
 // One replicate: its own experiment file (seed replaced; written as the record) and output folder.
+// Under mpirun the rank that runs it writes that folder (a run's own files; the folder must be
+// on a file system every rank sees, as the inputs are); its metrics carry where and when it ran
+// under "run" (host, rank, start_unix_s, end_unix_s, batch_unix_s) for `demcal journal-stats`.
 bool RunReplicate(const ReproduceContext& ctx, const Scenario& s, int r, int threads, const std::string& dir,
-                  nlohmann::json* metrics, std::string* error) {
+                  double batch_unix_s, nlohmann::json* metrics, std::string* error) {
+  const double start_unix_s = objectives::farm::UnixNow();
   nlohmann::ordered_json document = s.experiment;
   const uint64_t seed = objectives::ReplicateSeed(document.value("seed", uint64_t{1}), r);
   document["seed"] = seed;
@@ -103,7 +112,38 @@ bool RunReplicate(const ReproduceContext& ctx, const Scenario& s, int r, int thr
   *metrics = ExtractSegregationMetrics(*segregation);
   (*metrics)["seed"] = seed;
   (*metrics)["exit_code"] = code;
+  (*metrics)["run"] = {{"host", objectives::farm::HostName()},
+                       {"rank", objectives::farm::Rank()},
+                       {"start_unix_s", start_unix_s},
+                       {"end_unix_s", std::max(start_unix_s, objectives::farm::UnixNow())},
+                       {"batch_unix_s", batch_unix_s}};
   return true;
+}
+
+// Runs jobs 0..count−1 on this machine's cores, run(j, simulation threads). Heaps run one per
+// core, single-threaded. When the heaps do not divide into full rounds, the odd ones go first,
+// sharing all cores as simulation threads (results do not depend on the thread count): 3 heaps
+// on 2 cores take one 2-thread heap and one 2-heap round, not two rounds of which the second
+// leaves a core idle.
+void RunLocally(size_t count, int threads, const std::function<void(size_t, int)>& run) {
+  const int cores =
+      std::max(1, threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency()));
+  const size_t odd = count % cores;
+  std::atomic<size_t> next{0};
+  auto run_round = [&](size_t end, int workers, int simulation_threads) {
+    std::vector<std::thread> pool;
+    for (int i = 0; i < workers; ++i)
+      pool.emplace_back([&, end, simulation_threads] {
+        for (size_t j; (j = next++) < end;) run(j, simulation_threads);
+      });
+    for (std::thread& t : pool) t.join();
+  };
+  if (odd > 0) {
+    const int odd_jobs = static_cast<int>(odd);
+    run_round(odd, odd_jobs, objectives::ThreadsPerReplicate(odd_jobs, cores));
+  }
+  next = odd;  // a worker that found the first round empty still took an index
+  run_round(count, std::min<int>(cores, static_cast<int>(count - odd)), 1);
 }
 
 }  // namespace
@@ -122,8 +162,10 @@ bool RunSegregationStage(ReproduceContext& ctx, nlohmann::json* result, std::str
   for (size_t s = 0; s < scenarios.size(); ++s) {
     const std::string dir = ctx.StageDir("segregation") + "/" + scenarios[s].name;
     std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (!WriteJsonFile(dir + "/experiment.json", scenarios[s].experiment, error)) return false;
+    if (objectives::farm::IsManager()) {  // under mpirun only rank 0 writes the stage's files
+      fs::create_directories(dir, ec);
+      if (!WriteJsonFile(dir + "/experiment.json", scenarios[s].experiment, error)) return false;
+    }
     for (int r = 0; r < replicates; ++r)
       if (!ctx.journal->Find("segregation/" + scenarios[s].name + "/r" + std::to_string(r)))
         jobs.push_back({s, r});
@@ -131,47 +173,64 @@ bool RunSegregationStage(ReproduceContext& ctx, nlohmann::json* result, std::str
   const int total = static_cast<int>(scenarios.size()) * replicates;
   *ctx.log << "reproduce: segregation: " << scenarios.size() << " scenarios x " << replicates
            << " replicates, " << total - static_cast<int>(jobs.size()) << " from the journal\n";
-  std::atomic<size_t> next{0};
-  std::atomic<int> done{0};
   std::mutex mutex;
   std::string first_error;
+  int done = 0;
   const auto start = std::chrono::steady_clock::now();
-  auto worker = [&](size_t end, int threads) {
-    for (size_t j; (j = next++) < end;) {
-      const Scenario& s = scenarios[jobs[j].scenario];
-      const int r = jobs[j].replicate;
-      const std::string dir = ctx.StageDir("segregation") + "/" + s.name + "/r" + std::to_string(r);
-      nlohmann::json metrics;
-      std::string why;
-      bool ok = RunReplicate(ctx, s, r, threads, dir, &metrics, &why) &&
-                ctx.journal->Record("segregation/" + s.name + "/r" + std::to_string(r), metrics, &why);
-      std::lock_guard lock(mutex);
-      if (!ok && first_error.empty()) first_error = why;
-      const int n = ++done;
-      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      if (!ctx.quiet)
-        *ctx.log << "reproduce: segregation run " << n << "/" << jobs.size() << " (" << s.name << " r"
-                 << r << ") done; elapsed " << std::lround(elapsed) << " s, ETA "
-                 << std::lround(elapsed / n * (jobs.size() - n)) << " s\n" << std::flush;
-    }
+  const double batch_unix_s = objectives::farm::UnixNow();
+  auto key = [&](size_t j) {
+    const Job& task = jobs[j];
+    return "segregation/" + scenarios[task.scenario].name + "/r" + std::to_string(task.replicate);
   };
-  // Heaps run one per core, single-threaded. When the heaps do not divide into full rounds, the
-  // odd ones go first, sharing all cores as simulation threads (results do not depend on the
-  // thread count): 3 heaps on 2 cores take one 2-thread heap and one 2-heap round, not two rounds
-  // of which the second leaves a core idle.
-  const int cores = std::max(1, ctx.threads > 0 ? ctx.threads : static_cast<int>(std::thread::hardware_concurrency()));
-  const size_t odd = jobs.size() % cores;
-  auto run_round = [&](size_t end, int workers, int threads) {
-    std::vector<std::thread> pool;
-    for (int i = 0; i < workers; ++i) pool.emplace_back(worker, end, threads);
-    for (std::thread& t : pool) t.join();
+  // Replicate j's metrics, or {"error": why}.
+  auto run = [&](size_t j, int threads) {
+    const Scenario& s = scenarios[jobs[j].scenario];
+    const int r = jobs[j].replicate;
+    const std::string dir = ctx.StageDir("segregation") + "/" + s.name + "/r" + std::to_string(r);
+    nlohmann::json metrics;
+    std::string why;
+    if (!RunReplicate(ctx, s, r, threads, dir, batch_unix_s, &metrics, &why))
+      metrics = {{"error", why}};
+    return metrics;
   };
-  if (odd > 0) {
-    const int odd_jobs = static_cast<int>(odd);
-    run_round(odd, odd_jobs, objectives::ThreadsPerReplicate(odd_jobs, cores));
+  auto finish = [&](size_t j, nlohmann::json metrics) {  // journals it, then the progress
+    std::string why = metrics.value("error", "");
+    // The batch's start on this rank's clock, as for calibrate's records (a worker that ran the
+    // replicate stamped its own).
+    if (metrics.contains("run")) metrics["run"]["batch_unix_s"] = batch_unix_s;
+    if (why.empty()) ctx.journal->Record(key(j), metrics, &why);
+    std::lock_guard lock(mutex);
+    if (!why.empty() && first_error.empty()) first_error = why;
+    const int n = ++done;
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!ctx.quiet)
+      *ctx.log << "reproduce: segregation run " << n << "/" << jobs.size() << " ("
+               << scenarios[jobs[j].scenario].name << " r" << jobs[j].replicate
+               << ") done; elapsed " << std::lround(elapsed) << " s, ETA "
+               << std::lround(elapsed / n * (jobs.size() - n)) << " s\n" << std::flush;
+  };
+  if (objectives::farm::Farmed()) {
+    // Every scenario's replicates in one batch over the ranks, each single-threaded (--threads:
+    // runs side by side per rank); rank 0 journals each as it arrives. A slow run is not copied
+    // to another rank: the copy would lock and write the same folder (each run still ends, on
+    // its simulation's wall-time budget).
+    std::vector<nlohmann::json> metrics(jobs.size());
+    std::string tasks;
+    for (size_t j = 0; j < jobs.size(); ++j)
+      tasks += key(j) + "=" + scenarios[jobs[j].scenario].experiment.dump() + "\n";
+    objectives::farm::Job job;
+    job.count = static_cast<int>(jobs.size());
+    job.fingerprint = std::hash<std::string>{}(tasks);
+    job.run = [&](int t) { metrics[t] = run(t, 1); };
+    job.save = [&](int t) { return metrics[t].dump(); };
+    job.load = [&](int t, const std::string& bytes) { metrics[t] = nlohmann::json::parse(bytes); };
+    job.done = [&](int t) { finish(t, metrics[t]); };
+    objectives::farm::RunBatch(job, {.threads = ctx.threads, .run_time_limit_s = kNeverCopy});
+  } else {
+    RunLocally(jobs.size(), ctx.threads,
+               [&](size_t j, int threads) { finish(j, run(j, threads)); });
   }
-  next = odd;  // a worker that found the first round empty still took an index
-  run_round(jobs.size(), std::min<int>(cores, static_cast<int>(jobs.size() - odd)), 1);
   if (!first_error.empty()) return *error = first_error, false;
   nlohmann::json per_scenario = nlohmann::json::object();
   for (const Scenario& s : scenarios) {

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "files/json_document.h"
+#include "objectives/farm/farm.h"
 #include "workflow/reproduce/calibration_step.h"
 #include "workflow/reproduce/experiment_edit.h"
 #include "workflow/reproduce/stages.h"
@@ -47,7 +48,10 @@ bool RunSpeciesStage(ReproduceContext& ctx, nlohmann::json* result, std::string*
     if (!ReadExperimentJson(s.experiment_file, &experiment, error)) return false;
     if (std::isfinite(o.value)) SetPairProperty(&experiment, s.name, s.name, s.property, o.value);
     const std::string calibrated = step.dir + "/calibrated_experiment.json";
-    if (!WriteJsonFile(calibrated, experiment, error)) return false;
+    // Under mpirun only rank 0 writes; the others read the file after the
+    // stage, once rank 0 has written it (StageEnd in run_reproduce.cc).
+    if (objectives::farm::IsManager() && !WriteJsonFile(calibrated, experiment, error))
+      return false;
     nlohmann::json entry = o.ToJson();
     entry["property"] = s.property;
     entry["calibrated_experiment"] = calibrated;
