@@ -64,6 +64,7 @@ std::vector<Observation> StudyModel::Observations() const {
   for (const workflow::StudyTarget& t : study_.targets) {
     out.push_back(
         {t.target.name, t.target.observable, t.condition, t.target.value, t.target.uncertainty});
+    out.back().repeats = t.repeats;
     if (t.experiment >= 0 && t.experiment < static_cast<int>(study_.experiments.size()))
       out.back().experiment =
           std::filesystem::path(study_.experiments[t.experiment].path).filename().string();
