@@ -22,9 +22,11 @@ uint64_t PreparedSceneDigest(const calibrate::RunGroup& g, const calibrate::Para
                         ? model.time.timestep_s
                         : model.time.rayleigh_fraction * core::RayleighTime(model);
   core::Fnv1a64 h;
-  for (const core::FingerprintPart& p : core::SceneFingerprint(model, dt, core::NeighbourSkin(model)))
+  for (const core::FingerprintPart& p :
+       core::SceneFingerprint(model, dt, core::NeighbourSkin(model)))
     h.Text(p.name), h.Field(p.digest);
-  h.Field(model.time.duration_s), h.Field(model.time.force_timestep), h.Field(model.max_wall_time_s);
+  h.Field(model.time.duration_s), h.Field(model.time.force_timestep),
+      h.Field(model.max_wall_time_s);
   return h.digest() == 0 ? 1 : h.digest();
 }
 
@@ -41,7 +43,8 @@ MergedRunGroups MergeSharedRunGroups(const std::vector<calibrate::RunGroup>& gro
   std::vector<int> kept_as(groups.size(), -1);
   for (size_t k = 0; k < groups.size(); ++k) {
     std::vector<uint64_t> d;
-    for (const std::vector<double>& u : points) d.push_back(PreparedSceneDigest(groups[k], space, u));
+    for (const std::vector<double>& u : points)
+      d.push_back(PreparedSceneDigest(groups[k], space, u));
     const bool mergeable = d[0] != 0 && d[1] != 0;
     for (size_t j = 0; mergeable && j < out.groups.size(); ++j)
       if (out.groups[j].probe == groups[k].probe && digests[j] == d) {
@@ -55,10 +58,9 @@ MergedRunGroups MergeSharedRunGroups(const std::vector<calibrate::RunGroup>& gro
     digests.push_back(mergeable ? d : std::vector<uint64_t>{0, 0});
   }
   for (const calibrate::TargetBinding& b : bindings)
-    out.bindings.push_back({b.group >= 0 && b.group < static_cast<int>(kept_as.size())
-                                ? kept_as[b.group]
-                                : b.group,
-                            b.observable});
+    out.bindings.push_back(
+        {b.group >= 0 && b.group < static_cast<int>(kept_as.size()) ? kept_as[b.group] : b.group,
+         b.observable});
   return out;
 }
 

@@ -24,7 +24,7 @@
 namespace demcal::diagnose {
 
 struct MergedRunGroups {
-  std::vector<calibrate::RunGroup> groups;        // the groups that run, in their first order
+  std::vector<calibrate::RunGroup> groups;         // the groups that run, in their first order
   std::vector<calibrate::TargetBinding> bindings;  // the targets, bound to those groups
   int merged = 0;                                  // groups dropped as duplicates
 };

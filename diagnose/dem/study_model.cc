@@ -113,8 +113,8 @@ StudyModel::Setting* StudyModel::SettingFor(const std::vector<ActiveEffect>& eff
     s.merged_groups = merged.merged;
     if (options_.log && merged.merged > 0)
       *options_.log << "diagnose:   " << (key.empty() ? "base" : key) << ": " << merged.merged
-                    << " of " << runs_.groups.size()
-                    << " run groups share another's scene (a condition not in this model): run once\n"
+                    << " of " << runs_.groups.size() << " run groups share another's scene"
+                    << " (a condition not in this model): run once\n"
                     << std::flush;
   }
   const std::string path =

@@ -15,8 +15,7 @@ std::string RevaluationText(const std::string& key, const EffectParameter& p, do
   s.precision(3);
   const std::string unit = p.unit.empty() ? "" : " " + p.unit;
   s << key << ", " << EffectDirection(p, value) << ": " << p.name << " = " << value << unit
-    << " against the assumed " << p.assumed << unit << " (chi2/dof " << chi2_per_dof
-    << " with it)";
+    << " against the assumed " << p.assumed << unit << " (chi2/dof " << chi2_per_dof << " with it)";
   return s.str();
 }
 

@@ -37,9 +37,9 @@ calibrate::RunGroup Group(const NullProbe& probe, const std::string& coating,
 TEST_CASE("groups whose condition does not enter the model share one run", "[unit]") {
   const NullProbe heap, funnel;
   const calibrate::ParameterSpace space = Friction();
-  const std::vector<calibrate::RunGroup> groups = {Group(heap, "0", space),
-                                                   Group(heap, "1.5", space),
-                                                   Group(funnel, "0", space), Group(heap, "3", space)};
+  const std::vector<calibrate::RunGroup> groups = {
+      Group(heap, "0", space), Group(heap, "1.5", space), Group(funnel, "0", space),
+      Group(heap, "3", space)};
   const std::vector<calibrate::TargetBinding> bindings = {
       {0, "angle_deg"}, {1, "angle_deg"}, {2, "angle_deg"}, {3, "angle_deg"}};
   const MergedRunGroups m = MergeSharedRunGroups(groups, bindings, space);
@@ -58,10 +58,17 @@ TEST_CASE("groups a condition changes stay apart", "[unit]") {
   const NullProbe heap;
   calibrate::ParameterSpace space = Friction();
   // Γ applies only at 3 wt% (a `when` condition): the 3 wt% scene differs from the 0 wt% one.
-  space.parameters.push_back({"gamma_3", calibrate::PairProperty::kInterfacialEnergy, 0, 0, 0.01,
-                              0.2, 0.05, false, {{"coating", "3"}}});
-  const std::vector<calibrate::RunGroup> groups = {Group(heap, "0", space), Group(heap, "1.5", space),
-                                                   Group(heap, "3", space)};
+  space.parameters.push_back({"gamma_3",
+                              calibrate::PairProperty::kInterfacialEnergy,
+                              0,
+                              0,
+                              0.01,
+                              0.2,
+                              0.05,
+                              false,
+                              {{"coating", "3"}}});
+  const std::vector<calibrate::RunGroup> groups = {
+      Group(heap, "0", space), Group(heap, "1.5", space), Group(heap, "3", space)};
   const MergedRunGroups m =
       MergeSharedRunGroups(groups, {{0, "angle_deg"}, {1, "angle_deg"}, {2, "angle_deg"}}, space);
   REQUIRE(m.groups.size() == 2);  // 0 and 1.5 wt% share a scene, 3 wt% has its own

@@ -39,9 +39,9 @@ TEST_CASE("re-valuation: a change by no more than the assumed value, either sign
   CHECK_FALSE(IsRevaluation(p, NAN));
   p.assumed = 0;  // the base lacks the mechanism: any amount adds it
   CHECK_FALSE(IsRevaluation(p, 0.01));
-  CHECK(RevaluationText("rolling_resistance", EffectParameter{"delta_mu_r", "", -0.1, 1, 0.2, "more",
-                                                              "less rolling resistance than assumed",
-                                                              0.1},
+  CHECK(RevaluationText("rolling_resistance",
+                        EffectParameter{"delta_mu_r", "", -0.1, 1, 0.2, "more",
+                                        "less rolling resistance than assumed", 0.1},
                         -0.063, 0.23)
             .find("less rolling resistance than assumed: delta_mu_r = -0.063 against the "
                   "assumed 0.1") != std::string::npos);
@@ -89,6 +89,36 @@ TEST_CASE("re-valuation keeps false alarms off on a model that fits", "[unit]") 
     const Diagnosis d = Run({}, seed);
     CHECK(d.named.empty());
     CHECK(d.revalued.empty());
+  }
+}
+
+}  // namespace demcal::diagnose
+
+namespace demcal::diagnose {
+
+TEST_CASE("a tie is a model-form offset only when both re-value; else it stays not told apart",
+          "[unit]") {
+  for (uint64_t seed : {1, 2, 3}) {
+    INFO("noise seed " << seed);
+    testing::AnalyticForwardModel model;
+    // Rolling at +0.35, as in the not-told-apart test of diagnosis_test.cc (a tie with
+    // roughness in every draw), here declared as re-valuing an assumed 0.5.
+    const std::vector<Observation> obs = testing::MakeObservations(&model, 0.5, {{1, 0.35}}, seed);
+    std::vector<CandidateEffect> both = testing::AmbiguousCandidates();
+    both[1].parameters[0].assumed = 0.5;
+    both[5].parameters[0].assumed = 0.5;
+    const Diagnosis d = Diagnose(model, obs, both, DiagnoseOptions{});
+    CHECK(d.termination == DiagnosisTermination::kModelFormOffset);
+    CHECK(d.named.empty());
+    CHECK(d.revalued.size() == 2);
+
+    std::vector<CandidateEffect> one = both;
+    one[5].parameters[0].assumed = 0;  // roughness is a mechanism the base lacks
+    testing::AnalyticForwardModel again;
+    const std::vector<Observation> obs2 = testing::MakeObservations(&again, 0.5, {{1, 0.35}}, seed);
+    const Diagnosis e = Diagnose(again, obs2, one, DiagnoseOptions{});
+    CHECK(e.termination == DiagnosisTermination::kNotToldApart);
+    CHECK(e.revalued.empty());
   }
 }
 
