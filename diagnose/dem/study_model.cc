@@ -9,6 +9,7 @@
 #include "calibrate/calibration.h"
 #include "calibrate/response_surface.h"
 #include "core/math/fnv1a.h"
+#include "diagnose/dem/shared_run_groups.h"
 #include "objectives/farm/farm.h"
 
 namespace demcal::diagnose {
@@ -63,6 +64,7 @@ std::vector<Observation> StudyModel::Observations() const {
   for (const workflow::StudyTarget& t : study_.targets) {
     out.push_back(
         {t.target.name, t.target.observable, t.condition, t.target.value, t.target.uncertainty});
+    out.back().repeats = t.repeats;
     if (t.experiment >= 0 && t.experiment < static_cast<int>(study_.experiments.size()))
       out.back().experiment =
           std::filesystem::path(study_.experiments[t.experiment].path).filename().string();
@@ -103,6 +105,18 @@ StudyModel::Setting* StudyModel::SettingFor(const std::vector<ActiveEffect>& eff
       if (fidelity) fidelity(m);
     };
   }
+  s.bindings = runs_.bindings;
+  if (s.invalid.empty()) {
+    MergedRunGroups merged = MergeSharedRunGroups(groups, runs_.bindings, study_.space);
+    groups = std::move(merged.groups);
+    s.bindings = std::move(merged.bindings);
+    s.merged_groups = merged.merged;
+    if (options_.log && merged.merged > 0)
+      *options_.log << "diagnose:   " << (key.empty() ? "base" : key) << ": " << merged.merged
+                    << " of " << runs_.groups.size() << " run groups share another's scene"
+                    << " (a condition not in this model): run once\n"
+                    << std::flush;
+  }
   const std::string path =
       options_.out_dir + (key.empty() ? "/journal/base.jsonl" : "/journal/" + Hex(key) + ".jsonl");
   s.journal = std::make_unique<calibrate::EvaluationJournal>();
@@ -118,7 +132,7 @@ StudyModel::Setting* StudyModel::SettingFor(const std::vector<ActiveEffect>& eff
   loaded.Text(path), loaded.Field(s.journal->LoadedRecords());
   objectives::farm::Rendezvous(loaded.digest());
   s.evaluator = std::make_unique<calibrate::TargetEvaluator>(
-      study_.space, std::move(groups), runs_.bindings,
+      study_.space, std::move(groups), s.bindings,
       calibrate::TargetEvaluatorOptions{
           .replicates = replicates_, .seed = seed_, .workers = options_.threads},
       s.journal.get());
@@ -128,8 +142,8 @@ StudyModel::Setting* StudyModel::SettingFor(const std::vector<ActiveEffect>& eff
 void StudyModel::Pool(Setting* s) {
   const auto& history = s->evaluator->history();
   for (; s->pooled < history.size(); ++s->pooled)
-    for (size_t k = 0; k < runs_.bindings.size() && k < pool_squares_.size(); ++k) {
-      const calibrate::TargetBinding& b = runs_.bindings[k];
+    for (size_t k = 0; k < s->bindings.size() && k < pool_squares_.size(); ++k) {
+      const calibrate::TargetBinding& b = s->bindings[k];
       std::vector<double> v;
       for (const calibrate::ReplicateRecord& r : history[s->pooled].runs[b.group]) {
         const auto it = r.values.find(b.observable);

@@ -6,7 +6,8 @@
 // runs the study's run groups with the effects written into each group's full-scale model after
 // the study's parameters and before the fidelity (effect.h); every distinct effect setting has
 // its own journal DIR/journal/<hash>.jsonl, so a killed diagnosis resumes without repeating a
-// run. Replicate r has the same seed everywhere (common random numbers).
+// run. Replicate r has the same seed everywhere (common random numbers), so groups whose
+// condition does not enter a setting's model run once for all of them (shared_run_groups.h).
 //
 // The simulation scatter is pooled over every evaluation of the diagnosis, per observation
 // (Σ(n_i − 1)s_i² / Σ(n_i − 1)): packing noise depends little on the parameters, and one
@@ -62,7 +63,9 @@ class StudyModel final : public ForwardModel {
   struct Setting {
     std::unique_ptr<calibrate::EvaluationJournal> journal;
     std::unique_ptr<calibrate::TargetEvaluator> evaluator;
-    size_t pooled = 0;    // history entries already in the pool
+    std::vector<calibrate::TargetBinding> bindings;  // runs_.bindings on the merged groups
+    int merged_groups = 0;  // run groups that are the same run as another (shared_run_groups.h)
+    size_t pooled = 0;      // history entries already in the pool
     std::string invalid;  // why the effects cannot be applied ("" if they can)
   };
   StudyModel(const workflow::StudyFile& study, const std::vector<const Effect*>& effects,

@@ -35,6 +35,11 @@ struct EffectParameter {
   std::string
       more;  // the direction of a value > 0 in words: "more rolling resistance than assumed"
   std::string less;  // of a value < 0 ("" when the effect cannot fall below the base)
+  // The base model's own amount of what the parameter shifts, in the parameter's units (μr of
+  // the base for Δμr; 0 when the base model lacks the mechanism: no adhesion, spheres). A
+  // change by no more than it re-values a modelled parameter rather than adding a missing
+  // mechanism (diagnose/ranking/revaluation.h).
+  double assumed = 0;
 };
 
 // The direction of a value of p in words: p.more, p.less, or "switched off" at 0.

@@ -29,7 +29,8 @@ class JkrAdhesion final : public Effect {
     // Down to Γ = 0 at the largest coating level (Γ_base + g·w ≥ 0 for every w up to it).
     return {{name, "J/m2", -c.interfacial_energy / scale, 0.03 / scale, 0.01 / scale,
              "more adhesion than assumed",
-             c.interfacial_energy > 0 ? "less adhesion than assumed" : ""}};
+             c.interfacial_energy > 0 ? "less adhesion than assumed" : "",
+             c.interfacial_energy / scale}};
   }
   bool Apply(const std::vector<double>& v, const calibrate::Condition& condition,
              const EffectContext& c, core::Scene* model, std::string* why) const override {

@@ -19,7 +19,8 @@ class RollingResistance final : public Effect {
     // Down to μr = 0 at the base's value (no negative rolling friction).
     return {{"delta_mu_r", "", -c.rolling_friction, 1.0, 0.2,
              "more rolling resistance than assumed",
-             c.rolling_friction > 0 ? "less rolling resistance than assumed" : ""}};
+             c.rolling_friction > 0 ? "less rolling resistance than assumed" : "",
+             c.rolling_friction}};
   }
   bool Apply(const std::vector<double>& v, const calibrate::Condition&, const EffectContext& c,
              core::Scene* model, std::string* why) const override {

@@ -24,7 +24,8 @@ class SizePolydispersity final : public Effect {
     // Down to a single diameter (w = 0) at the base's width.
     return {{"delta_relative_width", "", -c.relative_width, 1.4, 0.8,
              "a wider size distribution than assumed",
-             c.relative_width > 0 ? "a narrower size distribution than assumed" : ""}};
+             c.relative_width > 0 ? "a narrower size distribution than assumed" : "",
+             c.relative_width}};
   }
   bool Apply(const std::vector<double>& v, const calibrate::Condition&, const EffectContext& c,
              core::Scene* model, std::string* why) const override {

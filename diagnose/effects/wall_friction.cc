@@ -18,7 +18,7 @@ class WallFriction final : public Effect {
   std::vector<EffectParameter> Parameters(const EffectContext& c) const override {
     // Down to μw = 0 on the smoothest wall.
     return {{"delta_mu_w", "", -c.wall_friction, 0.6, 0.3, "higher wall friction than assumed",
-             c.wall_friction > 0 ? "lower wall friction than assumed" : ""}};
+             c.wall_friction > 0 ? "lower wall friction than assumed" : "", c.wall_friction}};
   }
   bool Apply(const std::vector<double>& v, const calibrate::Condition&, const EffectContext& c,
              core::Scene* model, std::string* why) const override {

@@ -5,9 +5,10 @@
 //   sigma² = u_measured² + sem_simulated² + floor²
 // u_measured is the table's (or the study's) standard uncertainty, sem_simulated the standard
 // error of the simulated mean over its replicates, and floor the model-discrepancy noise floor
-// (docs/diagnose.md: by default the single-run scatter of the simulation, so that differences
-// smaller than one packing's scatter — another engine's contact details — are not called a
-// missing effect). Units: the observable's (SI unless its name says otherwise).
+// (docs/diagnose.md: by default the single-run scatter of the simulation over the square root of
+// the repeats the measured value is the mean of: a value measured on one packing differs from
+// the right model's mean by about one packing's scatter, a mean of n packings by 1/√n of it).
+// Units: the observable's (SI unless its name says otherwise).
 //
 //   Observation o{"angle_deg BP (coating=1.5)", "angle_deg", {{"coating_PEG_wt_pct", "1.5"}},
 //                 31.2, 1.0};
@@ -33,6 +34,7 @@ struct Observation {
   double sem = 0;          // simulation standard error of the mean, >= 0
   double floor = 0;        // model-discrepancy noise floor, >= 0
   double scatter = 0;      // the simulation's single-run scatter (the floors' unit), >= 0
+  int repeats = 0;         // packings the measured value is the mean of (0: not stated, one)
   std::string experiment;  // the experiment file that measures it ("" when not known)
 
   double Sigma() const { return std::sqrt(uncertainty * uncertainty + sem * sem + floor * floor); }

@@ -7,6 +7,7 @@
 #include "diagnose/loop/candidate_step.h"
 #include "diagnose/loop/fit_state.h"
 #include "diagnose/ranking/discrepancy_floor.h"
+#include "diagnose/ranking/revaluation.h"
 #include "objectives/common/input_limits.h"
 
 namespace demcal::diagnose {
@@ -144,6 +145,16 @@ void Finish(const std::vector<Observation>& observations, const FitState& fit,
       m << "; next, not told apart: " << TieText(*d, candidates) << "; "
         << d->separating.description;
     if (!d->control_note.empty()) m << "; " << d->control_note;
+    if (!d->revaluation_note.empty())
+      m << "; next, a re-valued modelled parameter (model form, not named): "
+        << d->revaluation_note;
+  } else if (!d->revaluation_note.empty()) {
+    m << "model-form offset: the data re-value a parameter the base model already has ("
+      << d->revaluation_note
+      << "), by no more than its assumed value; an offset in that mechanism's law (another "
+         "engine's, a real powder's) fits the same, so no missing effect is named; calibrate "
+         "that parameter in the base to measure it ("
+      << d->gap_before.summary << ")";
   } else if (!d->control_note.empty()) {
     m << "model-form offset / no missing effect: " << d->control_note << " (discrepancy floor "
       << FloorText(d->floor_before) << " single-run scatter(s) beyond the fixed "
@@ -156,6 +167,29 @@ void Finish(const std::vector<Observation>& observations, const FitState& fit,
       << "allows (gap not explained by the library: " << d->gap_before.summary << ")";
   }
   d->message = m.str();
+}
+
+// The re-valuation rule (revaluation.h): true, with d->revalued and its note filled, when the
+// step's winner, and its tie if it has one, only re-value modelled parameters.
+bool RevaluesOnly(const DiagnosisStep& step, const std::vector<CandidateEffect>& candidates,
+                  Diagnosis* d) {
+  std::vector<int> at = {step.ranking.winner};
+  if (step.ranking.tied >= 0) at.push_back(step.ranking.tied);
+  for (int i : at) {
+    const RankingEntry& e = step.entries[i];
+    if (e.values.empty() || !IsRevaluation(candidates[e.candidate].parameters[0], e.values[0]))
+      return false;
+  }
+  std::string note;
+  for (int i : at) {
+    const RankingEntry& e = step.entries[i];
+    d->revalued.push_back({e.candidate, e.values});
+    note += (note.empty() ? "" : "; or ") +
+            RevaluationText(e.key, candidates[e.candidate].parameters[0], e.values[0],
+                            e.chi2_per_dof);
+  }
+  d->revaluation_note = note;
+  return true;
 }
 
 }  // namespace
@@ -213,6 +247,11 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
       d.termination = d.named.empty() ? DiagnosisTermination::kModelFormOffset
                                       : DiagnosisTermination::kGapRemains;
       d.control_note = s.step.ranking.message;
+      break;
+    }
+    if (s.has_winner && RevaluesOnly(s.step, candidates, &d)) {
+      d.termination = d.named.empty() ? DiagnosisTermination::kModelFormOffset
+                                      : DiagnosisTermination::kGapRemains;
       break;
     }
     if (s.has_winner && s.step.ranking.tied >= 0) {

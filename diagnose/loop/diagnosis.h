@@ -21,7 +21,9 @@
 //     most max_effects). No winner: "model-form offset". Two within ΔBIC 6: "not told apart"
 //     with the measurement that would separate them (separating_measurement.h). A control
 //     (a copy of a fitted parameter) first or level with the winner: "model-form offset / no
-//     missing effect", never the control.
+//     missing effect", never the control. A winner (and its tie, if any) that only re-values
+//     a parameter the base model already has, by no more than its assumed value
+//     (revaluation.h): "model-form offset" with the re-valuation stated, not named.
 // Frugal by construction: one base calibration, one simulated point per candidate and
 // iteration, two plus at most extra_refits × (base parameters + 3) per refitted candidate.
 //
@@ -97,6 +99,10 @@ struct Diagnosis {
   std::vector<int> not_told_apart;   // candidate indices of the last step's tie (kNotToldApart)
   SeparatingMeasurement separating;  // the measurement that would tell them apart
   std::string control_note;          // why the control guard held (a model-form offset)
+  // The best-ranked effects that only re-value a modelled parameter (revaluation.h), with
+  // their refitted values: a model-form offset, not named; empty when none.
+  std::vector<ActiveEffect> revalued;
+  std::string revaluation_note;
   ModelPoint final_point;
   std::vector<Observation> after;  // at the final point
   GapReport gap_after;

@@ -1,5 +1,8 @@
 #include "diagnose/loop/fit_state.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace demcal::diagnose {
 
 std::vector<double> FitState::Coordinates() const {
@@ -24,7 +27,8 @@ std::vector<Observation> WithPrediction(const std::vector<Observation>& observat
   for (size_t i = 0; i < out.size() && i < p.mean.size(); ++i) {
     out[i].simulated = p.mean[i];
     out[i].sem = p.sem[i];
-    out[i].floor = floor_factor * p.spread[i];
+    // The packing noise of a mean over `repeats` packings (none stated: one packing).
+    out[i].floor = floor_factor * p.spread[i] / std::sqrt(std::max(1, out[i].repeats));
     out[i].scatter = p.spread[i];
   }
   return out;

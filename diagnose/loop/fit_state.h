@@ -27,7 +27,7 @@ struct FitState {
 };
 
 // The observations with this prediction's simulated values beside them; floor = factor ×
-// single-run scatter.
+// single-run scatter / √repeats (the measured value's repeats; none stated: one).
 std::vector<Observation> WithPrediction(const std::vector<Observation>& observations,
                                         const Prediction& p, double floor_factor);
 Eigen::VectorXd Sigmas(const std::vector<Observation>& observations);

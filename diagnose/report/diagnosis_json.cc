@@ -157,6 +157,17 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
   }
   j["named_effects"] = named;
   j["named_effects_signed"] = signed_effects;
+  Json revalued = Json::array();  // model form: re-valued modelled parameters, never named
+  for (const ActiveEffect& a : d.revalued) {
+    const EffectParameter& p = info.candidates[a.candidate].parameters[0];
+    revalued.push_back({{"effect", info.candidates[a.candidate].key},
+                        {"parameter", p.name},
+                        {"unit", p.unit},
+                        {"value", Number(a.values[0])},
+                        {"assumed", Number(p.assumed)},
+                        {"direction", EffectDirection(p, a.values[0])}});
+  }
+  j["revalued_parameters"] = revalued;
   j["chi2_per_dof_after"] = Number(d.gap_after.chi2_per_dof);
   const size_t tried = d.steps.empty() ? info.candidates.size() : d.steps.front().entries.size();
   j["discrepancy_floor"] = {

@@ -37,6 +37,7 @@ struct StudyTarget {
   int experiment = 0;            // index into StudyFile::experiments
   calibrate::Condition condition;  // what differs for this target (from its measurement row)
   std::string provenance;        // measured, inferred, synthetic (from the table)
+  int repeats = 0;               // how many repeats the value is the mean of (0: not stated)
   std::string note;              // e.g. why an assumed uncertainty was chosen
 };
 

@@ -27,7 +27,7 @@ void CheckUncertainty(JsonFields& f, const std::string& key, const std::string& 
   f.Fail(key, os.str());
 }
 
-// Fills value, uncertainty, provenance and source of *t from the table row.
+// Fills value, uncertainty, provenance, repeats and source of *t from the table row.
 struct MeasureKeys {
   const char* table;
   const char* uncertainty;
@@ -46,6 +46,7 @@ void Measure(const std::string& table_path, const std::string& material, double 
     CheckUncertainty(f, keys.uncertainty, t->target.observable, assumed);
   t->target.source = table.path + " line " + std::to_string(row->line) + " (" + row->source + ")";
   t->provenance = row->provenance;
+  t->repeats = row->repeats;
   t->condition = row->conditions;  // the row's whole condition: what this target stands for
   if (!row->HasUncertainty() && !(assumed > 0))
     f.Fail(keys.uncertainty, "required: the table row (" + table.path + " line " +
