@@ -10,6 +10,14 @@ bool FeedLimited(double discharge_time_s, double feed_duration_s, double funnel_
   return discharge_time_s - feed_duration_s < std::sqrt(2 * funnel_height_m / gravity_m_s2);
 }
 
+const char* FunnelRegime(bool emptied, double discharge_time_s, double feed_duration_s,
+                         double funnel_height_m, double gravity_m_s2) {
+  if (!emptied) return "not_emptied";
+  return FeedLimited(discharge_time_s, feed_duration_s, funnel_height_m, gravity_m_s2)
+             ? "feed_limited"
+             : "orifice_limited";
+}
+
 void FunnelClock::Observe(const core::Simulation& sim) {
   const core::Particles& p = sim.particles();
   int64_t above = 0;

@@ -22,6 +22,12 @@ namespace demcal::objectives {
 bool FeedLimited(double discharge_time_s, double feed_duration_s, double funnel_height_m,
                  double gravity_m_s2);
 
+// What set a funnel's discharge time: "feed_limited" (FeedLimited), "orifice_limited" (it
+// emptied later than that: it held a charge after the feed ended, which only the orifice drains,
+// so its time measures the powder's flow) or "not_emptied".
+const char* FunnelRegime(bool emptied, double discharge_time_s, double feed_duration_s,
+                         double funnel_height_m, double gravity_m_s2);
+
 class FunnelClock {
  public:
   FunnelClock(double orifice_z_m, double feed_end_s)

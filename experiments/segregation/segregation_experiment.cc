@@ -223,6 +223,7 @@ void AnalyseOutflow(const OutflowRecorder& outflow, double first_out_s, Segregat
   const DischargeMetrics m = AnalyseDischarge(outflow.samples(), first_out_s, {.composition_bins = 20});
   if (!m.ok || outflow.samples().empty()) return;
   out->outflow = m.composition;
+  out->funnel_mass_flow_kg_s = m.mass_flow_kg_s;
   const std::vector<double>& total = outflow.samples().back().cumulative_mass_kg;
   double sum = 0;
   for (double kg : total) sum += kg;
@@ -263,6 +264,9 @@ SegregationRun RunSegregation(const core::Scene& model, const SegregationSetting
   out.funnel_feed_limited = settings.funnel.enabled && clock.emptied() &&
                             FeedLimited(out.discharge_time_s, out.feed_duration_s,
                                         settings.funnel.height_m, Norm(model.gravity_m_s2));
+  if (settings.funnel.enabled)
+    out.funnel_regime = FunnelRegime(clock.emptied(), out.discharge_time_s, out.feed_duration_s,
+                                     settings.funnel.height_m, Norm(model.gravity_m_s2));
   out.spheres_left_above = clock.spheres_above();
   if (settings.funnel.enabled && clock.started()) AnalyseOutflow(outflow, clock.first_out_s(), &out);
   out.heap = Crop(Select(TakeSnapshot(sim), [&](const Grain& g) { return g.id >= fixed; }),

@@ -98,6 +98,12 @@ struct SegregationRun {
   double first_out_s = 0, empty_s = 0;
   double feed_duration_s = 0;        // the pour's length (feed mass / rate)
   bool funnel_feed_limited = false;  // FeedLimited (funnel_clock.h): the time measures the feed
+  // FunnelRegime (funnel_clock.h): "orifice_limited", "feed_limited", "not_emptied" or "no_funnel".
+  std::string funnel_regime = "no_funnel";
+  // Steady outflow (kg/s): the slope of the mass out between 20 % and 80 % of it (discharge
+  // metrics); an orifice-limited funnel passes less than the feed rate, a feed-limited one the
+  // feed rate. 0 without a funnel or outflow.
+  double funnel_mass_flow_kg_s = 0;
   int64_t spheres_left_above = 0;  // at or above the orifice at the end
   // What left the funnel (grains first seen below the orifice plane), in time bins from the
   // first grain out to the discharge end: the paper's Fig. 16 (pre-segregation in the funnel

@@ -194,6 +194,8 @@ ordered_json RunJson(int replicate, const SegregationRun& run) {
   j["discharge_time_s"] = run.funnel_emptied ? ordered_json(run.discharge_time_s) : nullptr;
   j["feed_duration_s"] = run.feed_duration_s;
   j["funnel_feed_limited"] = run.funnel_feed_limited;
+  j["funnel_regime"] = run.funnel_regime;
+  j["funnel_mass_flow_kg_s"] = run.funnel_mass_flow_kg_s;
   j["outflow_mass_fraction"] = run.outflow_mass_fraction;
   j["settle_time_s"] = run.settle.settle_time_s;
   j["settled_by"] = run.settle.settled_by.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(run.settle.settled_by);
