@@ -8,6 +8,7 @@
 
 #include "files/json_document.h"
 #include "workflow/reproduce/calibration_step.h"
+#include "workflow/reproduce/clump_table.h"
 #include "workflow/reproduce/experiment_edit.h"
 #include "workflow/reproduce/stages.h"
 
@@ -28,6 +29,8 @@ CalibrationStep SpeciesStep(const WorkflowFile& w, size_t k, const std::string& 
           .uncertainty = w.angle_uncertainty_deg,
           .uncertainty_note = w.angle_uncertainty_note,
           .replicates = w.replicates,
+          // Held (the paper's Table 1 value): one candidate per count, at `start`.
+          .max_evaluations = s.hold ? 1 : CalibrationStep{}.max_evaluations,
           .clump_counts = s.clump_counts,
           .semi_axes = s.semi_axes};
 }
@@ -46,11 +49,20 @@ bool RunSpeciesStage(ReproduceContext& ctx, nlohmann::json* result, std::string*
     nlohmann::ordered_json experiment;
     if (!ReadExperimentJson(s.experiment_file, &experiment, error)) return false;
     if (std::isfinite(o.value)) SetPairProperty(&experiment, s.name, s.name, s.property, o.value);
+    // The chosen shape travels with the calibrated value: stages 3, 6 and 7 run that grain.
+    if (o.clump_count > 0) SetSpeciesClump(&experiment, s.name, s.semi_axes, o.clump_count);
     const std::string calibrated = step.dir + "/calibrated_experiment.json";
     if (!WriteJsonFile(calibrated, experiment, error)) return false;
     nlohmann::json entry = o.ToJson();
     entry["property"] = s.property;
     entry["calibrated_experiment"] = calibrated;
+    if (!s.clump_counts.empty()) {  // the paper's Fig. 3, from the loop's own outputs
+      const nlohmann::json table = ReadClumpCountTable(step.dir);
+      entry["semi_axes"] = s.semi_axes;
+      entry["held"] = s.hold;
+      entry["clump_table"] = table["rows"];
+      entry["clump_note"] = table["note"];
+    }
     species[s.name] = entry;
     values["angle_" + s.name + "_deg"] =
         ValueJson(o.simulated, o.sem,
