@@ -51,6 +51,13 @@ nlohmann::json ReadClumpCountTable(const std::string& dir) {
   return table;
 }
 
+nlohmann::json NearestClumpRow(const nlohmann::json& rows) {
+  nlohmann::json best;
+  for (const nlohmann::json& row : rows)
+    if (row["cost"].is_number() && (best.is_null() || row["cost"] < best["cost"])) best = row;
+  return best;
+}
+
 bool AddClumpCountTable(const std::string& species, const nlohmann::json& entry, HtmlReport* r,
                         std::string* error) {
   if (!entry.is_object() || !entry.contains("clump_table") || entry["clump_table"].empty())

@@ -17,6 +17,10 @@ namespace demcal::workflow {
 // calibration's output folder.
 nlohmann::json ReadClumpCountTable(const std::string& dir);
 
+// The row of the count with the least cost (null: no row has one). When no count matches, the
+// later stages still need a grain: the nearest one, named as such.
+nlohmann::json NearestClumpRow(const nlohmann::json& rows);
+
 // The table of one species (`entry`: stage 1's species entry with its "clump_table"), with the
 // count chosen and the note of the loop; nothing when the entry has no table.
 bool AddClumpCountTable(const std::string& species, const nlohmann::json& entry, HtmlReport* r,

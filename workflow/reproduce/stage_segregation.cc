@@ -50,9 +50,9 @@ bool BuildScenarios(const ReproduceContext& ctx, std::vector<Scenario>* out, std
   for (const auto& [name, s] : ctx.results["species"]["species"].items()) {
     if (s["value"].is_number())
       SetPairProperty(&base, name, name, s["property"].get<std::string>(), s["value"].get<double>());
-    if (s.value("clump_count", 0) > 0 && s.contains("semi_axes"))  // stage 1's chosen shape
+    if (s.value("clump_count_used", 0) > 0 && s.contains("semi_axes"))  // stage 1's grain
       SetSpeciesClump(&base, name, s["semi_axes"].get<std::vector<double>>(),
-                      s["clump_count"].get<int>());
+                      s["clump_count_used"].get<int>());
   }
   const std::string ep = w.coating.material;
   const nlohmann::json& pairs = ctx.results["dissimilar_pairs"];
