@@ -49,7 +49,8 @@ bool BuildScenarios(const ReproduceContext& ctx, std::vector<Scenario>* out, std
   }
   for (const auto& [name, s] : ctx.results["species"]["species"].items()) {
     if (s["value"].is_number())
-      SetPairProperty(&base, name, name, s["property"].get<std::string>(), s["value"].get<double>());
+      SetPairProperty(&base, name, name, s["property"].get<std::string>(),
+                      s["value"].get<double>());
     if (s.value("clump_count_used", 0) > 0 && s.contains("semi_axes"))  // stage 1's grain
       SetSpeciesClump(&base, name, s["semi_axes"].get<std::vector<double>>(),
                       s["clump_count_used"].get<int>());

@@ -76,24 +76,29 @@ bool RunSpeciesStage(ReproduceContext& ctx, nlohmann::json* result, std::string*
     entry["calibrated_experiment"] = calibrated;
     species[s.name] = entry;
     const bool matched = o.termination == calibrate::Termination::kWithinNoise;
-    std::string angle_note =
-        matched ? "calibrated to it (" + (s.hold ? "clump count; " + s.property + " held" : s.property) + ")"
-                : std::string("not matched: ") + calibrate::TerminationName(o.termination) + ": " +
-                      o.message;
+    const std::string how = s.hold ? "clump count; " + s.property + " held" : s.property;
+    std::string angle_note = matched ? "calibrated to it (" + how + ")"
+                                     : std::string("not matched: ") +
+                                           calibrate::TerminationName(o.termination) + ": " +
+                                           o.message;
     double angle = o.simulated, angle_sem = o.sem;
     std::string count_note =
         s.clump_counts.empty() ? "shape fixed by the workflow file: " + w.shape_assumption : "";
     if (!s.clump_counts.empty() && o.clump_count <= 0 && used > 0) {
+      const std::string held = s.property + " held at " + core::NumberText(s.start);
       angle = used_row["angle_deg"].is_number() ? used_row["angle_deg"].get<double>() : NAN;
-      angle_sem = used_row["angle_sem_deg"].is_number() ? used_row["angle_sem_deg"].get<double>() : NAN;
-      count_note = "no count matched the measured angle within noise with " + s.property +
-                   " held at " + core::NumberText(s.start) + "; the nearest, " +
-                   std::to_string(used) + " spheres, is what the later stages run (the shape "
-                   "rule's aspect ratio, not the friction, is what to revisit)";
-      angle_note = "nearest clump count (" + std::to_string(used) + " spheres), not matched: " + count_note;
+      angle_sem = used_row["angle_sem_deg"].is_number() ? used_row["angle_sem_deg"].get<double>()
+                                                        : NAN;
+      count_note = "no count matched the measured angle within noise with " + held +
+                   "; the nearest, " + std::to_string(used) + " spheres, is what the later "
+                   "stages run (the shape rule's aspect ratio, not the friction, is what to "
+                   "revisit)";
+      angle_note = "not matched: the nearest clump count (" + std::to_string(used) +
+                   " spheres) with " + held;
     }
     values["angle_" + s.name + "_deg"] = ValueJson(angle, angle_sem, angle_note);
-    values["clump_count_" + s.name] = ValueJson(o.clump_count > 0 ? o.clump_count : NAN, NAN, count_note);
+    values["clump_count_" + s.name] =
+        ValueJson(o.clump_count > 0 ? o.clump_count : NAN, NAN, count_note);
   }
   *result = {{"species", species}, {"values", values}};
   return true;

@@ -28,7 +28,8 @@ TrackedGranule Landing() {
   TrackedGranule g;
   const double speed[] = {1.5, 1.5, 0.4, 0.2, 0.2, 0.01, 0.0};
   const double z[] = {0.08, 0.06, 0.051, 0.050, 0.048, 0.0465, 0.0465};
-  for (int k = 0; k < 7; ++k) g.track.samples.push_back(Sample(0.1 + 0.002 * k, speed[k], z[k], 0.05));
+  for (int k = 0; k < 7; ++k)
+    g.track.samples.push_back(Sample(0.1 + 0.002 * k, speed[k], z[k], 0.05));
   g.impact_sample = 2;
   return g;
 }
@@ -77,7 +78,8 @@ Snapshot HandMadeHeap() {
   Snapshot s;
   const int kEp = 2, kBp = 0, kTaed = 1;
   const int species[] = {kEp, kBp, kBp, kBp, kTaed, kEp};
-  for (int k = 0; k < 6; ++k) s.grains.push_back({.id = k, .species = species[k], .radius_m = 0.001});
+  for (int k = 0; k < 6; ++k)
+    s.grains.push_back({.id = k, .species = species[k], .radius_m = 0.001});
   s.spheres = {{{0, 0, 0}, 0.001, 0},
                {{0.001999, 0, 0}, 0.001, 1},
                {{0, 0.0015, 0.0013}, 0.001, 2},
