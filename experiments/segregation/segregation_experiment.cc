@@ -207,7 +207,11 @@ core::Scene BuildSegregationScene(const core::Scene& model, const SegregationSet
   if (s.funnel.enabled) scene.walls.push_back(Funnel(s));
   scene.domain_min_m = {-kMargin, -kMargin, -kMargin};
   scene.domain_max_m = {s.width_m + kMargin, s.depth_m + kMargin, top + kMargin};
-  if (s.glued_base) scene.particles = GluedBase(BaseSpec(model, s, seed));
+  if (s.glued_base) {  // fixed particles are spheres: a clump feed gets a sphere layer
+    GluedBaseSpec base = BaseSpec(model, s, seed);
+    UseSphereSpeciesForBase(&scene, &base);
+    scene.particles = GluedBase(base);
+  }
   *fixed_count = static_cast<int64_t>(scene.particles.size());
   scene.factories.push_back(MakeFeedFactory(model, s.feed, FeedRegion(model, s)));
   scene.time.duration_s = s.settle.max_time_s;

@@ -2,6 +2,7 @@
 
 #include <functional>
 
+#include "experiments/segregation/mechanism/mechanism_observables.h"
 #include "objectives/common/replicates.h"
 
 namespace demcal::workflow {
@@ -164,7 +165,8 @@ ordered_json TrackedJson(const objectives::TrackedGranule& g) {
   return j;
 }
 
-ordered_json RunJson(int replicate, const SegregationRun& run) {
+ordered_json RunJson(int replicate, const SegregationRun& run,
+                     const objectives::SegregationSettings& settings) {
   ordered_json j;
   j["replicate"] = replicate;
   j["seed"] = run.seed;
@@ -204,6 +206,10 @@ ordered_json RunJson(int replicate, const SegregationRun& run) {
   ordered_json tracked = ordered_json::array();
   for (const objectives::TrackedGranule& g : run.tracked) tracked.push_back(TrackedJson(g));
   j["tracked_granules"] = tracked;
+  for (const objectives::MechanismObservable& o : objectives::MechanismObservables()) {
+    const std::optional<double> v = run.ok() ? o.per_run(run, settings) : std::nullopt;
+    j[o.name] = v ? ordered_json(*v) : nullptr;
+  }
   return j;
 }
 
@@ -226,6 +232,7 @@ std::vector<NamedEstimate> SegregationResult::Values() const {
       {"mixture_angle_deg", mixture_angle_deg},
       {"discharge_time_s", discharge_time_s},
       {"penetration_depth_diameters", penetration_depth_diameters}};
+  values.insert(values.end(), mechanism.begin(), mechanism.end());
   for (const SegregationSpeciesResult& s : species)
     for (const NamedEstimate& index : s.indices)
       values.push_back({s.species + "." + index.name, index.value});
@@ -253,6 +260,13 @@ SegregationResult SummariseSegregation(const objectives::SegregationSettings& se
   out.discharge_time_s = objectives::Summarise(discharge);
   out.tracked_species = species_names.at(settings.TrackedSpecies());
   out.penetration_depth_diameters = objectives::Summarise(depths);
+  for (const objectives::MechanismObservable& o : objectives::MechanismObservables()) {
+    std::vector<double> per_run;
+    for (const SegregationRun& run : runs)
+      if (run.ok())
+        if (const std::optional<double> v = o.per_run(run, settings)) per_run.push_back(*v);
+    out.mechanism.push_back({o.name, objectives::Summarise(per_run)});
+  }
   out.runs = std::move(runs);
   return out;
 }
@@ -277,9 +291,15 @@ ordered_json SegregationResultJson(const SegregationResult& r) {
   result["discharge_time_s"] = StatJson(r.discharge_time_s);
   result["tracked_species"] = r.tracked_species;
   result["penetration_depth_diameters"] = StatJson(r.penetration_depth_diameters);
+  ordered_json mechanism = ordered_json::object();
+  for (size_t k = 0; k < r.mechanism.size(); ++k) {
+    mechanism[r.mechanism[k].name] = StatJson(r.mechanism[k].value);
+    mechanism[r.mechanism[k].name]["meaning"] = objectives::MechanismObservables()[k].meaning;
+  }
+  result["mechanism"] = mechanism;
   ordered_json runs_json = ordered_json::array();
   for (size_t k = 0; k < r.runs.size(); ++k)
-    runs_json.push_back(RunJson(static_cast<int>(k), r.runs[k]));
+    runs_json.push_back(RunJson(static_cast<int>(k), r.runs[k], settings));
   result["runs"] = runs_json;
   return result;
 }

@@ -49,9 +49,11 @@ struct SegregationResult {
   std::vector<SegregationSpeciesResult> species;  // in the model's species order
   objectives::Summary mixture_angle_deg, discharge_time_s, penetration_depth_diameters;
   std::string tracked_species;
+  // The mechanism observables (mechanism/mechanism_observables.h), in their registry's order.
+  std::vector<NamedEstimate> mechanism;
   std::vector<objectives::SegregationRun> runs;  // in replicate order
-  // mixture_angle_deg, discharge_time_s, penetration_depth_diameters, then
-  // "<species>.<index>" for every species and index.
+  // mixture_angle_deg, discharge_time_s, penetration_depth_diameters, the mechanism
+  // observables, then "<species>.<index>" for every species and index.
   std::vector<NamedEstimate> Values() const;
 };
 

@@ -45,6 +45,16 @@ void SetPairProperty(nlohmann::ordered_json* experiment, const std::string& a, c
   (*pair)[key] = value;
 }
 
+void SetSpeciesClump(nlohmann::ordered_json* experiment, const std::string& name,
+                     const std::vector<double>& semi_axes, int count) {
+  if (!experiment->contains("species")) return;
+  for (nlohmann::ordered_json& s : (*experiment)["species"]) {
+    if (s.value("name", "") != name) continue;
+    if (count <= 1) s.erase("clump");
+    else s["clump"] = {{"ellipsoid", {{"semi_axes", semi_axes}, {"sphere_count", count}}}};
+  }
+}
+
 double PairProperty(const nlohmann::ordered_json& experiment, const std::string& a,
                     const std::string& b, const std::string& key, double fallback) {
   if (!experiment.contains("interactions")) return fallback;

@@ -13,6 +13,7 @@
 //   if (!ParseEditedExperiment(e, dir + "/experiment.json", &file, &error)) ...;
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "experiments/common/experiment_file.h"
 
@@ -29,6 +30,13 @@ bool ParseEditedExperiment(const nlohmann::ordered_json& experiment, const std::
 // this key; the file's default fills the rest) if it is not listed.
 void SetPairProperty(nlohmann::ordered_json* experiment, const std::string& a, const std::string& b,
                      const std::string& key, double value);
+
+// Gives species `name` the shape of the clump-count loop (workflow/calibration/study_runs.cc):
+// `count` spheres on the long axis of the ellipsoid `semi_axes` (proportions only: the species'
+// diameter sets the size); count 1 removes any clump (a sphere). No species of that name: no
+// change.
+void SetSpeciesClump(nlohmann::ordered_json* experiment, const std::string& name,
+                     const std::vector<double>& semi_axes, int count);
 
 // The pair's `key`, or the interactions.default's, or `fallback`.
 double PairProperty(const nlohmann::ordered_json& experiment, const std::string& a,

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "outputs/html_report.h"
+#include "workflow/reproduce/clump_table.h"
 #include "workflow/reproduce/report_headline.h"
 #include "workflow/reproduce/reproduce_plots.h"
 
@@ -139,7 +140,10 @@ bool SpeciesSection(const ReportInputs& in, HtmlReport* r, std::string* error) {
                       PlusMinus(At(o, "measured"), At(o, "uncertainty"), "%.1f"),
                       PlusMinus(At(o, "simulated"), At(o, "sem"), "%.1f"), o.value("termination", ""),
                       o.value("result_dir", "")});
-  return r->Table(t, error);
+  if (!r->Table(t, error)) return false;
+  for (const auto& [name, o] : s.items())
+    if (!AddClumpCountTable(name, o, r, error)) return false;
+  return true;
 }
 
 bool CohesionSection(const ReportInputs& in, HtmlReport* r, std::string* error) {

@@ -78,6 +78,7 @@ nlohmann::json ExtractSegregationMetrics(const SegregationResult& r) {
         m[key + "_floor"] = floor->n > 0 ? Finite(floor->mean) : nlohmann::json();
     }
   m["mixture_angle_deg"] = MeanOf(&r.mixture_angle_deg);
+  for (const NamedEstimate& o : r.mechanism) m[o.name] = MeanOf(&o.value);
   m["discharge_time_s"] = MeanOf(&r.discharge_time_s);
   if (run) {  // 1/0: its mean is the fraction
     m["funnel_feed_limited"] = run->funnel_feed_limited ? 1 : 0;
@@ -154,6 +155,16 @@ nlohmann::json SegregationSummaryValues(const nlohmann::json& scenarios, const s
   const std::string cov_r_note = "random-mixture CoV: grows with coarse-graining";
   put("cov_r_EP_3d", "uncoated", ep + ".cov_r_3d", cov_r_note);
   put("cov_r_EP_front", "uncoated", ep + ".cov_r_2d_front", cov_r_note);
+  // The paper's mechanism (section 3.5, Figs. 17, 19) per scenario; the spread is between heaps.
+  for (const char* s : {"uncoated", "coated", "excessive"}) {
+    const std::string tail = std::string("_") + s;
+    put("ep_landing_depth" + tail + "_m", s, "tracked_landing_depth_m",
+        "tracked EP: centre below the local surface at first rest after impact (> 0 buried)");
+    put("ep_after_impact_specific_kinetic" + tail + "_J_kg", s,
+        "tracked_after_impact_specific_kinetic_J_kg", "tracked EP: mean 1/2 v^2, 20 ms after impact");
+    put("ep_bp_contacts_per_grain" + tail, s, "tracked_major_contacts_per_grain",
+        "settled heap: BP grains touching each EP grain");
+  }
   put("ep_impact_specific_kinetic_J_kg", "uncoated", "impact_specific_kinetic_J_kg",
       "mean peak over the tracked granules");
   // CoV reduction by coating, 100 (1 − CoV_coated / CoV_uncoated), σ by first-order propagation.

@@ -52,9 +52,14 @@ bool BuildScenarios(const ReproduceContext& ctx, std::vector<Scenario>* out, std
     fidelity["size_scale"] = w.segregation.size_scale;
     fidelity["stiffness_scale"] = w.segregation.stiffness_scale;
   }
-  for (const auto& [name, s] : ctx.results["species"]["species"].items())
+  for (const auto& [name, s] : ctx.results["species"]["species"].items()) {
     if (s["value"].is_number())
-      SetPairProperty(&base, name, name, s["property"].get<std::string>(), s["value"].get<double>());
+      SetPairProperty(&base, name, name, s["property"].get<std::string>(),
+                      s["value"].get<double>());
+    if (s.value("clump_count_used", 0) > 0 && s.contains("semi_axes"))  // stage 1's grain
+      SetSpeciesClump(&base, name, s["semi_axes"].get<std::vector<double>>(),
+                      s["clump_count_used"].get<int>());
+  }
   const std::string ep = w.coating.material;
   const nlohmann::json& pairs = ctx.results["dissimilar_pairs"];
   Scenario uncoated{"uncoated", base};

@@ -6,9 +6,11 @@
 // for the stages after it.
 #include <cmath>
 
+#include "core/math/number_text.h"
 #include "files/json_document.h"
 #include "objectives/farm/farm.h"
 #include "workflow/reproduce/calibration_step.h"
+#include "workflow/reproduce/clump_table.h"
 #include "workflow/reproduce/experiment_edit.h"
 #include "workflow/reproduce/stages.h"
 
@@ -29,6 +31,8 @@ CalibrationStep SpeciesStep(const WorkflowFile& w, size_t k, const std::string& 
           .uncertainty = w.angle_uncertainty_deg,
           .uncertainty_note = w.angle_uncertainty_note,
           .replicates = w.replicates,
+          // Held (the paper's Table 1 value): one candidate per count, at `start`.
+          .max_evaluations = s.hold ? 1 : CalibrationStep{}.max_evaluations,
           .clump_counts = s.clump_counts,
           .semi_axes = s.semi_axes};
 }
@@ -40,31 +44,65 @@ bool RunSpeciesStage(ReproduceContext& ctx, nlohmann::json* result, std::string*
     const WorkflowSpecies& s = w.species[k];
     const std::string key = "species/" + s.name;
     *ctx.log << "reproduce: species " << k + 1 << "/" << w.species.size() << " " << s.name
-             << ": " << s.property << " against the measured repose angle\n";
+             << ": " << (s.hold ? "clump count, " + s.property + " held" : s.property)
+             << " against the measured repose angle\n";
     const CalibrationStep step = SpeciesStep(w, k, ctx.StageDir("species"));
     CalibrationOutcome o;
     if (!RunCalibrationStep(ctx, step, &o, error)) return false;
+    nlohmann::json entry = o.ToJson();
+    // The paper's Fig. 3, from the loop's own outputs. Without a matching count the later stages
+    // run the nearest one (least cost), and the rows say it did not match.
+    int used = o.clump_count;
+    nlohmann::json used_row;
+    if (!s.clump_counts.empty()) {
+      const nlohmann::json table = ReadClumpCountTable(step.dir);
+      entry["semi_axes"] = s.semi_axes;
+      entry["held"] = s.hold;
+      entry["clump_table"] = table["rows"];
+      entry["clump_note"] = table["note"];
+      for (const nlohmann::json& row : table["rows"])
+        if (row["count"] == o.clump_count) used_row = row;
+      if (used <= 0 && !(used_row = NearestClumpRow(table["rows"])).is_null())
+        used = used_row["count"].get<int>();
+      entry["clump_count_used"] = used;
+    }
     nlohmann::ordered_json experiment;
     if (!ReadExperimentJson(s.experiment_file, &experiment, error)) return false;
     if (std::isfinite(o.value)) SetPairProperty(&experiment, s.name, s.name, s.property, o.value);
+    // The shape travels with the calibrated value: stages 3, 6 and 7 run that grain.
+    if (used > 0) SetSpeciesClump(&experiment, s.name, s.semi_axes, used);
     const std::string calibrated = step.dir + "/calibrated_experiment.json";
     // Under mpirun only rank 0 writes; the others read the file after the
     // stage, once rank 0 has written it (StageEnd in run_reproduce.cc).
     if (objectives::farm::IsManager() && !WriteJsonFile(calibrated, experiment, error))
       return false;
-    nlohmann::json entry = o.ToJson();
     entry["property"] = s.property;
     entry["calibrated_experiment"] = calibrated;
     species[s.name] = entry;
-    values["angle_" + s.name + "_deg"] =
-        ValueJson(o.simulated, o.sem,
-                  o.termination == calibrate::Termination::kWithinNoise
-                      ? "calibrated to it (" + s.property + ")"
-                      : std::string("not matched: ") + calibrate::TerminationName(o.termination) +
-                            ": " + o.message);
-    values["clump_count_" + s.name] = ValueJson(
-        o.clump_count > 0 ? o.clump_count : NAN, NAN,
-        s.clump_counts.empty() ? "shape fixed by the workflow file: " + w.shape_assumption : "");
+    const bool matched = o.termination == calibrate::Termination::kWithinNoise;
+    const std::string how = s.hold ? "clump count; " + s.property + " held" : s.property;
+    std::string angle_note = matched ? "calibrated to it (" + how + ")"
+                                     : std::string("not matched: ") +
+                                           calibrate::TerminationName(o.termination) + ": " +
+                                           o.message;
+    double angle = o.simulated, angle_sem = o.sem;
+    std::string count_note =
+        s.clump_counts.empty() ? "shape fixed by the workflow file: " + w.shape_assumption : "";
+    if (!s.clump_counts.empty() && o.clump_count <= 0 && used > 0) {
+      const std::string held = s.property + " held at " + core::NumberText(s.start);
+      angle = used_row["angle_deg"].is_number() ? used_row["angle_deg"].get<double>() : NAN;
+      angle_sem = used_row["angle_sem_deg"].is_number() ? used_row["angle_sem_deg"].get<double>()
+                                                        : NAN;
+      count_note = "no count matched the measured angle within noise with " + held +
+                   "; the nearest, " + std::to_string(used) + " spheres, is what the later "
+                   "stages run (the shape rule's aspect ratio, not the friction, is what to "
+                   "revisit)";
+      angle_note = "not matched: the nearest clump count (" + std::to_string(used) +
+                   " spheres) with " + held;
+    }
+    values["angle_" + s.name + "_deg"] = ValueJson(angle, angle_sem, angle_note);
+    values["clump_count_" + s.name] =
+        ValueJson(o.clump_count > 0 ? o.clump_count : NAN, NAN, count_note);
   }
   *result = {{"species", species}, {"values", values}};
   return true;

@@ -36,6 +36,11 @@ const std::vector<std::string>& ReferenceKeys() {
       "cov_TAED_coated", "cov_r_EP_3d", "cov_r_EP_front", "mixture_angle_uncoated_deg",
       "mixture_angle_coated_deg", "discharge_time_uncoated_s", "discharge_time_coated_s",
       "ep_outflow_fraction", "ep_impact_specific_kinetic_J_kg",
+      "ep_landing_depth_uncoated_m", "ep_landing_depth_coated_m", "ep_landing_depth_excessive_m",
+      "ep_after_impact_specific_kinetic_uncoated_J_kg",
+      "ep_after_impact_specific_kinetic_coated_J_kg",
+      "ep_after_impact_specific_kinetic_excessive_J_kg", "ep_bp_contacts_per_grain_uncoated",
+      "ep_bp_contacts_per_grain_coated", "ep_bp_contacts_per_grain_excessive",
       // stage 7: fidelity check
       "fidelity_angle_shift_deg"};
   return keys;

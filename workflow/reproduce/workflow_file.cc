@@ -51,7 +51,7 @@ void NumberList(JsonFields& f, const std::string& key, Presence presence, Range 
 void ParseSpecies(const nlohmann::json& j, const std::string& path, const std::string& file,
                   WorkflowSpecies* s, JsonStatus* status) {
   JsonFields f(j, path, {"name", "experiment_file", "property", "min", "max", "start",
-                         "clump_counts", "semi_axes"}, status);
+                         "clump_counts", "semi_axes", "hold"}, status);
   f.String("name", &s->name, kRequired);
   f.String("experiment_file", &s->experiment_file, kRequired);
   s->experiment_file = Resolve(file, s->experiment_file);
@@ -62,6 +62,7 @@ void ParseSpecies(const nlohmann::json& j, const std::string& path, const std::s
   f.Number("start", &s->start, kOptional, Range::Closed(0, 10));
   if (f.ok() && !(s->min < s->max && s->start >= s->min && s->start <= s->max))
     f.Fail("start", "needs min < max and min <= start <= max");
+  f.Bool("hold", &s->hold, kOptional);
   std::vector<int64_t> counts;
   f.Integers("clump_counts", &counts, kOptional, Range::Of(limits::kClumpSpheres));
   if (f.ok() && f.Has("clump_counts") && counts.empty())

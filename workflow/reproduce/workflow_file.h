@@ -28,6 +28,9 @@ struct WorkflowSpecies {
   double min = 0, max = 1, start = 0;
   std::vector<int> clump_counts;  // empty: the experiment file's shape; else the n loop
   std::vector<double> semi_axes;  // for the clump loop: a >= b >= c > 0 (any unit)
+  // The paper's shape calibration (section 2.4): the property held at `start` (Table 1's value)
+  // and each clump count judged by its angle there; false: the property calibrated per count.
+  bool hold = false;
 };
 
 // Stages 3–5: the coated species, its levels and the curve.

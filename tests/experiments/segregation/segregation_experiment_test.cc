@@ -90,6 +90,23 @@ TEST_CASE("segregation scene: open box, funnel on the box axis, feed with the ma
   CHECK(direct.factories[0].region.min_m.z == Approx(0.04));
 }
 
+TEST_CASE("segregation scene with a clump feed: the glued base is a sphere layer", "[unit]") {
+  core::Scene model = CoarseTernaryModel();
+  model.species[0].clump_shape = {{{-0.5, 0, 0}, 0.6}, {{0.5, 0, 0}, 0.6}};  // the base's species
+  const SegregationSettings s = TinySettings();
+  std::string error;
+  REQUIRE(s.IsValid(model, &error));
+  int64_t fixed = 0;
+  const core::Scene scene = BuildSegregationScene(model, s, 7, &fixed);
+  INFO(error);
+  CHECK(scene.IsValid(&error));  // fixed particles must be spheres
+  REQUIRE(fixed > 0);
+  REQUIRE(scene.species.size() == model.species.size() + 1);
+  CHECK(scene.species.back().clump_shape.empty());
+  CHECK(scene.species.back().material == model.species[0].material);
+  CHECK(scene.particles.front().species == static_cast<int>(model.species.size()));
+}
+
 TEST_CASE("segregation settings name the offending field", "[unit]") {
   const core::Scene model = CoarseTernaryModel();
   std::string error;

@@ -117,3 +117,62 @@ TEST_CASE("reproduce report: verdict first, short verdicts, each note once", "[u
   CHECK(md_table < md_notes);
   fs::remove_all(out);
 }
+
+TEST_CASE("reproduce report: the Fig. 3 clump-count table and the mechanism rows", "[unit]") {
+  const fs::path root = demcal::testing::RepoRoot();
+  WorkflowFile w;
+  std::string error;
+  REQUIRE(LoadWorkflowFile((root / "datasets/alizadeh2018/workflow_clumps.json").string(), &w,
+                           &error));
+  for (const WorkflowSpecies& s : w.species) {  // the paper's shape calibration: μr held
+    CHECK(s.hold);
+    CHECK(s.clump_counts.back() == (s.name == "EP" ? 3 : 5));
+  }
+  nlohmann::json results = StandInResults();
+  results["species"]["species"]["EP"]["clump_count"] = 3;
+  results["species"]["species"]["EP"]["clump_note"] = "chose 3, the smallest count that matches";
+  results["species"]["species"]["EP"]["clump_table"] = nlohmann::json::parse(R"json([
+    {"count": 1, "angle_deg": 26.04, "angle_sem_deg": 0.51, "cost": 24.3, "within_noise": false,
+     "agrees": false, "termination": "budget"},
+    {"count": 2, "angle_deg": 28.7, "angle_sem_deg": null, "cost": null, "within_noise": false,
+     "agrees": false, "termination": "failed"},
+    {"count": 3, "angle_deg": 30.66, "angle_sem_deg": 0.42, "cost": 0.31, "within_noise": true,
+     "agrees": true, "termination": "within_noise"}])json");
+  DemcalValues v;
+  v["clump_count_EP"] = {.mean = 3};
+  v["ep_landing_depth_uncoated_m"] = {.mean = 4.2e-4, .sem = 1e-4};
+  v["ep_bp_contacts_per_grain_coated"] = {.mean = 9.2, .sem = 0.4};
+  const std::vector<SummaryRow> rows = BuildSummaryRows(w.reference, v);
+  int mechanism_rows = 0;
+  for (const SummaryRow& row : rows)
+    mechanism_rows += row.key.starts_with("ep_landing_depth_") ||
+                      row.key.starts_with("ep_after_impact_specific_kinetic_") ||
+                      row.key.starts_with("ep_bp_contacts_per_grain_");
+  CHECK(mechanism_rows == 9);  // three observables × uncoated, coated, excessive
+  const nlohmann::json timings = {{"species", 60.0}};
+  const fs::path out = fs::temp_directory_path() / "demcal_reproduce_report_clumps_test";
+  fs::remove_all(out);
+  fs::create_directories(out);
+  const ReportInputs in{.workflow = &w, .results = &results, .rows = &rows,
+                        .timings = &timings, .quick = true, .out_dir = out.string()};
+  REQUIRE(WriteReproduceReport(in, &error));
+  const std::string html = ReadText(out / "report.html");
+  const std::string md = ReadText(out / "report.md");
+  // The Fig. 3 table: after the species table, one row per count, angle ± sem, cost, verdict.
+  const size_t fig3 = html.find("EP: clump sphere count against the measured angle");
+  REQUIRE(fig3 != std::string::npos);
+  CHECK(html.find("1. Species") < fig3);
+  CHECK(html.find("<td>26.0 ± 0.5</td>", fig3) != std::string::npos);
+  CHECK(html.find("<td>28.7</td>", fig3) != std::string::npos);  // no sem: no ±
+  CHECK(html.find("<td>30.7 ± 0.4</td>", fig3) != std::string::npos);
+  CHECK(html.find("<td>24.3</td>", fig3) != std::string::npos);
+  CHECK(html.find("EP: chose 3, the smallest count that matches.", fig3) != std::string::npos);
+  CHECK(md.find("| spheres | angle demcal [deg] | cost (Σ z²) |") != std::string::npos);
+  // The mechanism rows, in the summary table with their units.
+  CHECK(html.find("tracked EP: depth below the heap surface at first rest after impact, "
+                  "uncoated [m]") != std::string::npos);
+  CHECK(html.find("0.00042 ± 0.0001") != std::string::npos);
+  CHECK(html.find("BP grains touching each EP grain in the heap, 2.5 wt% [-]") !=
+        std::string::npos);
+  fs::remove_all(out);
+}
