@@ -45,17 +45,17 @@ void MarkFeedLimited(const nlohmann::json& scenario, nlohmann::json* value) {
 }
 
 // What a compared discharge-time row rests on: the share of orifice-limited runs and their steady
-// outflow. The orifice is chosen for the uncoated mixture's measured time at the default
-// fidelity, so the uncoated time is no independent check; the coated time's change is.
+// outflow. The orifice is chosen for the uncoated mixture's measured time, so the uncoated time
+// is no independent check; the coated time's change is.
 std::string DischargeNote(const nlohmann::json& scenario) {
   const double orifice = Get(scenario, "funnel_orifice_limited").first;
   const double flow = Get(scenario, "funnel_mass_flow_kg_s").first;
   char text[480];
   std::snprintf(text, sizeof(text),
                 "orifice-limited funnel in %.0f %% of the runs (steady outflow %.3g kg/s); its "
-                "orifice is chosen by Beverloo's law so that the uncoated mixture empties in about "
-                "the measured 2.2 s at size x3 (coarser grains pass less; docs/experiments.md): "
-                "the uncoated time is no independent check, the coated time's change is",
+                "orifice is chosen by Beverloo's law for about the uncoated mixture's measured "
+                "2.2 s (docs/experiments.md): the uncoated time is no independent check, the "
+                "coated time's change is",
                 100 * (std::isfinite(orifice) ? orifice : 0), flow);
   return text;
 }
