@@ -41,7 +41,8 @@ SegregationSettings FunnelOnly(double feed_rate_kg_s) {
   s.depth_m = 0.016;
   s.pour_height_m = 0.035;  // above the ≈ 16 mm heap the 4 g make below it
   s.feed_width_m = 0.03;
-  s.funnel = {.enabled = true, .orifice_diameter_m = 0.012, .top_diameter_m = 0.05, .height_m = 0.03};
+  s.funnel = {
+      .enabled = true, .orifice_diameter_m = 0.012, .top_diameter_m = 0.05, .height_m = 0.03};
   s.wall_material = 1;
   s.glued_base = false;
   // The run only has to outlast the funnel (the orifice passes 4 g in ≈ 0.5 s): it ends 0.8 s
