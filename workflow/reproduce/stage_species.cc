@@ -55,7 +55,11 @@ bool RunSpeciesStage(ReproduceContext& ctx, nlohmann::json* result, std::string*
     int used = o.clump_count;
     nlohmann::json used_row;
     if (!s.clump_counts.empty()) {
-      const nlohmann::json table = ReadClumpCountTable(step.dir);
+      // Only rank 0 wrote the loop's files under mpirun: every rank takes its table.
+      std::string shared = objectives::farm::IsManager() ? ReadClumpCountTable(step.dir).dump()
+                                                         : std::string();
+      objectives::farm::Share(&shared);
+      const nlohmann::json table = nlohmann::json::parse(shared);
       entry["semi_axes"] = s.semi_axes;
       entry["held"] = s.hold;
       entry["clump_table"] = table["rows"];
