@@ -22,6 +22,25 @@ std::string ReadText(const fs::path& p) {
   return s.str();
 }
 
+// The report of stand-in results written into a fresh temporary folder; its HTML and Markdown.
+struct WrittenReport {
+  std::string html, md;
+};
+WrittenReport WriteStandInReport(const WorkflowFile& w, const nlohmann::json& results,
+                                 const std::vector<SummaryRow>& rows,
+                                 const nlohmann::json& timings, const std::string& folder) {
+  const fs::path out = fs::temp_directory_path() / folder;
+  fs::remove_all(out);
+  fs::create_directories(out);
+  const ReportInputs in{.workflow = &w, .results = &results, .rows = &rows,
+                        .timings = &timings, .quick = true, .out_dir = out.string()};
+  std::string error;
+  REQUIRE(WriteReproduceReport(in, &error));
+  WrittenReport r{ReadText(out / "report.html"), ReadText(out / "report.md")};
+  fs::remove_all(out);
+  return r;
+}
+
 int Count(const std::string& text, const std::string& what) {
   int n = 0;
   for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
@@ -68,14 +87,9 @@ TEST_CASE("reproduce report: verdict first, short verdicts, each note once", "[u
   const std::vector<SummaryRow> rows = BuildSummaryRows(w.reference, v);
   const nlohmann::json results = StandInResults();
   const nlohmann::json timings = {{"species", 60.0}, {"cohesion", 0.0}};
-  const fs::path out = fs::temp_directory_path() / "demcal_reproduce_report_test";
-  fs::remove_all(out);
-  fs::create_directories(out);
-  const ReportInputs in{.workflow = &w, .results = &results, .rows = &rows,
-                        .timings = &timings, .quick = true, .out_dir = out.string()};
-  REQUIRE(WriteReproduceReport(in, &error));
-  const std::string html = ReadText(out / "report.html");
-  const std::string md = ReadText(out / "report.md");
+  const WrittenReport report = WriteStandInReport(w, results, rows, timings, "demcal_reproduce_report_test");
+  const std::string& html = report.html;
+  const std::string& md = report.md;
 
   // The headline and the key figures come before the table; the notes after it.
   const size_t headline = html.find("<ul class=\"headline\">");
@@ -115,7 +129,6 @@ TEST_CASE("reproduce report: verdict first, short verdicts, each note once", "[u
   CHECK(md_headline < md_figure);
   CHECK(md_figure < md_table);
   CHECK(md_table < md_notes);
-  fs::remove_all(out);
 }
 
 TEST_CASE("reproduce report: the Fig. 3 clump-count table and the mechanism rows", "[unit]") {
@@ -150,14 +163,9 @@ TEST_CASE("reproduce report: the Fig. 3 clump-count table and the mechanism rows
                       row.key.starts_with("ep_bp_contacts_per_grain_");
   CHECK(mechanism_rows == 9);  // three observables × uncoated, coated, excessive
   const nlohmann::json timings = {{"species", 60.0}};
-  const fs::path out = fs::temp_directory_path() / "demcal_reproduce_report_clumps_test";
-  fs::remove_all(out);
-  fs::create_directories(out);
-  const ReportInputs in{.workflow = &w, .results = &results, .rows = &rows,
-                        .timings = &timings, .quick = true, .out_dir = out.string()};
-  REQUIRE(WriteReproduceReport(in, &error));
-  const std::string html = ReadText(out / "report.html");
-  const std::string md = ReadText(out / "report.md");
+  const WrittenReport report = WriteStandInReport(w, results, rows, timings, "demcal_reproduce_report_clumps_test");
+  const std::string& html = report.html;
+  const std::string& md = report.md;
   // The Fig. 3 table: after the species table, one row per count, angle ± sem, cost, verdict.
   const size_t fig3 = html.find("EP: clump sphere count against the measured angle");
   REQUIRE(fig3 != std::string::npos);
@@ -174,5 +182,4 @@ TEST_CASE("reproduce report: the Fig. 3 clump-count table and the mechanism rows
   CHECK(html.find("0.00042 ± 0.0001") != std::string::npos);
   CHECK(html.find("BP grains touching each EP grain in the heap, 2.5 wt% [-]") !=
         std::string::npos);
-  fs::remove_all(out);
 }
