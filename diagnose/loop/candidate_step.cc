@@ -91,6 +91,12 @@ void Fill(const Frame& f, const Work& w, const std::vector<CandidateEffect>& can
   e->simulated = w.simulated;
   e->chi2 = w.simulated ? w.best_chi2 : w.refit.chi2;
   e->evidence = EvidenceWithFloor(f.r0, r, f.q, k, f.fitted, f.per_candidate);
+  // The simulated refit's χ² moves with its points' simulation noise (evidence.h, ToldApart):
+  // the ranking does not tell two candidates apart by less than that.
+  if (w.simulated && w.best_prediction.sem.size() == static_cast<size_t>(f.n())) {
+    const Eigen::VectorXd u = ToVector(w.best_prediction.sem).cwiseQuotient(f.sigma);
+    e->evidence.chi2_noise_sd = Chi2NoiseSd(r, u, f.q, e->evidence.floor);
+  }
   e->chi2_per_dof = e->chi2 / std::max(1, f.n() - f.fitted - k);
   e->control = candidates[w.candidate].control;
   e->signature_match = SignatureMatch(f.r0, f.J, f.sigma.cwiseInverse().cwiseProduct(w.signature));

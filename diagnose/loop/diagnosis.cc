@@ -87,8 +87,8 @@ std::string TieText(const Diagnosis& d, const std::vector<CandidateEffect>& cand
     return e.key + " (" + (e.values.empty() ? "" : EffectDirection(p, e.values[0])) + ")";
   };
   s << one(a) << " or " << one(b) << " explain the gap about equally (delta BIC "
-    << a.evidence.delta_bic << " and " << b.evidence.delta_bic << ", within " << kBicIndistinct
-    << ")";
+    << a.evidence.delta_bic << " and " << b.evidence.delta_bic << ", within "
+    << IndistinctWithin(a.evidence, b.evidence) << ")";
   return s.str();
 }
 

@@ -34,4 +34,23 @@ Evidence EvidenceWithFloor(const Eigen::VectorXd& r_base, const Eigen::VectorXd&
   return e;
 }
 
+double Chi2NoiseSd(const Eigen::VectorXd& r, const Eigen::VectorXd& u, const Eigen::VectorXd& q,
+                   double phi) {
+  double var = 0;
+  for (Eigen::Index i = 0; i < r.size(); ++i) {
+    const double w = 1 / (1 + phi * phi * q(i) * q(i));
+    var += 4 * r(i) * r(i) * w * w * u(i) * u(i);
+  }
+  return std::sqrt(var);
+}
+
+double IndistinctWithin(const Evidence& a, const Evidence& b) {
+  const double sd = std::hypot(a.chi2_noise_sd, b.chi2_noise_sd);
+  return std::max(kBicIndistinct, kNoiseSds * sd);
+}
+
+bool ToldApart(const Evidence& a, const Evidence& b) {
+  return std::fabs(a.delta_bic - b.delta_bic) >= IndistinctWithin(a, b);
+}
+
 }  // namespace demcal::diagnose

@@ -31,6 +31,9 @@ struct Evidence {
   double delta_bic = 0;
   bool significant = false;  // lr_p_value < significance and delta_bic < 0
   double floor = 0;          // the discrepancy floor estimated with the effect, single-run scatters
+  // Standard deviation of the effect fit's floored χ² due to its own simulation noise (0 when the
+  // fit was not simulated): Chi2NoiseSd below.
+  double chi2_noise_sd = 0;
 };
 
 Evidence EvidenceOf(double chi2_base, double chi2_effect, int k, int n, double significance);
@@ -44,5 +47,26 @@ Evidence EvidenceWithFloor(const Eigen::VectorXd& r_base, const Eigen::VectorXd&
 // named with confidence is the failure to avoid, and "positive" evidence did name one (the
 // elongated twin: rolling resistance 4.5 ahead of the true shape, both fits within noise).
 constexpr double kBicIndistinct = 6.0;
+
+// A simulated refit's χ² is itself a random variable: each simulated mean m_i carries a standard
+// error s_i, and χ² = Σ r_i² w_i (r_i = (m_i − y_i)/σ_i, w_i = 1/(1 + φ² q_i²) the floor's
+// weight) moves with it. To first order (the delta method), δχ² = Σ 2 r_i w_i δm_i/σ_i, so with
+// independent means Var(χ²) ≈ Σ 4 r_i² w_i² u_i², u_i = s_i/σ_i. The refit that ran its points
+// where the noise happened to fall its way has the lower χ² by chance; the two ΔBIC of two
+// candidates share the base fit, so their difference carries the two refits' noise, and its
+// variance is the sum of the two.
+//   u: s_i/σ_i per observation; q, phi as in discrepancy_floor.h.
+double Chi2NoiseSd(const Eigen::VectorXd& r, const Eigen::VectorXd& u, const Eigen::VectorXd& q,
+                   double phi);
+
+// Two candidates are told apart only when their ΔBIC differ by at least kBicIndistinct AND by
+// at least kNoiseSds standard deviations of the difference due to the refits' simulation noise
+// (√(sd_a² + sd_b²), Chi2NoiseSd). The first is the statistics' "strong" evidence for
+// deterministic fits; the second says the gap is not the luck of the simulated points (two
+// standard deviations: a one-sided chance of about 2 % that the noise alone makes the gap). Used
+// for the runner-up and for the control guard alike.
+constexpr double kNoiseSds = 2.0;
+double IndistinctWithin(const Evidence& a, const Evidence& b);
+bool ToldApart(const Evidence& a, const Evidence& b);
 
 }  // namespace demcal::diagnose

@@ -27,8 +27,7 @@ Ranking RankCandidates(const std::vector<RankingEntry>& entries) {
       if (entries[i].simulated && first_simulated < 0) first_simulated = i;
     for (int i : r.order)
       if (i != r.winner && entries[i].simulated && entries[i].control &&
-          std::fabs(entries[i].evidence.delta_bic - entries[r.winner].evidence.delta_bic) <
-              kBicIndistinct)
+          !ToldApart(entries[i].evidence, entries[r.winner].evidence))
         control_level = i;
     const int control = entries[r.winner].control          ? r.winner
                         : entries[first_simulated].control ? first_simulated
@@ -54,8 +53,7 @@ Ranking RankCandidates(const std::vector<RankingEntry>& entries) {
     << ", likelihood-ratio p " << entries[r.winner].evidence.lr_p_value << ")";
   for (int i : r.order) {
     if (i == r.winner) continue;
-    if (entries[i].simulated && std::fabs(entries[i].evidence.delta_bic -
-                                          entries[r.winner].evidence.delta_bic) < kBicIndistinct) {
+    if (entries[i].simulated && !ToldApart(entries[i].evidence, entries[r.winner].evidence)) {
       r.distinguished = false;
       if (r.tied < 0) r.tied = i;
       m << "; not told apart from " << entries[i].key << " (delta BIC "

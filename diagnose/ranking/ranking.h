@@ -4,12 +4,13 @@
 // control when μs is fitted) never wins. When the best simulated candidate is a control, or a
 // control is not told apart from the winner, there is no winner and control_first is set: an
 // improvement a re-tuned fitted parameter gives equally is a model-form offset, not a missing
-// effect. Otherwise a simulated runner-up within kBicIndistinct of the winner is `tied`.
+// effect. Otherwise a simulated runner-up not told apart from the winner is `tied`.
 // A candidate can win only when its refit is significant (likelihood-ratio p below the
 // significance AND ΔBIC < 0); among those the lowest ΔBIC wins. The refit of a candidate is the
 // real one (simulated at the refitted point) when it was made, else the linearised one; only a
 // refit that was simulated can win (a linear prediction is a shortlist, not evidence). When the
-// runner-up is within kBicIndistinct of the winner the two are not told apart and the ranking
+// runner-up is not told apart from the winner (ToldApart, evidence.h: within kBicIndistinct or
+// within the refits' simulation noise) the two are not told apart and the ranking
 // says so (`distinguished` false; only simulated refits are compared); the winner is still the
 // lower ΔBIC.
 //

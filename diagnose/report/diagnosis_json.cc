@@ -82,6 +82,7 @@ Json CandidateJson(const DiagnosisRunInfo& info, const RankingEntry& e, int rank
           {"chi2", Number(e.chi2)},
           {"chi2_per_dof_after", Number(e.chi2_per_dof)},
           {"delta_bic", Number(e.evidence.delta_bic)},
+          {"chi2_noise_sd", Number(e.evidence.chi2_noise_sd)},
           {"likelihood_ratio_p", Number(e.evidence.lr_p_value)},
           {"significant", e.evidence.significant},
           {"chi2_linearised", Number(e.chi2_linear)},

@@ -2,6 +2,9 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <random>
+
+#include "diagnose/ranking/discrepancy_floor.h"
 
 namespace demcal::diagnose {
 namespace {
@@ -72,6 +75,61 @@ TEST_CASE("ranking: a tie is named, and the control never wins", "[unit]") {
   r = RankCandidates(entries);
   CHECK(r.winner == 0);
   CHECK_FALSE(r.control_first);
+}
+
+TEST_CASE("evidence: the χ² noise of a simulated refit by the delta method", "[unit]") {
+  // Var(Σ w r²) = Σ 4 r² w² u² to first order: r = 2, u = 0.5 on four observations gives 16.
+  const Eigen::VectorXd r = Eigen::VectorXd::Constant(4, 2.0);
+  const Eigen::VectorXd u = Eigen::VectorXd::Constant(4, 0.5);
+  const Eigen::VectorXd q = Eigen::VectorXd::Ones(4);
+  CHECK(Chi2NoiseSd(r, u, q, 0) == Approx(4.0));
+  CHECK(Chi2NoiseSd(r, u, q, 1) == Approx(2.0));  // the floor halves each weight
+  // Against sampling: means perturbed by their standard errors; exact variance adds Σ 2 w² u⁴,
+  // negligible here (0.3 % of the first-order term).
+  const Eigen::VectorXd r2 = (Eigen::VectorXd(6) << 3, -2, 1.5, -3, 2.5, 0.5).finished();
+  const Eigen::VectorXd u2 = (Eigen::VectorXd(6) << 0.2, 0.3, 0.1, 0.25, 0.15, 0.3).finished();
+  const Eigen::VectorXd q2 = (Eigen::VectorXd(6) << 1, 2, 0.5, 1, 1.5, 1).finished();
+  const double phi = 0.7;
+  std::mt19937 rng(7);
+  std::normal_distribution<double> z(0, 1);
+  const int draws = 40000;
+  double sum = 0, sum2 = 0;
+  for (int k = 0; k < draws; ++k) {
+    Eigen::VectorXd rr = r2;
+    for (int i = 0; i < rr.size(); ++i) rr(i) += u2(i) * z(rng);
+    const double c = FlooredChi2(rr, q2, phi);
+    sum += c, sum2 += c * c;
+  }
+  const double sd = std::sqrt(sum2 / draws - (sum / draws) * (sum / draws));
+  CHECK(Chi2NoiseSd(r2, u2, q2, phi) == Approx(sd).epsilon(0.03));
+}
+
+TEST_CASE("ranking: a gap within the refits' simulation noise is not told apart", "[unit]") {
+  // ΔBIC 10 apart: beyond kBicIndistinct, told apart when the refits were exact.
+  std::vector<RankingEntry> entries = {Entry("a", 50, 10, true), Entry("b", 50, 20, true)};
+  Ranking r = RankCandidates(entries);
+  CHECK(r.winner == 0);
+  CHECK(r.distinguished);
+  // Each refit's χ² uncertain by 4: the difference by 4√2, two of which (11.3) exceed the gap.
+  entries[0].evidence.chi2_noise_sd = entries[1].evidence.chi2_noise_sd = 4;
+  r = RankCandidates(entries);
+  CHECK(r.winner == 0);
+  CHECK_FALSE(r.distinguished);
+  CHECK(r.tied == 1);
+  CHECK(IndistinctWithin(entries[0].evidence, entries[1].evidence) == Approx(8 * std::sqrt(2.0)));
+  // A clear winner is still named: ΔBIC 35 apart with the same noise.
+  entries[1] = Entry("b", 50, 45, true);
+  entries[1].evidence.chi2_noise_sd = 4;
+  r = RankCandidates(entries);
+  CHECK(r.winner == 0);
+  CHECK(r.distinguished);
+  CHECK(r.tied == -1);
+  // A noisy control 10 behind the winner is level with it: the control guard holds.
+  entries = {Entry("a", 50, 10, true), Entry("control", 50, 20, true, true)};
+  entries[1].evidence.chi2_noise_sd = 6;
+  r = RankCandidates(entries);
+  CHECK(r.winner == -1);
+  CHECK(r.control_first);
 }
 
 }  // namespace demcal::diagnose
