@@ -87,7 +87,8 @@ std::string TieText(const Diagnosis& d, const std::vector<CandidateEffect>& cand
     return e.key + " (" + (e.values.empty() ? "" : EffectDirection(p, e.values[0])) + ")";
   };
   s << one(a) << " or " << one(b) << " explain the gap about equally (delta BIC "
-    << a.evidence.delta_bic << " and " << b.evidence.delta_bic << ", within "
+    << a.evidence.delta_bic << " and " << b.evidence.delta_bic << "; BIC gap "
+    << std::fabs(BicGap(a.evidence, b.evidence)) << " under the common floor, within "
     << IndistinctWithin(a.evidence, b.evidence) << ")";
   return s.str();
 }

@@ -29,9 +29,21 @@ Evidence EvidenceWithFloor(const Eigen::VectorXd& r_base, const Eigen::VectorXd&
   e.delta_chi2 = FlooredChi2(r_base, q, e.floor) - FlooredChi2(r_effect, q, e.floor);
   e.lr_p_value = e.floor > 0 ? FSurvival(std::max(0.0, e.delta_chi2) / k, k, dof)
                              : ChiSquareSurvival(std::max(0.0, e.delta_chi2), k);
-  e.delta_bic = -e.delta_chi2 + k * std::log(static_cast<double>(std::max(n, 1)));
+  e.penalty = k * std::log(static_cast<double>(std::max(n, 1)));
+  e.delta_bic = -e.delta_chi2 + e.penalty;
   e.significant = e.lr_p_value < significance && e.delta_bic < 0;
+  e.residuals = r_effect;
+  e.q = q;
   return e;
+}
+
+double BicGap(const Evidence& a, const Evidence& b) {
+  if (a.residuals.size() == 0 || a.residuals.size() != b.residuals.size() ||
+      a.q.size() != a.residuals.size() || b.q.size() != b.residuals.size())
+    return a.delta_bic - b.delta_bic;
+  const double phi = std::min(a.floor, b.floor);
+  return FlooredChi2(a.residuals, a.q, phi) + a.penalty - FlooredChi2(b.residuals, b.q, phi) -
+         b.penalty;
 }
 
 double Chi2NoiseSd(const Eigen::VectorXd& r, const Eigen::VectorXd& u, const Eigen::VectorXd& q,
@@ -50,7 +62,7 @@ double IndistinctWithin(const Evidence& a, const Evidence& b) {
 }
 
 bool ToldApart(const Evidence& a, const Evidence& b) {
-  return std::fabs(a.delta_bic - b.delta_bic) >= IndistinctWithin(a, b);
+  return std::fabs(BicGap(a, b)) >= IndistinctWithin(a, b);
 }
 
 }  // namespace demcal::diagnose

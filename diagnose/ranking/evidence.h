@@ -34,6 +34,11 @@ struct Evidence {
   // Standard deviation of the effect fit's floored χ² due to its own simulation noise (0 when the
   // fit was not simulated): Chi2NoiseSd below.
   double chi2_noise_sd = 0;
+  // With the floor (EvidenceWithFloor): the effect fit's standardised residuals, the single-run
+  // scatters q and the BIC penalty k·ln n, so that two candidates can be compared under one
+  // common floor (ToldApart); empty without.
+  Eigen::VectorXd residuals, q;
+  double penalty = 0;
 };
 
 Evidence EvidenceOf(double chi2_base, double chi2_effect, int k, int n, double significance);
@@ -59,7 +64,18 @@ constexpr double kBicIndistinct = 6.0;
 double Chi2NoiseSd(const Eigen::VectorXd& r, const Eigen::VectorXd& u, const Eigen::VectorXd& q,
                    double phi);
 
-// Two candidates are told apart only when their ΔBIC differ by at least kBicIndistinct AND by
+// The gap between two candidates' BIC. Each ΔBIC is taken with the floor estimated from that
+// candidate's own fit, so each is measured against a differently floored base χ², and two
+// values on different variance models are not comparable (the elongated twin: rolling 25 ahead
+// of shape by ΔBIC, 3.2 apart when both fits are judged alike). When both carry their residuals
+// the gap is (χ²_a + k_a ln n) − (χ²_b + k_b ln n), both χ² under the smaller of the two floors
+// (the base's χ² then cancels). The smaller floor is the discrepancy the better of the two fits
+// leaves unexplained: the data need no more than that, and a candidate that needs a larger floor
+// is worse by that very fact. The larger floor would let a poor fit's own misfit absorb the gap
+// it is judged by. Without residuals, the ΔBIC difference.
+double BicGap(const Evidence& a, const Evidence& b);
+
+// Two candidates are told apart only when their BIC gap (BicGap) is at least kBicIndistinct AND
 // at least kNoiseSds standard deviations of the difference due to the refits' simulation noise
 // (√(sd_a² + sd_b²), Chi2NoiseSd). The first is the statistics' "strong" evidence for
 // deterministic fits; the second says the gap is not the luck of the simulated points (two

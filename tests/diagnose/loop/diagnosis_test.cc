@@ -1,6 +1,7 @@
 #include "diagnose/loop/diagnosis.h"
 
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <set>
 
 #include "diagnose/analytic_forward_model.h"
@@ -192,8 +193,12 @@ TEST_CASE("refits re-estimate the sensitivities where they are, past a base fit 
   model.base_step = -0.25;
   const Diagnosis two = OneEffect(model, {1, 0.4}, 0), more = OneEffect(model, {1, 0.4}, 4);
   REQUIRE(Named(more) == "rolling");
-  const double v0 = two.final_point.effects.at(0).values[0],
-               v4 = more.final_point.effects.at(0).values[0];
+  // The stalled refit's rolling value, from its ranking entry: stalled short of the truth, it fits
+  // no better than shape under one floor, so it may be named or left not told apart.
+  double v0 = std::nan("");
+  for (const RankingEntry& e : two.steps.back().entries)
+    if (e.key == "rolling" && !e.values.empty()) v0 = e.values[0];
+  const double v4 = more.final_point.effects.at(0).values[0];
   INFO("rolling value: two base-J points " << v0 << ", re-centred refits " << v4 << ", truth 0.4");
   CHECK(std::abs(v0 - 0.4) > 0.1);  // the scenario stalls without re-centring
   CHECK(std::abs(v4 - 0.4) < 0.02);
