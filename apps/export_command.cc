@@ -4,6 +4,7 @@
 #include <memory>
 #include <string>
 
+#include "apps/cli_checks.h"
 #include "workflow/export/run_export.h"
 
 namespace demcal::apps {
@@ -26,10 +27,14 @@ Command AddExportCommand(CLI::App& parent) {
       ->required()
       ->check(CLI::IsMember({"liggghts"}));
   app->add_option("experiment", o->options.experiment_path, "experiment file (demcal-experiment/1)")
-      ->required();
-  app->add_option("--out", o->options.out_dir, "output folder for the deck")->required();
+      ->required()
+      ->check(NonEmpty());
+  app->add_option("--out", o->options.out_dir, "output folder for the deck")
+      ->required()
+      ->check(NonEmpty());
   app->add_option("--params", o->options.params_path,
-                  "a calibration's calibrated_params.json, applied to the experiment's model");
+                  "a calibration's calibrated_params.json, applied to the experiment's model")
+      ->check(NonEmpty());
   app->add_option("--fidelity", o->options.fidelity,
                   "full (real sizes and stiffness), file (the file's fidelity) or quick")
       ->check(CLI::IsMember({"full", "file", "quick"}));

@@ -32,6 +32,7 @@
 
 #include "objectives/metrics/beverloo.h"
 #include "experiments/discharge/discharge_experiment.h"
+#include "experiments/discharge/discharge_test_scenes.h"
 #include "objectives/common/replicates.h"
 
 using namespace demcal;
@@ -46,18 +47,8 @@ constexpr double kSkip = 350, kOut = 1000;  // grains out: start of the fit, end
 constexpr int kSeeds = 2;
 const std::vector<double> kRatios = {5, 7, 9.5, 12};  // D/d
 
-// Monodisperse glass-like beads and a wall of the same material.
-core::Scene Beads() {
-  core::Scene model;
-  model.materials = {{"glass", 1.2e6, 0.25, kDensity}, {"wall", 1.2e6, 0.25, kDensity}};
-  core::Species beads;
-  beads.name = "beads";
-  beads.size.diameter_m = kD;
-  model.species = {beads};
-  model.pair_parameters.assign(4, core::PairParameters{});  // μs 0.5, e 0.5, μr 0
-  model.time.rayleigh_fraction = 0.25;
-  return model;
-}
+// Monodisperse glass-like beads and a wall of the same material (μs 0.5, e 0.5, μr 0).
+core::Scene Beads() { return test::GlassBeads(kD, kDensity); }
 
 // The bin and fill for orifice D = ratio · d: the head of 1.2 D plus the grains to discharge,
 // counted at a solid fraction of 0.63 (the settled fill's, measured ≈ 0.61).

@@ -11,41 +11,17 @@
 #include "core/simulation/simulation.h"
 #include "experiments/discharge/hopper_fill.h"
 #include "experiments/discharge/outflow_recorder.h"
+#include "experiments/discharge/discharge_test_scenes.h"
 
 using namespace demcal;
 using namespace demcal::objectives;
 
 namespace {
 
-// Soft, cohesionless, monodisperse glass-like spheres of diameter d: two materials (grains,
-// wall), friction 0.5, restitution 0.5, no rolling friction.
-core::Scene Beads(double d_m) {
-  core::Scene model;
-  model.materials = {{"glass", 1.2e6, 0.25, 2500}, {"wall", 1.2e6, 0.25, 2500}};
-  core::Species beads;
-  beads.name = "beads";
-  beads.size.diameter_m = d_m;
-  model.species = {beads};
-  model.pair_parameters.assign(4, core::PairParameters{});
-  model.time.rayleigh_fraction = 0.25;
-  return model;
-}
+core::Scene Beads(double d_m) { return test::GlassBeads(d_m); }
 
 DischargeSettings Funnel(double d_m, double orifice_m, double mass_kg) {
-  DischargeSettings s;
-  s.fill = DischargeSettings::Fill::kPlace;
-  s.feed.components = {{0, 1.0}};
-  s.feed.mass_kg = mass_kg;
-  s.feed.mass_rate_kg_s = 1;
-  s.hopper = {.top_diameter_m = 24 * d_m, .orifice_diameter_m = orifice_m,
-              .cone_half_angle_deg = 30, .cylinder_height_m = 0};
-  s.catch_depth_m = 12.5 * d_m;
-  s.wall_material = 1;
-  s.settle.specific_kinetic_J_kg = 1e-4;
-  s.settle.max_time_s = 3;
-  s.sample_interval_s = 0.01;
-  s.stall_s = 0.5;
-  return s;
+  return test::PlacedFunnel(d_m, orifice_m, mass_kg);
 }
 
 const core::Wall* FindWall(const core::Scene& scene, const std::string& name) {

@@ -10,6 +10,7 @@
 #include "experiments/common/run_experiment.h"
 #include "experiments/discharge/discharge_experiment.h"
 #include "experiments/discharge/discharge_probe.h"
+#include "experiments/discharge/discharge_test_scenes.h"
 #include "core/io/scratch_dir.h"
 #include "workflow/test_paths.h"
 
@@ -21,33 +22,21 @@ namespace {
 // Rough glass-like beads of diameter d: high sliding and rolling friction (EPSD2), so that an
 // arch over an orifice of about three grains, once formed, holds.
 core::Scene RoughBeads(double d_m, double rolling_friction) {
-  core::Scene model;
-  model.materials = {{"glass", 1.2e6, 0.25, 2500}, {"wall", 1.2e6, 0.25, 2500}};
-  core::Species beads;
-  beads.name = "beads";
-  beads.size.diameter_m = d_m;
-  model.species = {beads};
-  model.pair_parameters.assign(
-      4, core::PairParameters{.sliding_friction = 0.8, .rolling_friction = rolling_friction,
-                              .restitution = 0.3});
+  core::Scene model = test::GlassBeads(
+      d_m, 2500,
+      core::PairParameters{.sliding_friction = 0.8, .rolling_friction = rolling_friction,
+                           .restitution = 0.3});
   model.rolling.name = "epsd2";
-  model.time.rayleigh_fraction = 0.25;
   return model;
 }
 
+// About 190 beads of 2 mm in a small funnel (top 12 d, a 4 d cylinder) that gives up soon.
 DischargeSettings SmallFunnel(double d_m, double orifice_m) {
-  DischargeSettings s;
-  s.fill = DischargeSettings::Fill::kPlace;
-  s.feed.components = {{0, 1.0}};
-  s.feed.mass_kg = 0.002;  // about 190 beads of 2 mm
-  s.feed.mass_rate_kg_s = 1;
-  s.hopper = {.top_diameter_m = 12 * d_m, .orifice_diameter_m = orifice_m,
-              .cone_half_angle_deg = 30, .cylinder_height_m = 4 * d_m};
+  DischargeSettings s = test::PlacedFunnel(d_m, orifice_m, 0.002);
+  s.hopper.top_diameter_m = 12 * d_m;
+  s.hopper.cylinder_height_m = 4 * d_m;
   s.catch_depth_m = 8 * d_m;
-  s.wall_material = 1;
-  s.settle.specific_kinetic_J_kg = 1e-4;
   s.settle.max_time_s = 2;
-  s.sample_interval_s = 0.01;
   s.stall_s = 0.3;
   s.max_discharge_s = 3;
   return s;
