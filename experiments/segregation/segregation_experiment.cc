@@ -46,12 +46,16 @@ core::InsertionRegion FeedRegion(const core::Scene& model, const SegregationSett
       {x0, 0, z0}, {x0 + s.feed_width_m, s.depth_m, z0 + FeedRegionHeight(model, s)});
 }
 
-core::Wall Funnel(const SegregationSettings& s) {
+double OrificeM(const core::Scene& model, const SegregationSettings& s) {
+  return s.funnel.OrificeDiameterM(FeedMaxDiameter(model, s.feed));
+}
+
+core::Wall Funnel(const core::Scene& model, const SegregationSettings& s) {
   const FunnelSettings& f = s.funnel;
   return core::Wall("funnel", s.wall_material,
                     core::ConeFrustumSurface{.axis_point_m = {0.5 * s.width_m, 0.5 * s.depth_m, 0},
                                              .height0_m = s.pour_height_m,
-                                             .radius0_m = 0.5 * f.orifice_diameter_m,
+                                             .radius0_m = 0.5 * OrificeM(model, s),
                                              .height1_m = s.pour_height_m + f.height_m,
                                              .radius1_m = 0.5 * f.top_diameter_m});
 }
@@ -59,6 +63,7 @@ core::Wall Funnel(const SegregationSettings& s) {
 std::string CheckGeometry(const core::Scene& model, const SegregationSettings& s) {
   const double d = FeedMaxDiameter(model, s.feed);
   const FunnelSettings& f = s.funnel;
+  const double orifice = OrificeM(model, s);
   std::ostringstream os;
   if (!(s.width_m > 10 * d))
     os << "segregation.width_m = " << s.width_m << " must exceed 10 largest particle diameters ("
@@ -69,14 +74,20 @@ std::string CheckGeometry(const core::Scene& model, const SegregationSettings& s
   else if (!(s.pour_height_m > 2 * d && s.pour_height_m < 10))
     os << "segregation.pour_height_m = " << s.pour_height_m << " is outside the allowed range ("
        << 2 * d << ", 10) m";
-  else if (f.enabled && !(std::min(f.orifice_diameter_m, s.depth_m) > 3 * d))
-    os << "segregation.funnel.orifice_diameter_m = " << f.orifice_diameter_m
-       << " (cut to depth_m = " << s.depth_m << ") must exceed 3 largest particle diameters ("
-       << 3 * d << " m at this fidelity): the funnel would jam";
-  else if (f.enabled && !(f.top_diameter_m > f.orifice_diameter_m && f.top_diameter_m <= s.width_m))
+  else if (f.enabled && f.ScalesWithFidelity() && !(orifice > 3 * d))
+    os << "segregation.funnel.effective_orifice_diameter_m = " << f.effective_orifice_diameter_m
+       << " with beverloo_k = " << f.beverloo_k << " gives an orifice of " << orifice
+       << " m at this fidelity (largest grain " << d << " m), which must exceed 3 largest particle "
+       << "diameters (" << 3 * d << " m): the funnel would jam; effective_orifice_diameter_m must "
+       << "exceed " << (3 - f.beverloo_k) * d << " m";
+  else if (f.enabled && !(std::min(orifice, s.depth_m) > 3 * d))
+    os << "segregation.funnel.orifice_diameter_m = " << orifice << " (cut to depth_m = "
+       << s.depth_m << ") must exceed 3 largest particle diameters (" << 3 * d
+       << " m at this fidelity): the funnel would jam";
+  else if (f.enabled && !(f.top_diameter_m > orifice && f.top_diameter_m <= s.width_m))
     os << "segregation.funnel.top_diameter_m = " << f.top_diameter_m
-       << " is outside the allowed range (orifice_diameter_m = " << f.orifice_diameter_m
-       << ", width_m = " << s.width_m << "] m";
+       << " is outside the allowed range (orifice diameter " << orifice
+       << " m at this fidelity, width_m = " << s.width_m << "] m";
   else if (f.enabled && !(f.height_m > 0 && f.height_m < 10))
     os << "segregation.funnel.height_m = " << f.height_m
        << " is outside the allowed range (0, 10) m";
@@ -204,7 +215,7 @@ core::Scene BuildSegregationScene(const core::Scene& model, const SegregationSet
   for (const core::PlaneWall& face :
        core::BoxInnerFaces("box", {0, 0, 0}, {s.width_m, s.depth_m, top}, s.wall_material, true))
     scene.walls.push_back(face);
-  if (s.funnel.enabled) scene.walls.push_back(Funnel(s));
+  if (s.funnel.enabled) scene.walls.push_back(Funnel(model, s));
   scene.domain_min_m = {-kMargin, -kMargin, -kMargin};
   scene.domain_max_m = {s.width_m + kMargin, s.depth_m + kMargin, top + kMargin};
   if (s.glued_base) {  // fixed particles are spheres: a clump feed gets a sphere layer
@@ -271,6 +282,7 @@ SegregationRun RunSegregation(const core::Scene& model, const SegregationSetting
   if (settings.funnel.enabled)
     out.funnel_regime = FunnelRegime(clock.emptied(), out.discharge_time_s, out.feed_duration_s,
                                      settings.funnel.height_m, Norm(model.gravity_m_s2));
+  if (settings.funnel.enabled) out.funnel_orifice_diameter_m = OrificeM(model, settings);
   out.spheres_left_above = clock.spheres_above();
   if (settings.funnel.enabled && clock.started()) AnalyseOutflow(outflow, clock.first_out_s(), &out);
   out.heap = Crop(Select(TakeSnapshot(sim), [&](const Grain& g) { return g.id >= fixed; }),

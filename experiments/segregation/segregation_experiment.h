@@ -31,6 +31,7 @@
 
 #include "core/scene/scene.h"
 #include "experiments/aor/aor_experiment.h"
+#include "experiments/segregation/funnel_geometry.h"
 #include "objectives/common/feed.h"
 #include "objectives/metrics/discharge_metrics.h"
 #include "objectives/metrics/granule_tracking.h"
@@ -41,14 +42,6 @@
 #include "objectives/common/snapshot.h"
 
 namespace demcal::objectives {
-
-// The funnel above the box (assumed: the paper shows it in Fig. 1 without dimensions).
-struct FunnelSettings {
-  bool enabled = true;
-  double orifice_diameter_m = 0.02;  // cut to the box depth by the front and back planes
-  double top_diameter_m = 0.06;
-  double height_m = 0.04;  // orifice to top
-};
 
 // Which granules are followed (Figs. 17–19) and how often their state is recorded.
 struct TrackingSettings {
@@ -104,6 +97,9 @@ struct SegregationRun {
   // metrics); an orifice-limited funnel passes less than the feed rate, a feed-limited one the
   // feed rate. 0 without a funnel or outflow.
   double funnel_mass_flow_kg_s = 0;
+  // The orifice this run had (FunnelSettings::OrificeDiameterM at its fidelity); 0 without a
+  // funnel.
+  double funnel_orifice_diameter_m = 0;
   int64_t spheres_left_above = 0;  // at or above the orifice at the end
   // What left the funnel (grains first seen below the orifice plane), in time bins from the
   // first grain out to the discharge end: the paper's Fig. 16 (pre-segregation in the funnel

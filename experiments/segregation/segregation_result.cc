@@ -198,6 +198,7 @@ ordered_json RunJson(int replicate, const SegregationRun& run,
   j["funnel_feed_limited"] = run.funnel_feed_limited;
   j["funnel_regime"] = run.funnel_regime;
   j["funnel_mass_flow_kg_s"] = run.funnel_mass_flow_kg_s;
+  j["funnel_orifice_diameter_m"] = run.funnel_orifice_diameter_m;
   j["outflow_mass_fraction"] = run.outflow_mass_fraction;
   j["settle_time_s"] = run.settle.settle_time_s;
   j["settled_by"] = run.settle.settled_by.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(run.settle.settled_by);

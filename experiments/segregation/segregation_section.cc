@@ -17,10 +17,21 @@ void ParseFunnel(const json& value, objectives::FunnelSettings* funnel, JsonStat
     funnel->enabled = value.get<bool>();
     return;
   }
-  JsonFields f(value, "segregation.funnel", {"orifice_diameter_m", "top_diameter_m", "height_m"},
+  JsonFields f(value, "segregation.funnel",
+               {"orifice_diameter_m", "effective_orifice_diameter_m", "beverloo_k",
+                "top_diameter_m", "height_m"},
                status);
   funnel->enabled = true;
   f.Number("orifice_diameter_m", &funnel->orifice_diameter_m, kOptional, Range::Open(0, 10, "m"));
+  // The orifice that follows the fidelity (funnel_geometry.h) excludes a fixed one: a file
+  // naming both would leave the reader guessing which the run used.
+  if (value.contains("effective_orifice_diameter_m") && value.contains("orifice_diameter_m"))
+    f.Fail("effective_orifice_diameter_m",
+           "excludes orifice_diameter_m: give the fixed orifice or the rule, not both");
+  f.Number("effective_orifice_diameter_m", &funnel->effective_orifice_diameter_m, kOptional,
+           Range::Open(0, 10, "m"));
+  // k ≥ 3 would put the open width of a just-not-jamming orifice (D = 3 d) at or below zero.
+  f.Number("beverloo_k", &funnel->beverloo_k, kOptional, Range{0, 3, false, true, ""});
   f.Number("top_diameter_m", &funnel->top_diameter_m, kOptional, Range::Open(0, 10, "m"));
   f.Number("height_m", &funnel->height_m, kOptional, Range::Open(0, 10, "m"));
 }

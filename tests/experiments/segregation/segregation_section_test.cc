@@ -57,8 +57,19 @@ TEST_CASE("segregation section errors name the field", "[unit]") {
              Catch::Contains("segregation.width_m"));
   CHECK_THAT(ErrorAfter([](nlohmann::json& s) { s["width_m"] = 0.01; }),
              Catch::Contains("segregation.width_m"));
-  CHECK_THAT(ErrorAfter([](nlohmann::json& s) { s["funnel"]["orifice_diameter_m"] = 0.004; }),
+  CHECK_THAT(ErrorAfter([](nlohmann::json& s) {
+               s["funnel"].erase("effective_orifice_diameter_m");
+               s["funnel"]["orifice_diameter_m"] = 0.004;
+             }),
              Catch::Contains("segregation.funnel.orifice_diameter_m"));
+  CHECK_THAT(ErrorAfter([](nlohmann::json& s) { s["funnel"]["orifice_diameter_m"] = 0.014; }),
+             Catch::Contains("segregation.funnel.effective_orifice_diameter_m"));
+  // 2 mm + 1.5 · 3 mm = 6.5 mm < 3 · 3 mm at size ×3: the funnel would jam.
+  CHECK_THAT(
+      ErrorAfter([](nlohmann::json& s) { s["funnel"]["effective_orifice_diameter_m"] = 0.002; }),
+      Catch::Contains("segregation.funnel.effective_orifice_diameter_m"));
+  CHECK_THAT(ErrorAfter([](nlohmann::json& s) { s["funnel"]["beverloo_k"] = 3; }),
+             Catch::Contains("segregation.funnel.beverloo_k"));
   CHECK_THAT(ErrorAfter([](nlohmann::json& s) { s["funnel"]["spout"] = 1; }),
              Catch::Contains("segregation.funnel"));
   CHECK_THAT(ErrorAfter([](nlohmann::json& s) {

@@ -1,0 +1,98 @@
+// The segregation funnel's orifice follows the fidelity so that it meters the same flow at
+// every size scale. Beverloo's law, W = C ρ_b √g (D − k d)^{5/2} (Beverloo, Leniger & van de
+// Velde 1961, Chem. Eng. Sci. 15:260), depends on the grains only through the open width
+// D − k d (ρ_b does not change under a uniform size scale), so the rule's orifices at size ×5
+// and ×3 must give one Beverloo flow, while one fixed orifice gives two; and each must pass
+// the jam rule D > 3 d_max at its own fidelity.
+#include "experiments/segregation/funnel_geometry.h"
+
+#include <catch2/catch.hpp>
+
+#include "experiments/common/experiment_file.h"
+#include "experiments/segregation/segregation_section.h"
+#include "objectives/common/fidelity.h"
+#include "objectives/metrics/beverloo.h"
+#include "workflow/test_paths.h"
+
+namespace demcal::objectives {
+namespace {
+
+constexpr double kC = 0.58;           // Beverloo's discharge coefficient (any value will do)
+constexpr double kBulk = 476;         // kg/m³: 0.6 × the mixture's mean solid density
+constexpr double kG = 9.81;           // m/s²
+
+struct AtScale {
+  double d_max_m = 0;
+  double orifice_m = 0;
+  SegregationSettings settings;
+  core::Scene model;
+};
+
+AtScale ExampleAt(double size_scale) {
+  workflow::ExperimentFile file;
+  std::string error;
+  const std::string path = (testing::RepoRoot() / "examples/segregation_paper.json").string();
+  REQUIRE(workflow::LoadExperimentFile(path, &file, &error));
+  Fidelity f = file.fidelity;
+  f.size_scale = size_scale;
+  AtScale out;
+  out.model = file.model;
+  ApplyFidelity(f, &out.model);
+  INFO("size x" << size_scale);
+  REQUIRE(workflow::ParseSegregationSection(file.section, path, out.model, &out.settings, &error));
+  out.d_max_m = FeedMaxDiameter(out.model, out.settings.feed);
+  out.orifice_m = out.settings.funnel.OrificeDiameterM(out.d_max_m);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("funnel orifice rule: the same Beverloo flow at size x5 and x3, no jam", "[unit]") {
+  const AtScale quick = ExampleAt(5), standard = ExampleAt(3);
+  REQUIRE(quick.settings.funnel.ScalesWithFidelity());
+  const double k = quick.settings.funnel.beverloo_k;
+  // The TAED cut's 1000 µm upper edge sets d_max: 5 and 3 mm.
+  CHECK(quick.d_max_m == Approx(0.005));
+  CHECK(standard.d_max_m == Approx(0.003));
+  // The orifice shrinks by k times the change of the largest grain: 1.5 × 2 mm = 3 mm.
+  CHECK(quick.orifice_m - standard.orifice_m == Approx(k * 0.002));
+  const double w_quick = BeverlooMassFlow(kC, k, quick.orifice_m, kBulk, quick.d_max_m, kG);
+  const double w_standard =
+      BeverlooMassFlow(kC, k, standard.orifice_m, kBulk, standard.d_max_m, kG);
+  CHECK(w_quick > 0);
+  CHECK(w_standard == Approx(w_quick).epsilon(1e-12));
+  // Below the 20 g/s feed with the C 0.49–0.58 of Beverloo and of demcal's spheres: the funnel
+  // backs up and the orifice sets the rate.
+  CHECK(w_quick < 0.020);
+  for (const AtScale* a : {&quick, &standard}) {
+    CHECK(a->orifice_m > 3 * a->d_max_m);
+    std::string error;
+    CHECK(a->settings.IsValid(a->model, &error));
+    INFO(error);
+  }
+  // The contrast the rule removes: the quick orifice kept fixed passes far more at ×3.
+  const double w_fixed = BeverlooMassFlow(kC, k, quick.orifice_m, kBulk, standard.d_max_m, kG);
+  CHECK(w_fixed > 1.5 * w_quick);
+}
+
+TEST_CASE("funnel orifice rule: an open width that jams at its fidelity is refused", "[unit]") {
+  // At size ×5 (d_max 5 mm) the rule needs an open width above (3 − 1.5) × 5 mm = 7.5 mm.
+  AtScale quick = ExampleAt(5);
+  quick.settings.funnel.effective_orifice_diameter_m = 0.007;
+  std::string error;
+  CHECK_FALSE(quick.settings.IsValid(quick.model, &error));
+  CHECK_THAT(error, Catch::Contains("segregation.funnel.effective_orifice_diameter_m") &&
+                        Catch::Contains("would jam") && Catch::Contains("0.0075"));
+}
+
+TEST_CASE("funnel orifice: a fixed orifice ignores the grain size", "[unit]") {
+  FunnelSettings f{.orifice_diameter_m = 0.014};
+  CHECK_FALSE(f.ScalesWithFidelity());
+  CHECK(f.OrificeDiameterM(0.001) == 0.014);
+  CHECK(f.OrificeDiameterM(0.005) == 0.014);
+  f.effective_orifice_diameter_m = 0.008;
+  f.beverloo_k = 1.5;
+  CHECK(f.OrificeDiameterM(0.002) == Approx(0.011));
+}
+
+}  // namespace demcal::objectives
