@@ -104,6 +104,10 @@ struct OptimiserOptions {
   double unit_tolerance = 0.002;  // stop when the search interval / step is this small (unit cube)
   int batch_size = 4;             // candidates per batch of the batch optimisers; set it >= the
                                   // cores that evaluate them
+  // Candidates per refining round of `bracket` (k-section; 1: regula falsi, one at a time). Not
+  // batch_size: its default (4) suits the batch optimisers, and a bracket study that names no
+  // k must keep its one-candidate search, which its journal records.
+  int bracket_points = 1;
   uint64_t seed = 1;              // for the optimisers that draw (differential_evolution)
   bool IsValid(std::string* error) const;
 };

@@ -87,6 +87,10 @@ bool OptimiserOptions::IsValid(std::string* error) const {
     if (error) *error = "max_evaluations: must be in " + limits::kMaxEvaluations.Text();
     return false;
   }
+  if (!limits::kBatchSize.Contains(bracket_points)) {
+    if (error) *error = "bracket_points: must be in " + limits::kBatchSize.Text();
+    return false;
+  }
   if (!limits::kUnitTolerance.Contains(unit_tolerance)) {
     if (error) *error = "unit_tolerance: must be in " + limits::kUnitTolerance.Text();
     return false;

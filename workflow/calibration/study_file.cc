@@ -20,13 +20,18 @@ constexpr const char* kFormat2 = "demcal-study/2";
 
 void ParseOptimiser(const nlohmann::json& j, const std::string& path,
                     calibrate::CalibrationOptions* o, JsonStatus* status) {
-  JsonFields f(j, path, {"name", "max_evaluations", "unit_tolerance", "batch_size", "seed"}, status);
+  JsonFields f(j, path,
+               {"name", "max_evaluations", "unit_tolerance", "batch_size", "bracket_points", "seed"},
+               status);
   f.String("name", &o->optimiser, kOptional, calibrate::OptimiserNames());
   int64_t budget = o->optimiser_options.max_evaluations, batch = o->optimiser_options.batch_size;
+  int64_t points = o->optimiser_options.bracket_points;
   f.Integer("max_evaluations", &budget, kOptional, Range::Of(limits::kMaxEvaluations));
   f.Integer("batch_size", &batch, kOptional, Range::Of(limits::kBatchSize));
+  f.Integer("bracket_points", &points, kOptional, Range::Of(limits::kBatchSize));
   o->optimiser_options.max_evaluations = static_cast<int>(budget);
   o->optimiser_options.batch_size = static_cast<int>(batch);
+  o->optimiser_options.bracket_points = static_cast<int>(points);
   f.Number("unit_tolerance", &o->optimiser_options.unit_tolerance, kOptional,
            Range::Of(limits::kUnitTolerance));
   f.Unsigned("seed", &o->optimiser_options.seed, kOptional);
