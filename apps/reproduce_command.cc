@@ -29,6 +29,13 @@ Command AddReproduceCommand(CLI::App& parent) {
                   "runs side by side on this many cores (0: all; under mpirun: per rank, 0: 1)")
       ->check(CliRange<int>(limits::kThreads));
   app->add_flag("--quiet", options->quiet, "fewer progress lines on stderr");
+  app->add_option("--bracket-points", options->bracket_points,
+                  "candidates per round of the calibrations' bracket search (1: one at a time; "
+                  "more fill more ranks, for more runs in all; resume with the same value)")
+      ->check(CliRange<int>(limits::kBatchSize));
+  app->add_flag("--calibrations-in-sequence", options->calibrations_in_sequence,
+                "run stage 1's and 3's calibrations one after another instead of together "
+                "(same results)");
   return {app, [options] { return RunReproduce(*options, std::cerr); }};
 }
 

@@ -129,7 +129,8 @@ OptimiserResult Search::Run(double start) {
   if (s.settled) return Finish(Termination::kWithinNoise, "the start candidate matches within noise");
   if (wide && (lo.settled || hi.settled))
     return Finish(Termination::kWithinNoise, "a bound matches within noise");
-  if (!wide && Budget()) return Finish(Termination::kBudget, "budget used up at the start candidate");
+  if (!wide && Budget())
+    return Finish(Termination::kBudget, "budget used up at the start candidate");
   // Probe the bound on the side the residual says the root lies (assuming an increasing
   // observable); the other bound only if that shows no sign change.
   const bool up_first = s.r() < 0;

@@ -135,12 +135,14 @@ std::vector<CandidateResult> TargetEvaluator::Run(const std::vector<std::vector<
   std::mutex error_mutex;
   std::vector<std::string> journal_errors(n);
   std::vector<ReplicateRecord*> slots;
-  const double batch_start = objectives::farm::UnixNow();
-  for (const Task& task : pending) {
+  for (const Task& task : pending)
     slots.push_back(&batch[task.candidate].runs[task.group][task.replicate]);
-    slots.back()->batch_unix_s = batch_start;
-  }
   objectives::farm::Job job;
+  // The farm's batch start: shared by the calibrations run together (farm::RunGathered), so
+  // journal-stats sees their runs as one batch.
+  job.started = [&](double unix_s) {
+    for (ReplicateRecord* slot : slots) slot->batch_unix_s = unix_s;
+  };
   job.count = static_cast<int>(pending.size());
   job.fingerprint = Fingerprint(slots);
   job.run = [&](int t) {

@@ -5,6 +5,7 @@
 #include <chrono>
 
 #include "objectives/common/replicates.h"
+#include "objectives/farm/farm_gather.h"
 #include "objectives/farm/farm_ranks.h"
 
 namespace demcal::objectives::farm {
@@ -23,6 +24,11 @@ double UnixNow() {
 }
 
 void RunBatch(const Job& job, const Options& options) {
+  if (!GatherBatch(job, options)) RunBatchHere(job, options);
+}
+
+void RunBatchHere(const Job& job, const Options& options) {
+  if (job.started) job.started(UnixNow());
   if (job.count <= 0 && !Farmed()) return;
   if (!Farmed()) {
     RunReplicates(job.count, 0, options.threads, [&](int t, uint64_t) {

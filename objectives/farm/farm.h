@@ -28,6 +28,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace demcal::objectives::farm {
 
@@ -62,6 +63,9 @@ struct Job {
   std::function<std::string(int)> save;               // slot t's result as bytes (farmed only)
   std::function<void(int, const std::string&)> load;  // slot t's result from bytes (farmed only)
   std::function<void(int)> done;  // slot t holds its result (may be called from several threads)
+  // Called on every rank before the runs, with the batch's start (UTC, s since the epoch): one
+  // time for every job that RunGathered runs in one batch (the journals' batch_unix_s).
+  std::function<void(double)> started;
 };
 
 struct Options {
@@ -77,6 +81,14 @@ struct Options {
 // every rank: on the manager as results arrive (the journal is written at once), elsewhere after
 // the batch.
 void RunBatch(const Job& job, const Options& options);
+
+// Runs `tasks` side by side, one thread each, with the results of running them one after
+// another: a task's farm calls (RunBatch, Rendezvous, Share) wait until every task still going
+// has made its next one, and then the batches of that round run as one batch (the tasks' runs in
+// task order), so calibrations that do not wait on each other fill the slots together. The
+// tasks must make the same calls on every rank (as any farmed code does) and share nothing but
+// what they hand to the farm. Returns when every task has; rethrows the first task's exception.
+void RunGathered(const std::vector<std::function<void()>>& tasks);
 
 // Farmed: the manager waits here until every rank has reached this point with the same
 // fingerprint (e.g. after reading the journal, before the manager appends to it); workers go on.

@@ -10,6 +10,7 @@
 #include <thread>
 #include <vector>
 
+#include "objectives/farm/farm_gather.h"
 #include "objectives/farm/farm_ranks.h"
 #include "objectives/farm/farm_wire.h"
 
@@ -285,6 +286,14 @@ void RunBatchOverRanks(const Job& job, const Options& options) {
 }
 
 void Rendezvous(uint64_t fingerprint) {
+  if (!GatherRendezvous(fingerprint)) RendezvousHere(fingerprint);
+}
+
+void Share(std::string* bytes) {
+  if (!GatherShare(bytes)) ShareHere(bytes);
+}
+
+void RendezvousHere(uint64_t fingerprint) {
   if (!Farmed()) return;
   const uint64_t id = ++State().rendezvous;
   if (!IsManager()) {
@@ -322,7 +331,7 @@ void Rendezvous(uint64_t fingerprint) {
   }
 }
 
-void Share(std::string* bytes) {
+void ShareHere(std::string* bytes) {
   if (!Farmed()) return;
   const uint64_t id = ++State().share;
   if (IsManager()) {

@@ -1,8 +1,8 @@
 // The bracket optimiser on analytic residuals with a known root: k = 1 is the textbook Illinois
 // regula falsi (Dowell & Jarratt 1971), one candidate a batch; k-section (bracket_points = k)
 // finds the same root in fewer batches of up to k candidates.
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 
 #include "analytic_models.h"
@@ -30,7 +30,8 @@ std::vector<double> Illinois(double start, double tol, int budget) {
   double a = start, b = 1.0, fa = Residual(a), fb = Residual(b);
   int kept = 0;
   while (b - a > tol && static_cast<int>(seq.size()) < budget) {
-    const double u = std::clamp(b - fb * (b - a) / (fb - fa), a + 0.01 * (b - a), b - 0.01 * (b - a));
+    const double u =
+        std::clamp(b - fb * (b - a) / (fb - fa), a + 0.01 * (b - a), b - 0.01 * (b - a));
     seq.push_back(u);
     const double r = Residual(u);
     if (std::abs(r) <= 1) break;
@@ -93,7 +94,8 @@ TEST_CASE("bracket, k points a round: the same root in fewer rounds", "[unit][ca
   }
 }
 
-TEST_CASE("bracket, k points a round: the budget caps a round, never exceeded", "[unit][calibrate]") {
+TEST_CASE("bracket, k points a round: the budget caps a round, never exceeded",
+          "[unit][calibrate]") {
   for (int budget : {1, 2, 3, 4, 6, 9}) {
     Recorder rec;
     const OptimiserResult r = Run(&rec, 4, budget);
@@ -104,7 +106,8 @@ TEST_CASE("bracket, k points a round: the budget caps a round, never exceeded", 
   }
 }
 
-TEST_CASE("bracket, k points a round: a bound without a value is retreated from", "[unit][calibrate]") {
+TEST_CASE("bracket, k points a round: a bound without a value is retreated from",
+          "[unit][calibrate]") {
   Recorder rec;
   rec.trial = [](const std::vector<double>& u) {
     return u[0] > 0.9 ? TrialResult{} : Trial(u);  // the heaps never settle near the top
@@ -119,7 +122,9 @@ TEST_CASE("bracket, k points a round: a bound without a value is retreated from"
 
 TEST_CASE("bracket, k points a round: out of reach is still said", "[unit][calibrate]") {
   Recorder rec;
-  rec.trial = [](const std::vector<double>& u) { return TrialResult{true, {Residual(u[0]) - 1e6}, {0.0}}; };
+  rec.trial = [](const std::vector<double>& u) {
+    return TrialResult{true, {Residual(u[0]) - 1e6}, {0.0}};
+  };
   const OptimiserResult r =
       BracketOptimise(rec.Function(), {0.1}, {.max_evaluations = 40, .bracket_points = 4});
   CHECK(r.termination == Termination::kOutOfRange);

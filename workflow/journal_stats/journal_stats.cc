@@ -5,7 +5,6 @@
 #include <filesystem>
 #include <map>
 #include <sstream>
-#include <tuple>
 
 #include "core/io/input_file.h"
 
@@ -127,7 +126,9 @@ bool ReadJournalStats(const std::string& dir, JournalStats* stats, std::string* 
   if (!ReadJournalRuns(dir, &runs, &stats->journals, error)) return false;
   stats->simulations = static_cast<int>(runs.size());
   double first = INFINITY, last = -INFINITY, timed_s = 0;
-  std::map<std::tuple<int, double, size_t>, double> longest;  // batch -> its longest run
+  // batch -> its longest run; a batch is the runs that share batch_unix_s, whatever their
+  // journal (the calibrations reproduce runs together share the farm's batch)
+  std::map<std::pair<double, size_t>, double> longest;
   std::map<std::pair<std::string, int>, std::vector<std::pair<double, double>>> by_rank;
   for (size_t k = 0; k < runs.size(); ++k) {
     const Run& r = runs[k];
@@ -138,7 +139,7 @@ bool ReadJournalStats(const std::string& dir, JournalStats* stats, std::string* 
     }
     first = std::min(first, r.start), last = std::max(last, r.end);
     timed_s += r.time_s;
-    double& batch = longest[{r.journal, r.batch, r.batch > 0 ? 0 : k}];
+    double& batch = longest[{r.batch, r.batch > 0 ? 0 : k + 1}];
     batch = std::max(batch, r.time_s);
     by_rank[{r.host, r.rank}].emplace_back(r.start, r.end);
   }

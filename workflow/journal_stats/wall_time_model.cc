@@ -6,7 +6,6 @@
 #include <map>
 #include <queue>
 #include <sstream>
-#include <tuple>
 #include <utility>
 
 namespace demcal::workflow {
@@ -36,8 +35,9 @@ double ListScheduleMakespan(const std::vector<double>& times, int slots) {
 
 WallTimeModel ModelWallTime(const std::vector<JournalRun>& runs, const std::vector<int>& ranks) {
   WallTimeModel m;
-  // A batch: (journal, batch_unix_s), or a run of its own when it has no batch.
-  std::map<std::tuple<int, double, size_t>, Batch> batches;
+  // A batch: the runs that share batch_unix_s, whatever their journal (calibrations run
+  // together share the farm's batch, farm::RunGathered), or a run of its own without one.
+  std::map<std::pair<double, size_t>, Batch> batches;
   double first = INFINITY, last = -INFINITY;
   for (size_t k = 0; k < runs.size(); ++k) {
     const JournalRun& r = runs[k];
@@ -45,7 +45,7 @@ WallTimeModel ModelWallTime(const std::vector<JournalRun>& runs, const std::vect
     ++m.runs;
     m.run_time_s += r.time_s;
     first = std::min(first, r.start), last = std::max(last, r.end);
-    Batch& b = batches[{r.journal, r.batch, r.batch > 0 ? 0 : k + 1}];
+    Batch& b = batches[{r.batch, r.batch > 0 ? 0 : k + 1}];
     b.first_start = std::min(b.first_start, r.start);
     b.last_end = std::max(b.last_end, r.end);
     b.runs.emplace_back(r.start, r.time_s);

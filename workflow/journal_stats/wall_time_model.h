@@ -3,9 +3,10 @@
 // in its journals (journal_stats.h), for `demcal journal-stats DIR --model-ranks 8,64,512`.
 //
 // Model (docs/scale.md, "Wall-time model"):
-//  - Batches run in sequence, in the order they started: a batch is the runs of one journal that
-//    share batch_unix_s (a calibration's evaluator batch, reproduce's segregation replicates); a
-//    run without a batch is a batch of its own.
+//  - Batches run in sequence, in the order they started: a batch is the runs that share
+//    batch_unix_s (a calibration's evaluator batch, or the batches of the calibrations that
+//    reproduce runs together, which the farm starts as one; reproduce's segregation
+//    replicates), whichever journals hold them; a run without a batch is a batch of its own.
 //  - Inside a batch the farm hands the runs out from a queue to the first free slot (list
 //    scheduling, farm.h); the queue order is the order in which the runs started. Each run
 //    keeps its measured time at any rank count: a slot is a core of its own, and nothing else

@@ -21,7 +21,9 @@ std::string ConditionText(const nlohmann::json& conditions) {
   return text;
 }
 
-nlohmann::ordered_json StudyJson(const CalibrationStep& s) {
+// bracket_points only when above 1, so a one-point study is the file it always was (and its
+// journal's study hash with it).
+nlohmann::ordered_json StudyJson(const CalibrationStep& s, int bracket_points) {
   nlohmann::ordered_json measurement{{"table", fs::absolute(s.table).string()},
                                      {"material", s.material},
                                      {"conditions", s.conditions}};
@@ -40,6 +42,7 @@ nlohmann::ordered_json StudyJson(const CalibrationStep& s) {
                        {"max", s.max}, {"start", s.start}}}},
       {"optimiser", {{"name", "bracket"}, {"max_evaluations", s.max_evaluations}}},
       {"replicates", s.replicates}};
+  if (bracket_points > 1) study["optimiser"]["bracket_points"] = bracket_points;
   if (!s.clump_counts.empty())
     study["clump_count"] = {{"species", s.material_a}, {"semi_axes", s.semi_axes},
                             {"counts", s.clump_counts}};
@@ -82,7 +85,7 @@ bool CheckCalibrationStep(const CalibrationStep& step, std::string* error) {
   StudyFile study;
   // Every path in the document is absolute: the name only heads the message, stripped below.
   const std::string name = "study";
-  if (ParseStudyJson(nlohmann::json::parse(StudyJson(step).dump()), name, &study, error))
+  if (ParseStudyJson(nlohmann::json::parse(StudyJson(step, 1).dump()), name, &study, error))
     return true;
   if (error->rfind(name + ": ", 0) == 0) error->erase(0, name.size() + 2);
   return false;
@@ -95,7 +98,7 @@ bool RunCalibrationStep(const ReproduceContext& ctx, const CalibrationStep& step
   if (writer) fs::create_directories(step.dir, ec);
   if (ec) return *error = "cannot create '" + step.dir + "': " + ec.message(), false;
   const std::string study_path = step.dir + "/study.json";
-  const nlohmann::ordered_json document = StudyJson(step);
+  const nlohmann::ordered_json document = StudyJson(step, ctx.bracket_points);
   if (writer && !WriteJsonFile(study_path, document, error)) return false;  // what ran
   *out = CalibrationOutcome{};
   StudyFile study;

@@ -22,6 +22,12 @@ struct ReproduceContext {
   bool quick = false;
   int threads = 0;  // runs side by side (0: all cores)
   bool quiet = false;
+  // Candidates per refining round of every calibration's bracket (k-section; 1: regula falsi,
+  // one candidate a round). Part of the results, so part of the stage journal's fingerprint.
+  int bracket_points = 1;
+  // Stage 1's and stage 3's calibrations one after another instead of together
+  // (calibration_steps.h); the results are the same either way.
+  bool calibrations_in_sequence = false;
   std::ostream* log = nullptr;
   StageJournal* journal = nullptr;
   nlohmann::json results = nlohmann::json::object();  // stage name -> its result

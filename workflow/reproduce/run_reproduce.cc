@@ -123,7 +123,11 @@ int RunReproduce(const ReproduceOptions& options, std::ostream& log) {
     return kExitInvalidInput;
   }
   StageJournal journal;
-  const std::string fingerprint = workflow.fingerprint + (options.quick ? "/quick" : "/default");
+  // A k-section bracket asks for other candidates: its finished work is another run's.
+  const std::string fingerprint =
+      workflow.fingerprint + (options.quick ? "/quick" : "/default") +
+      (options.bracket_points > 1 ? "/bracket_points=" + std::to_string(options.bracket_points)
+                                  : "");
   std::string opened;  // the workers read the journal once rank 0 has opened (or created) it
   if (writer && journal.Open(options.out_dir + "/stages.jsonl", fingerprint, &error)) opened = "1";
   farm::Share(&opened);
@@ -135,7 +139,9 @@ int RunReproduce(const ReproduceOptions& options, std::ostream& log) {
   farm::Rendezvous(journal.size());  // every rank resumes from the same finished work
   farm::Share(&opened);              // and no worker starts before that check
   ReproduceContext ctx{.workflow = &workflow, .out_dir = options.out_dir, .quick = options.quick,
-                       .threads = options.threads, .quiet = options.quiet, .log = &log,
+                       .threads = options.threads, .quiet = options.quiet,
+                       .bracket_points = options.bracket_points,
+                       .calibrations_in_sequence = options.calibrations_in_sequence, .log = &log,
                        .journal = &journal};
   log << "reproduce: " << workflow.name << " (" << path << ") into " << options.out_dir
       << (options.quick ? " at --quick fidelity" : " at the default fidelity") << "\n";

@@ -1,5 +1,6 @@
 #pragma once
-// `demcal reproduce NAME|WORKFLOW.json --out DIR [--quick] [--threads N] [--quiet]`: runs the
+// `demcal reproduce NAME|WORKFLOW.json --out DIR [--quick] [--threads N] [--quiet]
+// [--bracket-points K] [--calibrations-in-sequence]`: runs the
 // stages of a demcal-workflow/1 file (stages.h) in order, each journalled in DIR/stages.jsonl
 // (stage_journal.h): run again with the same --out after a kill and finished stages and finished
 // replicate runs are not repeated. Then writes DIR/summary.json (paper vs demcal, summary_table.h),
@@ -17,6 +18,8 @@ struct ReproduceOptions {
   bool quick = false;
   int threads = 0;
   bool quiet = false;
+  int bracket_points = 1;                 // candidates per round of the calibrations' bracket
+  bool calibrations_in_sequence = false;  // stage 1's and 3's calibrations one at a time
   std::string repo_root;  // where bundled workflows are looked up (default: the source tree)
 };
 

@@ -12,7 +12,7 @@
 #include <cstdio>
 
 #include "files/measurement_table.h"
-#include "workflow/reproduce/calibration_step.h"
+#include "workflow/reproduce/calibration_steps.h"
 #include "workflow/reproduce/stages.h"
 
 namespace demcal::workflow {
@@ -75,26 +75,36 @@ bool RunGammaPerCoatingStage(ReproduceContext& ctx, nlohmann::json* result, std:
   const double start = std::clamp(ctx.results["cohesion"]["gamma_sim_J_m2"].get<double>(),
                                   c.gamma_min_J_m2, c.gamma_max_J_m2);
   nlohmann::json levels = nlohmann::json::array(), values = nlohmann::json::object();
+  std::vector<CalibrationStep> steps;  // the levels with a row do not wait on each other
+  std::vector<std::string> skipped(c.levels.size());  // why a level has no row
   for (size_t k = 0; k < c.levels.size(); ++k) {
     const double level = c.levels[k];
     std::string table, why;
     CoatingLevelTable(w, level, &table, &why);
-    char key[64];
     if (table.empty()) {
       *ctx.log << "reproduce: coating level " << level << " wt%: no angle row: " << why
                << "; skipped\n";
-      levels.push_back({{"wt_pct", level}, {"skipped", "no angle_deg row: " + why},
+      skipped[k] = "no angle_deg row: " + why;
+      continue;
+    }
+    *ctx.log << "reproduce: coating level " << k + 1 << "/" << c.levels.size() << ": Γ of "
+             << c.material << "-" << c.material << " at " << level << " wt%\n";
+    steps.push_back(CoatingLevelStep(w, level, table, experiment, start,
+                                     ctx.StageDir("gamma_per_coating")));
+  }
+  std::vector<CalibrationOutcome> outcomes;
+  if (!RunCalibrationSteps(ctx, steps, &outcomes, error)) return false;
+  for (size_t k = 0, run = 0; k < c.levels.size(); ++k) {
+    const double level = c.levels[k];
+    char key[64];
+    if (!skipped[k].empty()) {
+      levels.push_back({{"wt_pct", level}, {"skipped", skipped[k]},
                         {"value", nullptr}, {"sigma", nullptr}, {"synthetic", false}});
       std::snprintf(key, sizeof(key), "gamma_w%g_J_m2", level);
       values[key] = ValueJson(NAN, NAN, "no angle at this level in the tables");
       continue;
     }
-    *ctx.log << "reproduce: coating level " << k + 1 << "/" << c.levels.size() << ": Γ of "
-             << c.material << "-" << c.material << " at " << level << " wt%\n";
-    const CalibrationStep step = CoatingLevelStep(w, level, table, experiment, start,
-                                                  ctx.StageDir("gamma_per_coating"));
-    CalibrationOutcome o;
-    if (!RunCalibrationStep(ctx, step, &o, error)) return false;
+    const CalibrationOutcome& o = outcomes[run++];
     nlohmann::json entry = o.ToJson();
     entry["wt_pct"] = level;
     entry["synthetic"] = o.provenance == "synthetic";

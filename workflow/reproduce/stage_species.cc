@@ -9,7 +9,7 @@
 #include "core/math/number_text.h"
 #include "files/json_document.h"
 #include "objectives/farm/farm.h"
-#include "workflow/reproduce/calibration_step.h"
+#include "workflow/reproduce/calibration_steps.h"
 #include "workflow/reproduce/clump_table.h"
 #include "workflow/reproduce/experiment_edit.h"
 #include "workflow/reproduce/stages.h"
@@ -40,15 +40,20 @@ CalibrationStep SpeciesStep(const WorkflowFile& w, size_t k, const std::string& 
 bool RunSpeciesStage(ReproduceContext& ctx, nlohmann::json* result, std::string* error) {
   const WorkflowFile& w = *ctx.workflow;
   nlohmann::json species = nlohmann::json::object(), values = nlohmann::json::object();
+  std::vector<CalibrationStep> steps;  // the species do not wait on each other: run together
   for (size_t k = 0; k < w.species.size(); ++k) {
     const WorkflowSpecies& s = w.species[k];
-    const std::string key = "species/" + s.name;
     *ctx.log << "reproduce: species " << k + 1 << "/" << w.species.size() << " " << s.name
              << ": " << (s.hold ? "clump count, " + s.property + " held" : s.property)
              << " against the measured repose angle\n";
-    const CalibrationStep step = SpeciesStep(w, k, ctx.StageDir("species"));
-    CalibrationOutcome o;
-    if (!RunCalibrationStep(ctx, step, &o, error)) return false;
+    steps.push_back(SpeciesStep(w, k, ctx.StageDir("species")));
+  }
+  std::vector<CalibrationOutcome> outcomes;
+  if (!RunCalibrationSteps(ctx, steps, &outcomes, error)) return false;
+  for (size_t k = 0; k < w.species.size(); ++k) {
+    const WorkflowSpecies& s = w.species[k];
+    const CalibrationStep& step = steps[k];
+    const CalibrationOutcome& o = outcomes[k];
     nlohmann::json entry = o.ToJson();
     // The paper's Fig. 3, from the loop's own outputs. Without a matching count the later stages
     // run the nearest one (least cost), and the rows say it did not match.

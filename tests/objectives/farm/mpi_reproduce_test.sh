@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # `mpirun -np 3 demcal reproduce` gives the local run's numbers (docs/scale.md): a workflow of
-# seconds per run (tiny_reproduce/: one species, one coating level, a few-gram segregation heap
+# seconds per run (tiny_reproduce/: two species, one coating level, a few-gram segregation heap
 # in 3 scenarios x 2 replicates, a 2-replicate fidelity check), run with --threads 2 and under
 # `mpirun --oversubscribe -np 3`; summary.json, the stage journal and every stage's result must be
 # equal apart from wall times, hosts, ranks and the output folder's name; a run resumed under
-# mpirun after a kill in the segregation stage reads the finished heaps back.
+# mpirun after a kill in the segregation stage reads the finished heaps back. The two species'
+# calibrations run together (their batches share the farm's batches, seen in their journals);
+# a local run with --calibrations-in-sequence must give the same numbers.
 # Usage: mpi_reproduce_test.sh DEMCAL REPO_ROOT
 set -euo pipefail
 demcal=$1 root=$2
@@ -18,17 +20,22 @@ start=$(date +%s%N)
 local_rc=0
 "$demcal" reproduce "${args[@]}" --out "$work/local" --threads 2 2> "$work/local.log" || local_rc=$?
 local_ms=$((($(date +%s%N) - start) / 1000000))
+sequence_rc=0
+"$demcal" reproduce "${args[@]}" --out "$work/sequence" --threads 2 --calibrations-in-sequence \
+  2> "$work/sequence.log" || sequence_rc=$?
 start=$(date +%s%N)
 mpi_rc=0
 mpirun --oversubscribe -np 3 "$demcal" reproduce "${args[@]}" --out "$work/mpi" 2> "$work/mpi.log" ||
   mpi_rc=$?
 mpi_ms=$((($(date +%s%N) - start) / 1000000))
 echo "wall time (ms): local --threads 2: $local_ms, mpirun --oversubscribe -np 3: $mpi_ms"
-if [[ $local_rc != 0 || $mpi_rc != 0 ]]; then
-  echo "exit codes: local $local_rc, mpirun $mpi_rc"; cat "$work/local.log" "$work/mpi.log"; exit 1
+if [[ $local_rc != 0 || $mpi_rc != 0 || $sequence_rc != 0 ]]; then
+  echo "exit codes: local $local_rc, mpirun $mpi_rc, in sequence $sequence_rc"
+  cat "$work/local.log" "$work/mpi.log" "$work/sequence.log"; exit 1
 fi
 
-python3 - "$work/local" "$work/mpi" <<'PY'
+for b in mpi sequence; do
+python3 - "$work/local" "$work/$b" <<'PY'
 import glob, json, os, sys
 a, b = sys.argv[1], sys.argv[2]
 # Where and when each run went, and how long it took, differ by design; nothing else may.
@@ -58,9 +65,18 @@ segregation = [k for k in jb if '"key": "segregation/' in k]
 assert len(segregation) == 6, f"{len(segregation)} segregation runs in the journal, not 6"
 for f in ("report.html", "segregation/uncoated/r1/result.json", "fidelity_check/result.json"):
     assert os.path.isfile(f"{b}/{f}"), f"{f} missing from the farmed run's folder"
-print(f"same as the local run: summary.json ({len(sa['rows'])} rows), {len(jb)} stage records, "
-      f"{len(results)} stage results")
+# Together, the species' batches went out as the farm's batches (one batch start for both
+# journals); in sequence, never.
+def batches(root, species):
+    lines = open(f"{root}/species/{species}/journal.jsonl").read().splitlines()[1:]
+    return {json.loads(l)["batch_unix_s"] for l in lines}
+for root, together in ((a, True), (b, not b.endswith("sequence"))):
+    shared = batches(root, "EP") & batches(root, "BP")
+    assert bool(shared) == together, f"{root}: shared batch starts {shared}"
+print(f"{os.path.basename(b)} the same as the local run: summary.json ({len(sa['rows'])} rows), "
+      f"{len(jb)} stage records, {len(results)} stage results")
 PY
+done
 # The segregation replicates and the calibrations' heaps ran on both workers.
 stats=$("$demcal" journal-stats "$work/mpi")
 for rank in 1 2; do

@@ -4,6 +4,7 @@
 #include "workflow/journal_stats/wall_time_model.h"
 
 #include <catch2/catch.hpp>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -86,6 +87,30 @@ TEST_CASE("wall-time model of a hand-made job at 1, 2, 3 and 5 ranks", "[unit][w
   CHECK(m.predictions[2].wall_span_s == Approx(5 + 6 + 3 + 8.5));
   // 5 ranks, 4 slots: each batch its longest run.
   CHECK(m.predictions[3].wall_span_s == Approx(4 + 6 + 3 + 8.5));
+}
+
+TEST_CASE("wall-time model: calibrations run together share a batch across their journals",
+          "[unit][workflow]") {
+  // Two calibrations' journals, one farm batch (farm::RunGathered): 4 and 2 s runs in one,
+  // a 3 s run started at 202 in the other. Queue order by start: 2, 4 (both at 200), then 3.
+  demcal::testing::ScratchDir dir("wall_time_model_gathered");
+  std::filesystem::create_directories(dir.str("a"));
+  std::filesystem::create_directories(dir.str("b"));
+  const char* header = R"({"format": "demcal-journal/3", "study": "f"})";
+  std::ofstream(dir.str("a/journal.jsonl"))
+      << header << "\n" << Record(1, 200, 204, 200) << Record(2, 200, 202, 200);
+  std::ofstream(dir.str("b/journal.jsonl")) << header << "\n" << Record(2, 202, 205, 200);
+  std::vector<JournalRun> runs;
+  int journals = 0;
+  std::string error;
+  REQUIRE(ReadJournalRuns(dir.str(), &runs, &journals, &error));
+  CHECK(journals == 2);
+  const WallTimeModel m = ModelWallTime(runs, {1, 3, 5});
+  CHECK(m.batches == 1);
+  CHECK(m.between_batches_s == Approx(0));
+  CHECK(m.predictions[0].wall_span_s == Approx(9));  // one at a time
+  CHECK(m.predictions[1].wall_span_s == Approx(5));  // 2 then 3 on one slot, 4 on the other
+  CHECK(m.predictions[2].wall_span_s == Approx(4));  // each run a slot: the longest
 }
 
 TEST_CASE("demcal journal-stats --model-ranks prints the prediction and refuses 0 ranks",
