@@ -28,7 +28,7 @@ bool ParameterSpace::IsValid(const core::Scene& model, std::string* error,
   for (size_t k = 0; k < parameters.size(); ++k) {
     const Parameter& p = parameters[k];
     const std::string at = k < paths.size() ? paths[k] : "parameters[" + std::to_string(k) + "]";
-    const double max = PairPropertyMax(p.property);
+    const double min = PairPropertyMin(p.property), max = PairPropertyMax(p.property);
     if (p.name.empty()) return Fail(error, at + ".name: must not be empty");
     if (!names.insert(p.name).second) return Fail(error, at + ".name: '" + p.name + "' is used twice");
     if (p.material_i < 0 || p.material_i >= materials || p.material_j < 0 || p.material_j >= materials)
@@ -40,9 +40,13 @@ bool ParameterSpace::IsValid(const core::Scene& model, std::string* error,
     if (p.curve >= 0) {  // a curve coefficient: any finite bounds (an intercept, an exponent)
       if (!(std::isfinite(p.lower) && std::isfinite(p.upper) && p.lower < p.upper))
         return Fail(error, at + ".min/max: need finite min < max");
-    } else if (!(p.lower >= 0 && p.lower < p.upper && p.upper <= max))
-      return Fail(error, at + ".min/max: need min < max within " + limits::Closed(0, max).Text() +
+    } else if (!(p.lower >= min && p.lower < p.upper && p.upper <= max))
+      return Fail(error, at + ".min/max: need min < max within " + limits::Closed(min, max).Text() +
                              " (got " + limits::Closed(p.lower, p.upper).Text() + ")");
+    // A species' own property: the pair of its material with itself names it.
+    if (p.property == PairProperty::kAspectRatio && p.material_i != p.material_j)
+      return Fail(error, at + ".materials: an aspect_ratio names one material twice ([\"EP\", "
+                             "\"EP\"]): it is the shape of that material's species");
     if (p.property == PairProperty::kRestitution && p.lower <= 0)
       return Fail(error, at + ".min: a restitution must be > 0");
     if (p.log_scale && p.lower <= 0) return Fail(error, at + ".log_scale: needs min > 0");

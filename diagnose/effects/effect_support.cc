@@ -9,6 +9,7 @@ double Get(calibrate::PairProperty property, const core::PairParameters& p) {
     case calibrate::PairProperty::kRollingFriction: return p.rolling_friction;
     case calibrate::PairProperty::kRestitution: return p.restitution;
     case calibrate::PairProperty::kInterfacialEnergy: return p.interfacial_energy_J_m2;
+    case calibrate::PairProperty::kAspectRatio: break;  // a species' shape: no effect shifts it
   }
   return 0;
 }

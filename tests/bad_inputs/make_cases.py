@@ -330,6 +330,11 @@ case("workflow_level_negative", {"workflow_level_negative.json": workflow(
 case("workflow_species_bounds", {"workflow_species_bounds.json": workflow(
     lambda w: w["species"][0].update(min=0.9, max=0.1, start=0.5))},
      R % "workflow_species_bounds.json", 2, "species[0]")
+case("workflow_aspect_ratio_below_sphere", {"workflow_aspect_ratio_below_sphere.json": workflow(
+    lambda w: w["species"][0].update(hold=True, clump_counts=[1, 2],
+                                     aspect_ratio={"min": 0.5, "max": 3.5}))},
+     R % "workflow_aspect_ratio_below_sphere.json", 2,
+     "species[0].aspect_ratio.min' = 0.5 is outside the allowed range [1, 10]")
 case("workflow_poisson", {"workflow_poisson.json": workflow(
     lambda w: w["cohesion"].update(poisson_ratio=0.7))},
      R % "workflow_poisson.json", 2, "cohesion.poisson_ratio")

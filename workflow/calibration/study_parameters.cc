@@ -83,12 +83,13 @@ void ParseStudyParameter(const nlohmann::json& j, const std::string& path, Study
   std::string name, property;
   f.String("name", &name, kRequired);
   f.String("property", &property, kRequired,
-           {"sliding_friction", "rolling_friction", "restitution", "interfacial_energy_J_m2"});
+           {"sliding_friction", "rolling_friction", "restitution", "interfacial_energy_J_m2",
+            "aspect_ratio"});
   std::pair<std::string, std::string> names;
   int mi = 0, mj = 0;
   if (!f.ok() || !ParsePair(f, study->experiment().model, &names, &mi, &mj)) return;
   calibrate::PairProperty prop;
-  calibrate::PairPropertyFromKey(property, &prop);
+  calibrate::CalibratedPropertyFromKey(property, &prop);
   if (const nlohmann::json* curve = f.Object("curve", kOptional)) {
     if (f.Has("min") || f.Has("max") || f.Has("start") || f.Has("when"))
       return f.Fail("curve", "a curve's bounds belong to its coefficients; drop min/max/start/when");

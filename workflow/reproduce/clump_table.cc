@@ -58,15 +58,15 @@ nlohmann::json NearestClumpRow(const nlohmann::json& rows) {
   return best;
 }
 
-bool AddClumpCountTable(const std::string& species, const nlohmann::json& entry, HtmlReport* r,
-                        std::string* error) {
-  if (!entry.is_object() || !entry.contains("clump_table") || entry["clump_table"].empty())
-    return true;
+namespace {
+
+// The table of a clump-count loop with a fixed shape (the calibration layer's).
+HtmlTable CountTable(const std::string& species, const nlohmann::json& rows) {
   HtmlTable t{.caption = species + ": clump sphere count against the measured angle (the "
                          "paper's Fig. 3)",
               .header = {"spheres", "angle demcal [deg]", "cost (Σ z²)", "within noise",
                          "not excluded", "termination"}};
-  for (const nlohmann::json& row : entry["clump_table"]) {
+  for (const nlohmann::json& row : rows) {
     const nlohmann::json sem = row.value("angle_sem_deg", nlohmann::json());
     t.rows.push_back({std::to_string(row.value("count", 0)),
                       Fmt(row.value("angle_deg", nlohmann::json()), "%.1f") +
@@ -75,6 +75,44 @@ bool AddClumpCountTable(const std::string& species, const nlohmann::json& entry,
                       row.value("within_noise", false) ? "yes" : "no",
                       row.value("agrees", false) ? "yes" : "no", row.value("termination", "")});
   }
+  return t;
+}
+
+// The table of a search that calibrated the aspect ratio per count (shape_search.h).
+HtmlTable AspectRatioTable(const std::string& species, const nlohmann::json& rows) {
+  HtmlTable t{.caption = species + ": clump sphere count and calibrated aspect ratio against the "
+                         "measured angle (the paper's Fig. 3)",
+              .header = {"spheres", "aspect ratio a/c [-]", "angle demcal [deg]", "cost (Σ z²)",
+                         "within noise", "heaps", "wall [s]", "termination", "note"}};
+  for (const nlohmann::json& row : rows) {
+    const nlohmann::json sigma = row.value("aspect_ratio_sigma", nlohmann::json());
+    const nlohmann::json sem = row.value("angle_sem_deg", nlohmann::json());
+    const bool sphere = row.value("count", 0) == 1;
+    t.rows.push_back(
+        {std::to_string(row.value("count", 0)),
+         sphere ? "1 (sphere)"
+                : Fmt(row.value("aspect_ratio", nlohmann::json()), "%.2f") +
+                      (sigma.is_number() ? " ± " + Fmt(sigma, "%.2f") : "") +
+                      (row.value("aspect_at_bound", false) ? " (at bound)" : ""),
+         Fmt(row.value("angle_deg", nlohmann::json()), "%.1f") +
+             (sem.is_number() ? " ± " + Fmt(sem, "%.1f") : ""),
+         Fmt(row.value("cost", nlohmann::json()), "%.3g"),
+         row.value("within_noise", false) ? "yes" : "no", std::to_string(row.value("heaps", 0)),
+         Fmt(row.value("wall_time_s", nlohmann::json()), "%.0f"), row.value("termination", ""),
+         row.value("note", "")});
+  }
+  return t;
+}
+
+}  // namespace
+
+bool AddClumpCountTable(const std::string& species, const nlohmann::json& entry, HtmlReport* r,
+                        std::string* error) {
+  if (!entry.is_object() || !entry.contains("clump_table") || entry["clump_table"].empty())
+    return true;
+  const nlohmann::json& rows = entry["clump_table"];
+  const HtmlTable t = rows[0].contains("aspect_ratio") ? AspectRatioTable(species, rows)
+                                                      : CountTable(species, rows);
   if (!r->Table(t, error)) return false;
   if (entry.contains("clump_note") && entry["clump_note"].is_string())
     r->Paragraph(species + ": " + entry["clump_note"].get<std::string>() + ".");

@@ -22,7 +22,9 @@ nlohmann::json ReadClumpCountTable(const std::string& dir);
 nlohmann::json NearestClumpRow(const nlohmann::json& rows);
 
 // The table of one species (`entry`: stage 1's species entry with its "clump_table"), with the
-// count chosen and the note of the loop; nothing when the entry has no table.
+// count chosen and the note of the loop; nothing when the entry has no table. Rows with an
+// "aspect_ratio" (a search that calibrated it per count, shape_search.h) add the calibrated
+// aspect ratio ± σ, the heaps and wall time each count cost and a note per row.
 bool AddClumpCountTable(const std::string& species, const nlohmann::json& entry, HtmlReport* r,
                         std::string* error);
 

@@ -1,9 +1,10 @@
 // Stage 1, species (paper section 2.4, Fig. 3): for each species of the workflow file, the pair
 // property it names (the rolling friction by default) of the species with itself, calibrated so
 // the poured heap matches the species' measured repose angle; with clump_counts, the smallest
-// clump sphere count that matches (the calibration layer's clump loop). The calibrated value is
-// written into a copy of the species' experiment file (species/<name>/calibrated_experiment.json)
-// for the stages after it.
+// clump sphere count that matches (the calibration layer's clump loop), or, with an aspect_ratio,
+// the smallest count whose calibrated aspect ratio matches (shape_search.h). The calibrated
+// value is written into a copy of the species' experiment file
+// (species/<name>/calibrated_experiment.json) for the stages after it.
 #include <cmath>
 
 #include "core/math/number_text.h"
@@ -12,6 +13,7 @@
 #include "workflow/reproduce/calibration_steps.h"
 #include "workflow/reproduce/clump_table.h"
 #include "workflow/reproduce/experiment_edit.h"
+#include "workflow/reproduce/shape_search.h"
 #include "workflow/reproduce/stages.h"
 
 namespace demcal::workflow {
@@ -33,7 +35,9 @@ CalibrationStep SpeciesStep(const WorkflowFile& w, size_t k, const std::string& 
           .replicates = w.replicates,
           // Held (the paper's Table 1 value): one candidate per count, at `start`.
           .max_evaluations = s.hold ? 1 : CalibrationStep{}.max_evaluations,
-          .clump_counts = s.clump_counts,
+          // With a calibrated aspect ratio each count is a calibration of its own
+          // (shape_search.h): this is the held-property study each starts from.
+          .clump_counts = s.aspect_ratio.enabled ? std::vector<int>{} : s.clump_counts,
           .semi_axes = s.semi_axes};
 }
 
@@ -41,19 +45,30 @@ bool RunSpeciesStage(ReproduceContext& ctx, nlohmann::json* result, std::string*
   const WorkflowFile& w = *ctx.workflow;
   nlohmann::json species = nlohmann::json::object(), values = nlohmann::json::object();
   std::vector<CalibrationStep> steps;  // the species do not wait on each other: run together
+  std::vector<size_t> stepped;         // the species of each step
   for (size_t k = 0; k < w.species.size(); ++k) {
     const WorkflowSpecies& s = w.species[k];
+    // A calibrated aspect ratio is a search over counts, each a calibration that waits on the
+    // one before (shape_search.h): those species run on their own, before the others together.
+    if (s.aspect_ratio.enabled) {
+      *ctx.log << "reproduce: species " << k + 1 << "/" << w.species.size() << " " << s.name
+               << ": clump count and aspect ratio, " << s.property << " held, against the "
+               << "measured repose angle\n";
+      if (!RunShapeSpecies(ctx, k, &species, &values, error)) return false;
+      continue;
+    }
     *ctx.log << "reproduce: species " << k + 1 << "/" << w.species.size() << " " << s.name
              << ": " << (s.hold ? "clump count, " + s.property + " held" : s.property)
              << " against the measured repose angle\n";
     steps.push_back(SpeciesStep(w, k, ctx.StageDir("species")));
+    stepped.push_back(k);
   }
   std::vector<CalibrationOutcome> outcomes;
   if (!RunCalibrationSteps(ctx, steps, &outcomes, error)) return false;
-  for (size_t k = 0; k < w.species.size(); ++k) {
-    const WorkflowSpecies& s = w.species[k];
-    const CalibrationStep& step = steps[k];
-    const CalibrationOutcome& o = outcomes[k];
+  for (size_t i = 0; i < steps.size(); ++i) {
+    const WorkflowSpecies& s = w.species[stepped[i]];
+    const CalibrationStep& step = steps[i];
+    const CalibrationOutcome& o = outcomes[i];
     nlohmann::json entry = o.ToJson();
     // The paper's Fig. 3, from the loop's own outputs. Without a matching count the later stages
     // run the nearest one (least cost), and the rows say it did not match.

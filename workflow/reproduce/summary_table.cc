@@ -22,7 +22,7 @@ const std::vector<std::string>& ReferenceKeys() {
   static const std::vector<std::string> keys = {
       // stage 1: species
       "angle_BP_deg", "angle_TAED_deg", "angle_EP_deg", "clump_count_BP", "clump_count_TAED",
-      "clump_count_EP",
+      "clump_count_EP", "aspect_ratio_BP", "aspect_ratio_TAED", "aspect_ratio_EP",
       // stage 2: Cohesion number
       "coh_coated_EP", "gamma_sim_J_m2",
       // stage 3 and 4: Γ per coating level and the curve

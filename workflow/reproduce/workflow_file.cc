@@ -48,10 +48,27 @@ void NumberList(JsonFields& f, const std::string& key, Presence presence, Range 
   }
 }
 
+// "aspect_ratio": {"min", "max", "start", "max_evaluations"}, within the clump builder's range.
+void ParseAspectRatio(const nlohmann::json& j, const std::string& path, AspectRatioSearch* a,
+                      JsonStatus* status) {
+  JsonFields f(j, path, {"min", "max", "start", "max_evaluations"}, status);
+  const Range range = Range::Of(core::limits::kClumpAspectRatio);
+  f.Number("min", &a->min, kRequired, range);
+  f.Number("max", &a->max, kRequired, range);
+  if (f.ok() && !(a->min < a->max)) return f.Fail("max", "must be larger than min");
+  a->start = 0.5 * (a->min + a->max);
+  f.Number("start", &a->start, kOptional, Range::Closed(a->min, a->max));
+  int64_t n = a->max_evaluations;
+  // The bracket's first three candidates are the start and both bounds.
+  f.Integer("max_evaluations", &n, kOptional, Range::Closed(3, 30));
+  a->max_evaluations = static_cast<int>(n);
+  a->enabled = f.ok();
+}
+
 void ParseSpecies(const nlohmann::json& j, const std::string& path, const std::string& file,
                   WorkflowSpecies* s, JsonStatus* status) {
   JsonFields f(j, path, {"name", "experiment_file", "property", "min", "max", "start",
-                         "clump_counts", "semi_axes", "hold"}, status);
+                         "clump_counts", "semi_axes", "hold", "aspect_ratio"}, status);
   f.String("name", &s->name, kRequired);
   f.String("experiment_file", &s->experiment_file, kRequired);
   s->experiment_file = Resolve(file, s->experiment_file);
@@ -68,6 +85,16 @@ void ParseSpecies(const nlohmann::json& j, const std::string& path, const std::s
   if (f.ok() && f.Has("clump_counts") && counts.empty())
     f.Fail("clump_counts", "needs at least 1 number");
   s->clump_counts.assign(counts.begin(), counts.end());  // each within kClumpSpheres
+  if (const nlohmann::json* a = f.Object("aspect_ratio", kOptional); a && f.ok()) {
+    if (s->clump_counts.empty() || !s->hold)
+      return f.Fail("aspect_ratio", "needs clump_counts and \"hold\": true (the aspect ratio is "
+                                    "calibrated per clump count with the property held)");
+    if (f.Has("semi_axes"))
+      return f.Fail("semi_axes", "give either semi_axes (a fixed shape) or aspect_ratio (a "
+                                 "calibrated one), not both");
+    ParseAspectRatio(*a, f.PathOf("aspect_ratio"), &s->aspect_ratio, status);
+    return;
+  }
   NumberList(f, "semi_axes", s->clump_counts.empty() ? kOptional : kRequired,
              Range::LeftOpen(0, 1e3), 3, &s->semi_axes, status);
   if (std::string why; status->ok() && s->semi_axes.size() == 3 &&

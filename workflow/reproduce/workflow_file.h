@@ -20,6 +20,14 @@ namespace demcal::workflow {
 
 inline constexpr const char* kWorkflowFormat = "demcal-workflow/1";
 
+// The aspect ratio a of the clump shape [a, 1, 1] calibrated per clump count (the paper gives
+// none): bounds, first candidate and the most heaps' candidates one count may cost.
+struct AspectRatioSearch {
+  double min = 1, max = 3.5, start = 2;  // a/c of the prolate spheroid, dimensionless
+  int max_evaluations = 6;               // candidates per count (each `replicates` heaps)
+  bool enabled = false;
+};
+
 // Stage 1: one species' repose angle, matched by one pair property of the species with itself.
 struct WorkflowSpecies {
   std::string name;             // the material (and species) in the experiment file
@@ -31,6 +39,10 @@ struct WorkflowSpecies {
   // The paper's shape calibration (section 2.4): the property held at `start` (Table 1's value)
   // and each clump count judged by its angle there; false: the property calibrated per count.
   bool hold = false;
+  // With clump_counts and hold: per count n >= 2 the aspect ratio is calibrated instead of
+  // taken from semi_axes, and the counts stop at the first that matches
+  // (workflow/reproduce/shape_search.h).
+  AspectRatioSearch aspect_ratio;
 };
 
 // Stages 3–5: the coated species, its levels and the curve.

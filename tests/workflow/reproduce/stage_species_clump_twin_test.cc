@@ -5,51 +5,16 @@
 // and the calibrated experiment copy carries the chosen shape.
 #include <catch2/catch.hpp>
 #include <fstream>
-#include <sstream>
 
 #include "core/io/scratch_dir.h"
-#include "workflow/reproduce/reproduce_context.h"
-#include "workflow/reproduce/stages.h"
-#include "workflow/test_paths.h"
+#include "workflow/reproduce/species_twin.h"
 
 namespace demcal::workflow {
 namespace {
 
-WorkflowFile TwinWorkflow(const std::string& table, std::vector<int> counts) {
-  WorkflowFile w;
-  w.name = "twin";
-  w.shape_assumption = "EP: n spheres on the long axis of a 2:1:1 prolate spheroid";
-  w.measurements = table;
-  w.angle_uncertainty_deg = 1.0;
-  w.angle_uncertainty_note = "twin";
-  w.replicates = 2;
-  WorkflowSpecies ep;
-  ep.name = "EP";
-  ep.experiment_file = (testing::RepoRoot() / "examples/aor_ep.json").string();
-  ep.min = 0, ep.max = 1, ep.start = 0.05;  // Table 1's EP rolling friction, held
-  ep.hold = true;
-  ep.clump_counts = std::move(counts);
-  ep.semi_axes = {2, 1, 1};
-  w.species = {ep};
-  return w;
-}
-
-void WriteTable(const std::string& path, double angle_deg, double u_deg) {
-  std::ofstream(path) << "observable,unit,material,coating_PEG_wt_pct,test,value,uncertainty,"
-                         "repeats,provenance,source\n"
-                      << "angle_deg,deg,EP,0,pseudo-2D heap," << angle_deg << "," << u_deg
-                      << ",,synthetic,twin made by demcal with 3-sphere clumps\n";
-}
-
-nlohmann::json RunStage(const WorkflowFile& w, const std::string& out) {
-  std::ostringstream log;
-  ReproduceContext ctx{.workflow = &w, .out_dir = out, .quick = true, .quiet = true, .log = &log};
-  nlohmann::json result;
-  std::string error;
-  INFO(log.str());
-  REQUIRE(RunSpeciesStage(ctx, &result, &error));
-  return result;
-}
+using testing_twin::RunStage;
+using testing_twin::TwinWorkflow;
+using testing_twin::WriteTable;
 
 TEST_CASE("shape calibration twin: the count the data were made at, or the counts not told apart",
           "[dem][reproduce]") {

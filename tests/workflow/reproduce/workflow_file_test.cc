@@ -91,3 +91,52 @@ TEST_CASE("a workflow file that is not JSON is refused with its line", "[unit]")
   CHECK(error.find("demcal_bad_workflow.json") != std::string::npos);
   fs::remove(path);
 }
+
+TEST_CASE("the clumps workflow calibrates each species' aspect ratio; bad ones are refused",
+          "[unit]") {
+  const fs::path clumps = kBundled.parent_path() / "workflow_clumps.json";
+  WorkflowFile w;
+  std::string error;
+  REQUIRE(LoadWorkflowFile(clumps.string(), &w, &error));
+  for (const WorkflowSpecies& s : w.species) {
+    INFO(s.name);
+    CHECK(s.hold);
+    CHECK(s.aspect_ratio.enabled);
+    CHECK(s.aspect_ratio.min == 1.0);
+    CHECK(s.aspect_ratio.max == 3.5);
+    CHECK(s.aspect_ratio.max_evaluations == 6);
+    CHECK(s.semi_axes.empty());  // the shape is calibrated, not given
+  }
+  std::ifstream in(clumps);
+  const nlohmann::json base = nlohmann::json::parse(in);
+  struct Case {
+    std::function<void(nlohmann::json&)> edit;
+    std::string expected;
+  };
+  const std::vector<Case> cases = {
+      {[](nlohmann::json& a) { a["min"] = 0.5; }, "aspect_ratio.min' = 0.5 is outside the allowed range [1, 10]"},
+      {[](nlohmann::json& a) { a["max"] = 12; }, "aspect_ratio.max' = 12 is outside the allowed range [1, 10]"},
+      {[](nlohmann::json& a) { a["max"] = 1.0; }, "aspect_ratio.max' must be larger than min"},
+      {[](nlohmann::json& a) { a["start"] = 4; }, "aspect_ratio.start' = 4 is outside the allowed range [1, 3.5]"},
+      {[](nlohmann::json& a) { a["max_evaluations"] = 2; },
+       "aspect_ratio.max_evaluations' = 2 is outside the allowed range [3, 30]"},
+      {[](nlohmann::json& a) { a["aspect"] = 2; }, "aspect_ratio"},
+  };
+  for (const Case& c : cases) {
+    nlohmann::json doc = base;
+    c.edit(doc["species"][0]["aspect_ratio"]);
+    INFO(c.expected);
+    CHECK_FALSE(LoadVariant(doc, &w, &error));
+    CHECK(error.find(".workflow_file_test.json") != std::string::npos);
+    CHECK(error.find("species[0]." + c.expected) != std::string::npos);
+  }
+  nlohmann::json both = base;
+  both["species"][0]["semi_axes"] = {2, 1, 1};
+  CHECK_FALSE(LoadVariant(both, &w, &error));
+  CHECK(error.find("species[0].semi_axes' give either semi_axes") != std::string::npos);
+  nlohmann::json free = base;
+  free["species"][0]["hold"] = false;
+  CHECK_FALSE(LoadVariant(free, &w, &error));
+  CHECK(error.find("species[0].aspect_ratio' needs clump_counts and \"hold\": true") !=
+        std::string::npos);
+}
