@@ -104,6 +104,9 @@ std::string Note(const WorkflowSpecies& s, const ShapeSearch& out) {
   if (out.chosen > 0) {
     note = "chose " + RowText(out.rows.back()) + ", the smallest count whose calibrated shape "
            "matches the measured angle within noise";
+    if (out.rows.back().aspect_at_bound)
+      note += " (its aspect ratio is a bound of the range searched: a wider range could let a "
+              "smaller count match)";
   } else if (const ShapeSearchRow* r = out.Used()) {
     note = "no count matched the measured angle within noise with " + s.property + " held at " +
            core::NumberText(s.start) + " and the aspect ratio in [" +

@@ -202,7 +202,8 @@ TEST_CASE("reproduce report: the Fig. 3 table with the calibrated aspect ratio p
     {"count": 2, "aspect_ratio": 2.0, "aspect_ratio_sigma": 0.21, "aspect_at_bound": true,
      "angle_deg": 33.2, "angle_sem_deg": 0.7, "cost": 46.2, "within_noise": false,
      "agrees": false, "termination": "out_of_reach",
-     "note": "best aspect ratio at a bound (upper bound 2: ...), still not within noise", "heaps": 6,
+     "note": "best aspect ratio at a bound (upper bound 2: ...), still not within noise",
+     "heaps": 6,
      "wall_time_s": 130}])json");
   DemcalValues v;
   v["aspect_ratio_EP"] = {.mean = 2.0, .sem = 0.21};
