@@ -1,9 +1,11 @@
 #include "workflow/reproduce/shape_search.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
 
+#include "core/bodies/clump_shapes.h"
 #include "core/math/number_text.h"
 #include "files/json_document.h"
 #include "objectives/farm/farm.h"
@@ -51,11 +53,12 @@ ShapeSearchRow RowOf(const WorkflowSpecies& s, int count, const CalibrationOutco
   const AspectRatioSearch& a = s.aspect_ratio;
   ShapeSearchRow row;
   row.count = count;
+  row.aspect_max = ConnectedAspectLimit(count, a.min, a.max);
   if (count >= 2) {
     row.aspect_ratio = o.value;
     row.aspect_sigma = std::isfinite(o.sigma) ? o.sigma : NAN;
     // The bracket evaluates the bounds exactly: the best candidate equals one or lies inside.
-    row.aspect_at_bound = o.value <= a.min || o.value >= a.max;
+    row.aspect_at_bound = o.value <= a.min || o.value >= row.aspect_max;
   } else {
     row.aspect_sigma = NAN;  // a sphere: nothing calibrated
   }
@@ -101,6 +104,9 @@ std::string Note(const WorkflowSpecies& s, const ShapeSearch& out) {
   if (out.chosen > 0) {
     note = "chose " + RowText(out.rows.back()) + ", the smallest count whose calibrated shape "
            "matches the measured angle within noise";
+    if (out.rows.back().aspect_at_bound)
+      note += " (its aspect ratio is a bound of the range searched: a wider range could let a "
+              "smaller count match)";
   } else if (const ShapeSearchRow* r = out.Used()) {
     note = "no count matched the measured angle within noise with " + s.property + " held at " +
            core::NumberText(s.start) + " and the aspect ratio in [" +
@@ -126,6 +132,20 @@ std::string Note(const WorkflowSpecies& s, const ShapeSearch& out) {
 
 }  // namespace
 
+double ConnectedAspectLimit(int count, double min, double max) {
+  auto connected = [count](double aspect) {
+    core::ShapeApproximation shape;
+    std::string ignored;
+    return core::ApproximateEllipsoid({aspect, 1, 1}, count, &shape, &ignored) &&
+           shape.connected;
+  };
+  if (count < 2 || connected(max)) return max;
+  if (!connected(min)) return min;
+  double lo = min, hi = max;  // connected at lo, not at hi; chains part as they stretch
+  for (int k = 0; k < 40; ++k) (connected(0.5 * (lo + hi)) ? lo : hi) = 0.5 * (lo + hi);
+  return lo;
+}
+
 const ShapeSearchRow* ShapeSearch::Used() const {
   for (const ShapeSearchRow& r : rows)
     if (r.count == chosen) return &r;
@@ -139,11 +159,14 @@ nlohmann::json ShapeSearch::TableJson() const {
     if (r.count >= 2 && !std::isfinite(r.aspect_sigma))
       row_note = "the aspect ratio's standard error is not determined; " + row_note;
     if (r.aspect_at_bound && !r.within_noise)
-      row_note = "best aspect ratio at its bound, still not within noise; " + row_note;
+      row_note = "best aspect ratio at a bound (upper bound " + core::NumberText(r.aspect_max) +
+                 ": the longest chain whose spheres touch, or the workflow's), still not within "
+                 "noise; " + row_note;
     table["rows"].push_back({{"count", r.count},
                              {"aspect_ratio", r.aspect_ratio},
                              {"aspect_ratio_sigma", NumOrNull(r.aspect_sigma)},
                              {"aspect_at_bound", r.aspect_at_bound},
+                             {"aspect_ratio_max", r.aspect_max},
                              {"angle_deg", NumOrNull(r.angle_deg)},
                              {"angle_sem_deg", NumOrNull(r.angle_sem_deg)},
                              {"cost", NumOrNull(r.cost)},
@@ -168,8 +191,8 @@ CalibrationStep ShapeStep(const WorkflowFile& w, size_t k, int count,
     step.parameter = "aspect_ratio_" + s.name;
     step.property = "aspect_ratio";
     step.min = s.aspect_ratio.min;
-    step.max = s.aspect_ratio.max;
-    step.start = s.aspect_ratio.start;
+    step.max = ConnectedAspectLimit(count, s.aspect_ratio.min, s.aspect_ratio.max);
+    step.start = std::min(s.aspect_ratio.start, step.max);
     step.max_evaluations = s.aspect_ratio.max_evaluations;
   }
   return step;

@@ -5,7 +5,10 @@
 // 1 (a sphere, which has no aspect ratio) is one candidate at the held property; at each count
 // n >= 2 the aspect ratio a of the prolate spheroid [a, 1, 1] is calibrated against the measured
 // angle by the bracket optimiser (at most aspect_ratio.max_evaluations candidates), the property
-// (Table 1's rolling friction) held at `start` throughout. The first count whose calibrated
+// (Table 1's rolling friction) held at `start` throughout. A chain whose spheres do not touch is
+// a dumbbell, not a grain: at each count the upper bound is the largest aspect ratio at which
+// its chain is connected (ConnectedAspectLimit: 2 for 2 spheres, 3 for 3; 4 and 5 spheres stay
+// connected beyond 3.5). The first count whose calibrated
 // shape matches the angle within noise is kept and the larger counts are not run: the smallest
 // count that matches, at a bounded cost.
 //
@@ -30,7 +33,8 @@ struct ShapeSearchRow {
   int count = 0;
   double aspect_ratio = 1;     // calibrated (1 for a sphere), dimensionless
   double aspect_sigma = 0;     // its standard error (NaN: not determined)
-  bool aspect_at_bound = false;  // the best candidate sits on a bound of aspect_ratio
+  double aspect_max = 0;       // the count's upper bound (ConnectedAspectLimit)
+  bool aspect_at_bound = false;  // the best candidate sits on a bound of the count's range
   double angle_deg = 0, angle_sem_deg = 0;  // the best candidate's heap angle ± standard error
   double measured_deg = 0, uncertainty_deg = 0;  // the species' measured angle ± u
   double cost = 0;             // ((angle − measured) / uncertainty)², dimensionless
@@ -49,9 +53,13 @@ struct ShapeSearch {
   std::string note;                  // the verdict in words
   const ShapeSearchRow* Used() const;  // the chosen row, else the nearest; null without rows
   // {"rows": [...], "note"} with the keys of clump_table.h's rows plus "aspect_ratio",
-  // "aspect_ratio_sigma", "aspect_at_bound", "heaps", "wall_time_s".
+  // "aspect_ratio_sigma", "aspect_at_bound", "aspect_ratio_max", "heaps", "wall_time_s".
   nlohmann::json TableJson() const;
 };
+
+// The largest aspect ratio in [min, max] at which `count` spheres chained on [a, 1, 1]
+// (core::ApproximateEllipsoid) still touch (max for count < 2; min if none does).
+double ConnectedAspectLimit(int count, double min, double max);
 
 // The calibration of species k at `count` on `experiment_file` (the aspect ratio for count >= 2,
 // the held property for count 1), in `dir`. The whole-workflow check parses it too.

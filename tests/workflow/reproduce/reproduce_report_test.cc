@@ -199,13 +199,14 @@ TEST_CASE("reproduce report: the Fig. 3 table with the calibrated aspect ratio p
     {"count": 1, "aspect_ratio": 1, "aspect_ratio_sigma": null, "aspect_at_bound": false,
      "angle_deg": 24.1, "angle_sem_deg": 0.6, "cost": 253.0, "within_noise": false,
      "agrees": false, "termination": "budget", "note": "", "heaps": 2, "wall_time_s": 40},
-    {"count": 2, "aspect_ratio": 3.5, "aspect_ratio_sigma": 0.21, "aspect_at_bound": true,
+    {"count": 2, "aspect_ratio": 2.0, "aspect_ratio_sigma": 0.21, "aspect_at_bound": true,
      "angle_deg": 33.2, "angle_sem_deg": 0.7, "cost": 46.2, "within_noise": false,
      "agrees": false, "termination": "out_of_reach",
-     "note": "best aspect ratio at its bound, still not within noise; ", "heaps": 6,
+     "note": "best aspect ratio at a bound (upper bound 2: ...), still not within noise",
+     "heaps": 6,
      "wall_time_s": 130}])json");
   DemcalValues v;
-  v["aspect_ratio_EP"] = {.mean = 3.5, .sem = 0.21};
+  v["aspect_ratio_EP"] = {.mean = 2.0, .sem = 0.21};
   const std::vector<SummaryRow> rows = BuildSummaryRows(w.reference, v);
   const WrittenReport report =
       WriteStandInReport(w, results, rows, {{"species", 60.0}}, "demcal_reproduce_report_aspect");
@@ -214,10 +215,10 @@ TEST_CASE("reproduce report: the Fig. 3 table with the calibrated aspect ratio p
                                 "measured angle");
   REQUIRE(fig3 != std::string::npos);
   CHECK(html.find("<td>1 (sphere)</td>", fig3) != std::string::npos);
-  CHECK(html.find("<td>3.50 ± 0.21 (at bound)</td>", fig3) != std::string::npos);
+  CHECK(html.find("<td>2.00 ± 0.21 (at bound)</td>", fig3) != std::string::npos);
   CHECK(html.find("<td>33.2 ± 0.7</td>", fig3) != std::string::npos);
   CHECK(html.find("<td>46.2</td>", fig3) != std::string::npos);
-  CHECK(html.find("best aspect ratio at its bound, still not within noise", fig3) !=
+  CHECK(html.find("best aspect ratio at a bound (upper bound 2", fig3) !=
         std::string::npos);
   CHECK(report.md.find("| spheres | aspect ratio a/c [-] | angle demcal [deg] | cost (Σ z²) | "
                        "within noise | heaps | wall [s] |") != std::string::npos);

@@ -114,10 +114,13 @@ TEST_CASE("the clumps workflow calibrates each species' aspect ratio; bad ones a
     std::string expected;
   };
   const std::vector<Case> cases = {
-      {[](nlohmann::json& a) { a["min"] = 0.5; }, "aspect_ratio.min' = 0.5 is outside the allowed range [1, 10]"},
-      {[](nlohmann::json& a) { a["max"] = 12; }, "aspect_ratio.max' = 12 is outside the allowed range [1, 10]"},
+      {[](nlohmann::json& a) { a["min"] = 0.5; },
+       "aspect_ratio.min' = 0.5 is outside the allowed range [1, 10]"},
+      {[](nlohmann::json& a) { a["max"] = 12; },
+       "aspect_ratio.max' = 12 is outside the allowed range [1, 10]"},
       {[](nlohmann::json& a) { a["max"] = 1.0; }, "aspect_ratio.max' must be larger than min"},
-      {[](nlohmann::json& a) { a["start"] = 4; }, "aspect_ratio.start' = 4 is outside the allowed range [1, 3.5]"},
+      {[](nlohmann::json& a) { a["start"] = 4; },
+       "aspect_ratio.start' = 4 is outside the allowed range [1, 3.5]"},
       {[](nlohmann::json& a) { a["max_evaluations"] = 2; },
        "aspect_ratio.max_evaluations' = 2 is outside the allowed range [3, 30]"},
       {[](nlohmann::json& a) { a["aspect"] = 2; }, "aspect_ratio"},
