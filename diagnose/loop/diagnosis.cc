@@ -137,6 +137,14 @@ void Finish(const std::vector<Observation>& observations, const FitState& fit,
   } else if (d->termination == DiagnosisTermination::kNoMissingEffect) {
     m << "no missing effect found: the base model fits within noise (" << d->gap_before.summary
       << ")";
+    if (!d->base_at_bound.empty()) {
+      m << "; but the base fit ends on a bound (";
+      for (size_t k = 0; k < d->base_at_bound.size(); ++k)
+        m << (k ? ", " : "") << d->base_at_bound[k];
+      m << "): the data may ask for a value beyond the study's range, and an effect that moves "
+           "the observables as that parameter does would be absorbed there; widen the range to "
+           "see where the fit goes";
+    }
   } else if (d->termination == DiagnosisTermination::kEffectFound) {
     m << "missing effect: " << Signed(fit.point, candidates) << "; after adding it "
       << d->gap_after.summary;
@@ -216,6 +224,7 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
   d.base_budget_scale = settled.budget_scale;
   d.base_identifiability = settled.identifiability;
   d.base_summary = settled.summary;
+  d.base_at_bound = settled.at_bound;
   if (progress) progress(settled.summary);
   d.phases.push_back({"base calibration", model.SimulationsRun(),
                       std::chrono::duration<double>(Clock::now() - start).count()});

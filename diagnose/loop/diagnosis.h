@@ -89,6 +89,7 @@ struct Diagnosis {
   int base_budget_scale = 1;  // the study's budget times this (base_fit.h)
   calibrate::IdentifiabilityReport base_identifiability;
   std::string base_summary;         // settled or not, budget, undetermined base parameters
+  std::vector<std::string> base_at_bound;  // base parameters fitted onto a bound (base_fit.h)
   std::vector<Observation> before;  // at the base calibration
   GapReport gap_before;
   // The discrepancy floor estimated from the residuals (discrepancy_floor.h), in single-run

@@ -210,7 +210,8 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
                            {"summary", d.base_summary},
                            {"identifiable", d.base_identifiability.Identifiable()},
                            {"singular_values", singular},
-                           {"undetermined", undetermined}};
+                           {"undetermined", undetermined},
+                           {"at_bound", d.base_at_bound}};
   Json phases = Json::array();
   for (const PhaseTime& p : d.phases)
     phases.push_back(
