@@ -123,13 +123,18 @@ ContactUse ContactUseOf(const core::Scene& model) {
 bool ConvertToLiggghts(const core::Scene& m, const ContactUse& use,
                        const LiggghtsLawOptions& options, LiggghtsLaw* law, std::string* error) {
   const std::string& rolling = m.rolling.name;
-  if (rolling != "none" && rolling != "cdt" && rolling != "epsd" && rolling != "epsd2") {
+  if (rolling != "none" && rolling != "cdt" && rolling != "cdt_relative" && rolling != "epsd" &&
+      rolling != "epsd2") {
     *error = "rolling law '" + rolling + "' has no LIGGGHTS-PUBLIC counterpart";
     return false;
   }
   const size_t n = m.materials.size();
   *law = {};
-  const std::string rolling_part = rolling == "none" ? "" : " rolling_friction " + rolling;
+  // cdt_relative is LIGGGHTS' own cdt law (same lever R*, same relative rotation), so its
+  // coefficient goes across unchanged; demcal's "cdt" is EDEM's law (RollingFactor).
+  const std::string liggghts_rolling = rolling == "cdt_relative" ? "cdt" : rolling;
+  const std::string rolling_part =
+      rolling == "none" ? "" : " rolling_friction " + liggghts_rolling;
   law->model = "model hertz tangential history" + rolling_part;
   bool adhesive = false;
   for (size_t i = 0; i < n; ++i) {

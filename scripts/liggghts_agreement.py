@@ -1,13 +1,18 @@
 """Engine agreement where the laws are the same, and the metric port's check; called by
-scripts/make_liggghts_datasets.py (--agreement BUILD_DIR, --check-port DEMCAL_AOR_OUT_DIR).
+scripts/make_liggghts_datasets.py (--agreement BUILD_DIR [--agreement-rolling off|cdt],
+--check-port DEMCAL_AOR_OUT_DIR).
 
-Agreement: rolling resistance off in both engines (demcal `contact_model.rolling = "none"`,
-LIGGGHTS `gran model hertz tangential history`), BP-BP sliding friction 0.5, everything else as the
+Agreement, rolling off (default): no rolling resistance in either engine (demcal
+`contact_model.rolling = "none"`, LIGGGHTS `gran model hertz tangential history`). Rolling cdt:
+the same constant-torque law in both, LIGGGHTS `rolling_friction cdt` and demcal `cdt_relative`
+(its port, docs/physics.md section 2.1), both at the datasets' base coefficients (0.20 between
+grains, 0.055 against the walls). Either way BP-BP sliding friction 0.5 and everything else as the
 diagnosis examples at quick fidelity; the rig-1 heap and the funnel, N replicates each with each
 engine's own seeds. Per observable: offset = mean(LIGGGHTS) - mean(demcal) in units of the pooled
 single-run scatter s (the replicates' standard deviation pooled over both engines), and the
 offset's own standard error in those units, sqrt(1/n_L + 1/n_D). Written to
-datasets/liggghts_crossengine/agreement.csv and printed as a Markdown table.
+datasets/liggghts_crossengine/agreement.csv (rolling off) or agreement_cdt.csv (rolling cdt) and
+printed as a Markdown table.
 """
 import json, math, os, struct, subprocess, tempfile, time
 
@@ -35,6 +40,18 @@ def _rolling_off(exp):
     return exp
 
 
+def _rolling_cdt(exp):
+    """demcal's port of LIGGGHTS' cdt at the LIGGGHTS base's coefficients (no conversion needed)."""
+    exp = json.loads(json.dumps(exp))
+    exp["seed"] = DEMCAL_SEED
+    exp["interactions"]["default"].update({"sliding_friction": mk.BASE["sliding_friction"],
+                                           "rolling_friction": mk.BASE["mur_pp"]})
+    for p in exp["interactions"]["pairs"]:
+        p["rolling_friction"] = mk.BASE["mur_pw"]
+    exp["contact_model"] = {"rolling": "cdt_relative"}
+    return exp
+
+
 def _stats(values):
     n = len(values)
     mu = sum(values) / n if n else float("nan")
@@ -46,18 +63,20 @@ def main(a, log):
     if a.check_port:
         return check_port(a.check_port, log)
     n = a.replicates
+    off = a.agreement_rolling == "off"
+    demcal_scene = _rolling_off if off else _rolling_cdt
     heap_exp, dis_exp = mk.experiment("aor_bp_heap.json"), mk.experiment("discharge_bp_small.json")
     lig = {"heap": [], "funnel": []}
     for rep in range(n):
-        lig["heap"].append(mk.heap_run(mk.model_for(heap_exp, "control", 0.0, True), heap_exp["aor"], mk.seeds(90, 0, rep)))
+        lig["heap"].append(mk.heap_run(mk.model_for(heap_exp, "control", 0.0, off), heap_exp["aor"], mk.seeds(90, 0, rep)))
         log(f"agreement LIGGGHTS heap r{rep}: {lig['heap'][-1]}")
     for rep in range(n):
-        lig["funnel"].append(mk.funnel_run(mk.model_for(dis_exp, "control", 0.0, True), dis_exp["discharge"], mk.seeds(90, 9, rep)))
+        lig["funnel"].append(mk.funnel_run(mk.model_for(dis_exp, "control", 0.0, off), dis_exp["discharge"], mk.seeds(90, 9, rep)))
         log(f"agreement LIGGGHTS funnel r{rep}: {lig['funnel'][-1]}")
     with tempfile.TemporaryDirectory() as tmp:
         t = time.time()
-        dem_heap = _demcal(a.agreement, "aor", _rolling_off(heap_exp), n, os.path.join(tmp, "aor"))
-        dem_funnel = _demcal(a.agreement, "discharge", _rolling_off(dis_exp), n, os.path.join(tmp, "dis"))
+        dem_heap = _demcal(a.agreement, "aor", demcal_scene(heap_exp), n, os.path.join(tmp, "aor"))
+        dem_funnel = _demcal(a.agreement, "discharge", demcal_scene(dis_exp), n, os.path.join(tmp, "dis"))
         log(f"agreement demcal runs: {time.time() - t:.0f} s wall")
     table = []
     for obs, lruns, druns in [(o, lig["heap"], dem_heap) for o in mk.HEAP_OBS] + \
@@ -68,7 +87,7 @@ def main(a, log):
         md, vd, nd = _stats(dv)
         s = math.sqrt(((nl - 1) * vl + (nd - 1) * vd) / (nl + nd - 2)) if nl > 1 and nd > 1 else float("nan")
         table.append((obs, md, ml, s, (ml - md) / s, math.sqrt(1 / max(nl, 1) + 1 / max(nd, 1)), nl, nd))
-    path = os.path.join(mk.OUT, "agreement.csv")
+    path = os.path.join(mk.OUT, "agreement.csv" if off else "agreement_cdt.csv")
     os.makedirs(mk.OUT, exist_ok=True)
     with open(path, "w") as f:
         f.write("observable,demcal_mean,liggghts_mean,single_run_scatter,offset_in_scatters,offset_sem_in_scatters,"

@@ -6,12 +6,13 @@
 #include <vector>
 
 #include "core/contact/rolling_cdt.h"
+#include "core/contact/rolling_cdt_relative.h"
 #include "core/contact/rolling_epsd.h"
 #include "core/contact/rolling_none.h"
 
 namespace demcal::core {
 
-using RollingModel = std::variant<RollingNone, RollingCdt, RollingEpsd>;
+using RollingModel = std::variant<RollingNone, RollingCdt, RollingCdtRelative, RollingEpsd>;
 
 // The load the rolling limit μ_r multiplies in an adhesive (JKR) contact (docs/physics.md §3).
 //  kNet: the compressive force the contact transmits, max(0, F_JKR) (default). At zero load an
@@ -23,7 +24,7 @@ using RollingModel = std::variant<RollingNone, RollingCdt, RollingEpsd>;
 enum class JkrRollingLoad { kNet, kRepulsive };
 
 struct RollingModelSpec {
-  std::string name = "epsd2";   // none | cdt | epsd | epsd2
+  std::string name = "epsd2";   // none | cdt | cdt_relative | epsd | epsd2
   double epsd_damping_ratio = 0.3;  // η_r for "epsd", in [0, 1]
   std::string jkr_rolling_load = "net";  // net | repulsive (JkrRollingLoad)
 };
@@ -42,7 +43,7 @@ inline bool ParseJkrRollingLoad(const std::string& name, JkrRollingLoad* load) {
 }
 
 inline const std::vector<std::string>& RollingModelNames() {
-  static const std::vector<std::string> names = {"none", "cdt", "epsd", "epsd2"};
+  static const std::vector<std::string> names = {"none", "cdt", "cdt_relative", "epsd", "epsd2"};
   return names;
 }
 
@@ -50,6 +51,7 @@ inline const std::vector<std::string>& RollingModelNames() {
 inline bool MakeRollingModel(const RollingModelSpec& spec, RollingModel* model) {
   if (spec.name == "none") *model = RollingNone{};
   else if (spec.name == "cdt") *model = RollingCdt{};
+  else if (spec.name == "cdt_relative") *model = RollingCdtRelative{};
   else if (spec.name == "epsd") *model = RollingEpsd::Epsd(spec.epsd_damping_ratio);
   else if (spec.name == "epsd2") *model = RollingEpsd::Epsd2();
   else return false;

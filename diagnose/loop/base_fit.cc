@@ -75,6 +75,17 @@ BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observat
   for (int i = 0; i < n && i < static_cast<int>(b.base.jacobian.size()); ++i)
     for (int j = 0; j < p && j < static_cast<int>(b.base.jacobian[i].size()); ++j)
       J(i, j) = b.base.jacobian[i][j] / at[i].Sigma();
+  // On a bound: the unit coordinate at 0 or 1 up to rounding (optimisers clamp to the bound
+  // exactly; 1e-9 only absorbs the unit map's arithmetic, it is not a tolerance on the fit).
+  const std::vector<std::string> names = model.BaseParameterNames();
+  for (int j = 0; j < p; ++j) {
+    const double u = b.base.base_unit[j];
+    if (u > 1e-9 && u < 1 - 1e-9) continue;
+    const std::string name = j < static_cast<int>(names.size()) ? names[j]
+                                                                : "parameter " + std::to_string(j);
+    b.at_bound.push_back(name + " at its " + (u <= 1e-9 ? "lower" : "upper") + " bound");
+  }
+  for (const std::string& a : b.at_bound) s << "; " << a;
   if (p > 0) {
     b.identifiability = calibrate::AnalyseIdentifiability(J, model.BaseParameterNames(),
                                                           model.BaseSiPerUnit(b.base.base_unit));

@@ -39,6 +39,10 @@ struct BaseFit {
   bool within_noise = false;  // not settled, not extended: no gap at this fit
   bool stagnated = false;     // settled because twice the budget lowered χ² by less than 1
   calibrate::IdentifiabilityReport identifiability;
+  // Base parameters whose fit ended on a bound of the study's range: "mu_s_BP_BP at its lower
+  // bound". The data may ask for a value beyond the range, and an effect that moves the
+  // observables as that parameter does can be absorbed there, so a verdict on this fit says so.
+  std::vector<std::string> at_bound;
   std::string summary;  // in words: settled or not, with which budget, what is undetermined
 };
 

@@ -112,14 +112,17 @@ std::string Signed(const ModelPoint& point, const std::vector<CandidateEffect>& 
   return s.str();
 }
 
+// `after_fit` is what the "after" figures describe: the fit with the named effects, or, for a
+// model-form answer that re-values a modelled parameter, that re-valued fit (the base model's
+// own mechanism at the value the data ask for), so χ²/dof after says how well the answer fits.
 void Finish(const std::vector<Observation>& observations, const FitState& fit,
-            const DiagnoseOptions& options, const std::vector<CandidateEffect>& candidates,
-            Diagnosis* d) {
+            const FitState& after_fit, const DiagnoseOptions& options,
+            const std::vector<CandidateEffect>& candidates, Diagnosis* d) {
   d->final_point = fit.point;
-  d->fitted_parameters_after = fit.Fitted();
-  d->after = WithPrediction(observations, fit.prediction, options.discrepancy_floor);
-  d->gap_after = TestGap(d->after, fit.Fitted(), {options.significance});
-  d->floor_after = EstimatedFloor(d->after, fit.Fitted());
+  d->fitted_parameters_after = after_fit.Fitted();
+  d->after = WithPrediction(observations, after_fit.prediction, options.discrepancy_floor);
+  d->gap_after = TestGap(d->after, after_fit.Fitted(), {options.significance});
+  d->floor_after = EstimatedFloor(d->after, after_fit.Fitted());
   std::ostringstream m;
   if (!d->base_identifiability.Identifiable() && !d->base_identifiability.singular_values.empty()) {
     m << "the data do not determine the base parameters (";
@@ -134,6 +137,14 @@ void Finish(const std::vector<Observation>& observations, const FitState& fit,
   } else if (d->termination == DiagnosisTermination::kNoMissingEffect) {
     m << "no missing effect found: the base model fits within noise (" << d->gap_before.summary
       << ")";
+    if (!d->base_at_bound.empty()) {
+      m << "; but the base fit ends on a bound (";
+      for (size_t k = 0; k < d->base_at_bound.size(); ++k)
+        m << (k ? ", " : "") << d->base_at_bound[k];
+      m << "): the data may ask for a value beyond the study's range, and an effect that moves "
+           "the observables as that parameter does would be absorbed there; widen the range to "
+           "see where the fit goes";
+    }
   } else if (d->termination == DiagnosisTermination::kEffectFound) {
     m << "missing effect: " << Signed(fit.point, candidates) << "; after adding it "
       << d->gap_after.summary;
@@ -154,8 +165,8 @@ void Finish(const std::vector<Observation>& observations, const FitState& fit,
       << d->revaluation_note
       << "), by no more than its assumed value; an offset in that mechanism's law (another "
          "engine's, a real powder's) fits the same, so no missing effect is named; calibrate "
-         "that parameter in the base to measure it ("
-      << d->gap_before.summary << ")";
+         "that parameter in the base to measure it (base: "
+      << d->gap_before.summary << "; re-valued: " << d->gap_after.summary << ")";
   } else if (!d->control_note.empty()) {
     m << "model-form offset / no missing effect: " << d->control_note << " (discrepancy floor "
       << FloorText(d->floor_before) << " single-run scatter(s) beyond the fixed "
@@ -213,6 +224,7 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
   d.base_budget_scale = settled.budget_scale;
   d.base_identifiability = settled.identifiability;
   d.base_summary = settled.summary;
+  d.base_at_bound = settled.at_bound;
   if (progress) progress(settled.summary);
   d.phases.push_back({"base calibration", model.SimulationsRun(),
                       std::chrono::duration<double>(Clock::now() - start).count()});
@@ -221,6 +233,7 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
     return d;
   }
   FitState fit = StartingFit(d.base, static_cast<int>(observations.size()));
+  FitState revalued_fit;  // the winner's refit when the answer is a re-valuation (model form)
   d.before = WithPrediction(observations, fit.prediction, options.discrepancy_floor);
   d.gap_before = TestGap(d.before, fit.Fitted(), {options.significance});
   d.floor_before = EstimatedFloor(d.before, fit.Fitted());
@@ -253,6 +266,10 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
     if (s.has_winner && RevaluesOnly(s.step, candidates, &d)) {
       d.termination = d.named.empty() ? DiagnosisTermination::kModelFormOffset
                                       : DiagnosisTermination::kGapRemains;
+      if (d.named.empty()) {
+        revalued_fit = s.next;
+        d.after_revalued = true;
+      }
       break;
     }
     if (s.has_winner && s.step.ranking.tied >= 0) {
@@ -277,7 +294,7 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
     d.termination = gap ? DiagnosisTermination::kGapRemains : DiagnosisTermination::kEffectFound;
     if (progress) progress("with " + Names(d.named, candidates) + ": " + g.summary);
   }
-  Finish(observations, fit, options, candidates, &d);
+  Finish(observations, fit, d.after_revalued ? revalued_fit : fit, options, candidates, &d);
   d.simulations = model.SimulationsRun();
   d.simulations_reused = model.SimulationsReused();
   d.wall_time_s = std::chrono::duration<double>(Clock::now() - start).count();

@@ -89,6 +89,7 @@ struct Diagnosis {
   int base_budget_scale = 1;  // the study's budget times this (base_fit.h)
   calibrate::IdentifiabilityReport base_identifiability;
   std::string base_summary;         // settled or not, budget, undetermined base parameters
+  std::vector<std::string> base_at_bound;  // base parameters fitted onto a bound (base_fit.h)
   std::vector<Observation> before;  // at the base calibration
   GapReport gap_before;
   // The discrepancy floor estimated from the residuals (discrepancy_floor.h), in single-run
@@ -103,8 +104,11 @@ struct Diagnosis {
   // their refitted values: a model-form offset, not named; empty when none.
   std::vector<ActiveEffect> revalued;
   std::string revaluation_note;
-  ModelPoint final_point;
-  std::vector<Observation> after;  // at the final point
+  ModelPoint final_point;  // the base with the named effects (never a re-valued parameter)
+  // True when the answer is a model-form offset that re-values a modelled parameter: `after`,
+  // `gap_after` and `floor_after` then describe the winner's re-valued refit, not final_point.
+  bool after_revalued = false;
+  std::vector<Observation> after;  // at the final point, or at the re-valued fit
   GapReport gap_after;
   int fitted_parameters_after = 0;
   std::vector<PhaseTime> phases;

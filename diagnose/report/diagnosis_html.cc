@@ -81,7 +81,9 @@ bool WriteDiagnosisHtml(const std::string& path, const DiagnosisRunInfo& info, c
                        "); an effect is named only when it explains more than "
                        "this floor allows (docs/diagnose.md).",
                    syn);
-  report.Paragraph("Before: " + d.gap_before.summary + ". After: " + d.gap_after.summary + ".",
+  report.Paragraph("Before: " + d.gap_before.summary + ". After" +
+                       (d.after_revalued ? " (the re-valued modelled parameter)" : "") + ": " +
+                       d.gap_after.summary + ".",
                    syn);
   report.Section("Gap before and after", syn);
   if (!report.Figure(objectives::RenderSvg(GapPlot(d)),

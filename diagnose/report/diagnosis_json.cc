@@ -170,6 +170,7 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
   }
   j["revalued_parameters"] = revalued;
   j["chi2_per_dof_after"] = Number(d.gap_after.chi2_per_dof);
+  j["after_fit"] = d.after_revalued ? "revalued_parameters" : "named_effects";
   const size_t tried = d.steps.empty() ? info.candidates.size() : d.steps.front().entries.size();
   j["discrepancy_floor"] = {
       {"fixed_single_run_scatters", info.options.discrepancy_floor},
@@ -209,7 +210,8 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
                            {"summary", d.base_summary},
                            {"identifiable", d.base_identifiability.Identifiable()},
                            {"singular_values", singular},
-                           {"undetermined", undetermined}};
+                           {"undetermined", undetermined},
+                           {"at_bound", d.base_at_bound}};
   Json phases = Json::array();
   for (const PhaseTime& p : d.phases)
     phases.push_back(

@@ -134,3 +134,20 @@ TEST_CASE("LIGGGHTS export: no rolling keyword for 'none', epsd damping", "[unit
   CHECK_THAT(deck, Catch::Contains(
                        "coefficientRollingViscousDamping peratomtypepair 2 0.3 0.3 0.3 0.3\n"));
 }
+
+TEST_CASE("LIGGGHTS export: cdt_relative is LIGGGHTS' cdt, exported unchanged without a flag",
+          "[unit][calibrate]") {
+  // Same lever R* and same relative rotation in both codes (docs/physics.md §2.1), so no
+  // conversion and no refusal: the coefficients go across as they are.
+  core::Scene m = BpAndPerspex();
+  m.rolling.name = "cdt_relative";
+  calibrate::LiggghtsLaw law;
+  std::string error;
+  REQUIRE(calibrate::ConvertToLiggghts(m, calibrate::ContactUseOf(m, {1}), {}, &law, &error));
+  CHECK(law.model == "model hertz tangential history rolling_friction cdt");
+  CHECK(law.notes.empty());
+  const std::string deck = calibrate::LiggghtsMaterialInclude(m, {});
+  CHECK_THAT(deck, Catch::Contains(
+                       "coefficientRollingFriction peratomtypepair 2 0.34 0.055 0.055 0.01\n"));
+  CHECK_THAT(deck, !Catch::Contains("NOT EXPORTED"));
+}

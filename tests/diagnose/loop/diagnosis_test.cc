@@ -119,6 +119,23 @@ TEST_CASE("diagnosis says no missing effect when none is hidden", "[unit]") {
     CHECK(d.named.empty());
     CHECK(d.steps.empty());  // no signature was simulated
     CHECK(d.message.find("no missing effect found") != std::string::npos);
+    CHECK(d.base_at_bound.empty());  // μ 0.5 lies inside the range [0.2, 1]
+  }
+}
+
+TEST_CASE("a base fit that ends on a bound is said beside 'no missing effect'", "[unit]") {
+  // The truth μ 0.19 lies just below the range [0.2, 1]: the fit stops on the lower bound and
+  // still fits within noise (the angle is 0.5 of its uncertainty off), as a base that absorbed
+  // an effect there would. The verdict stands, with the bound said.
+  for (uint64_t seed : {1, 2, 3}) {
+    INFO("noise seed " << seed);
+    testing::AnalyticForwardModel model;
+    const std::vector<Observation> obs = testing::MakeObservations(&model, 0.19, {}, seed);
+    const Diagnosis d = Diagnose(model, obs, testing::Candidates(), DiagnoseOptions{});
+    CHECK(d.termination == DiagnosisTermination::kNoMissingEffect);
+    REQUIRE(d.base_at_bound.size() == 1);
+    CHECK(d.base_at_bound[0] == "u0 at its lower bound");
+    CHECK(d.message.find("ends on a bound (u0 at its lower bound)") != std::string::npos);
   }
 }
 

@@ -62,6 +62,15 @@ TEST_CASE("a modelled parameter re-valued within its assumed value is a model-fo
     CHECK(d.revalued[0].values[0] == Approx(-0.2).margin(0.05));
     CHECK(d.message.find("less rolling resistance than assumed") != std::string::npos);
     CHECK(d.message.rfind("model-form offset: the data re-value", 0) == 0);
+    // The after figures are the re-valued fit's: it fits within noise where the base did not,
+    // and its χ²/dof is the winner's refit's (same residuals, dof n − base − 1). Nothing is
+    // named, so the final point keeps no effect.
+    const RankingEntry& w = d.steps.back().entries[d.steps.back().ranking.winner];
+    CHECK(d.after_revalued);
+    CHECK(d.final_point.effects.empty());
+    CHECK(d.gap_after.chi2_per_dof < d.gap_before.chi2_per_dof);
+    CHECK_FALSE(d.gap_after.gap_detected);
+    CHECK(d.gap_after.chi2_per_dof == Approx(w.chi2_per_dof).epsilon(1e-9));
   }
 }
 
@@ -89,6 +98,7 @@ TEST_CASE("re-valuation keeps false alarms off on a model that fits", "[unit]") 
     const Diagnosis d = Run({}, seed);
     CHECK(d.named.empty());
     CHECK(d.revalued.empty());
+    CHECK_FALSE(d.after_revalued);
   }
 }
 
