@@ -14,8 +14,10 @@
 // instead of two or three); each refining round is the regula-falsi point plus the k − 1 points
 // that split the bracket into k equal parts, and the new bracket is the pair of neighbours
 // between which the residual changes sign. The even points bound the shrink to 1/k a round
-// whatever the secant does; the secant point keeps regula falsi's fast end game. For k = 1 the
-// round is the regula-falsi point alone: the one-candidate search, unchanged.
+// whatever the secant does; the secant point keeps regula falsi's fast end game. A candidate of
+// the round without a value is left out (the bracket stays wider); only a round without any
+// value fails the search. For k = 1 the round is the regula-falsi point alone: the
+// one-candidate search, unchanged (its failed candidate fails the search).
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -76,6 +78,7 @@ class Search {
     result_.message = retreated_ && termination != Termination::kOutOfRange
                           ? message + " (a bound gave no value: probed nearer the start)"
                           : message;
+    if (failed_inside_) result_.message += " (some candidates inside the bracket gave no value)";
     return result_;
   }
   OptimiserResult Run(double start);
@@ -107,6 +110,7 @@ class Search {
   // The candidates of one refining round in [a, b] (ascending), at most Left() of them.
   std::vector<double> Round(const Point& a, const Point& b, double fa, double fb) const;
   bool retreated_ = false;
+  bool failed_inside_ = false;  // a k-section round had a candidate without a value
   MatchRecord record_{1};
   OptimiserResult Refine(Point a, Point b);
   const BatchTrialFunction& f_;
@@ -174,8 +178,13 @@ OptimiserResult Search::Refine(Point a, Point b) {
     if (Budget()) return Finish(Termination::kBudget, "budget used up before a match within noise");
     std::vector<Point> ps;
     const std::vector<double> us = Round(a, b, fa, fb);
-    const bool ok = us.size() == 1 ? Eval(us[0], &ps.emplace_back()) : EvalBatch(us, &ps);
-    if (!ok) return Finish(Termination::kFailed, "a candidate inside the bracket gave no value");
+    if (us.size() == 1 ? !Eval(us[0], &ps.emplace_back()) : !EvalBatch(us, &ps)) {
+      // Of several, those with a value still bound the crossing: the bracket only stays wider.
+      std::erase_if(ps, [](const Point& p) { return !p.ok(); });
+      if (ps.empty())
+        return Finish(Termination::kFailed, "a candidate inside the bracket gave no value");
+      failed_inside_ = true;
+    }
     for (const Point& p : ps)
       if (p.settled) return Finish(Termination::kWithinNoise, "matched within noise");
     // The first candidate whose residual has the other sign than a's closes the bracket.

@@ -17,7 +17,8 @@ using demcal::testing::ScratchDir;
 
 TEST_CASE("reproduce --help lists its options and the bundled workflow", "[unit][cli]") {
   CheckHelpShows(AddReproduceCommand, "reproduce",
-                 {"workflow", "alizadeh2018", "--out", "--quick", "--threads", "--quiet"});
+                 {"workflow", "alizadeh2018", "--out", "--quick", "--threads", "--quiet",
+                  "--bracket-points", "--calibrations-in-sequence"});
 }
 
 TEST_CASE("reproduce requires the workflow and --out", "[unit][cli]") {
@@ -29,6 +30,14 @@ TEST_CASE("reproduce refuses an out-of-range thread count, naming the option", "
   for (const char* threads : {"-1", "1025", "all"})
     CheckRefused(AddReproduceCommand,
                  {"reproduce", "alizadeh2018", "--out", "o", "--threads", threads}, "--threads");
+}
+
+TEST_CASE("reproduce refuses a bracket point count outside [1, 1024], naming the option",
+          "[unit][cli]") {
+  for (const char* k : {"0", "1025", "two"})
+    CheckRefused(AddReproduceCommand,
+                 {"reproduce", "alizadeh2018", "--out", "o", "--bracket-points", k},
+                 "--bracket-points");
 }
 
 TEST_CASE("reproduce refuses an empty workflow or --out", "[unit][cli]") {

@@ -120,6 +120,23 @@ TEST_CASE("bracket, k points a round: a bound without a value is retreated from"
   CHECK(rec.batches[1] == std::vector<std::vector<double>>{{0.55}});  // half-way from 1 to 0.1
 }
 
+TEST_CASE("bracket, k points a round: a candidate without a value leaves the bracket wider",
+          "[unit][calibrate]") {
+  Recorder rec;
+  rec.trial = [](const std::vector<double>& u) {
+    return u[0] > 0.6 && u[0] < 0.9 ? TrialResult{} : Trial(u);  // no value on (0.6, 0.9)
+  };
+  const OptimiserResult r =
+      BracketOptimise(rec.Function(), {0.1}, {.max_evaluations = 40, .bracket_points = 3});
+  REQUIRE(r.termination == Termination::kWithinNoise);
+  CHECK(std::abs(r.best_unit[0] - kRoot) <= 0.005);
+  CHECK(r.message.find("gave no value") != std::string::npos);
+  // The first round, in [0.1, 1]: the secant point, 0.4 and 0.7; 0.7 gave no value.
+  REQUIRE(rec.batches.size() > 1);
+  CHECK(rec.batches[1].size() == 3);
+  CHECK(rec.batches[1][2][0] == Approx(0.7));
+}
+
 TEST_CASE("bracket, k points a round: out of reach is still said", "[unit][calibrate]") {
   Recorder rec;
   rec.trial = [](const std::vector<double>& u) {

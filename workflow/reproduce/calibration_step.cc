@@ -42,7 +42,13 @@ nlohmann::ordered_json StudyJson(const CalibrationStep& s, int bracket_points) {
                        {"max", s.max}, {"start", s.start}}}},
       {"optimiser", {{"name", "bracket"}, {"max_evaluations", s.max_evaluations}}},
       {"replicates", s.replicates}};
-  if (bracket_points > 1) study["optimiser"]["bracket_points"] = bracket_points;
+  // A k-section spends up to k candidates a round: the same number of rounds needs k times the
+  // budget (a held species' one candidate stays one: no search).
+  if (bracket_points > 1) {
+    study["optimiser"]["bracket_points"] = bracket_points;
+    if (s.max_evaluations > 1)
+      study["optimiser"]["max_evaluations"] = s.max_evaluations * bracket_points;
+  }
   if (!s.clump_counts.empty())
     study["clump_count"] = {{"species", s.material_a}, {"semi_axes", s.semi_axes},
                             {"counts", s.clump_counts}};

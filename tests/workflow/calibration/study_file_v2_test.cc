@@ -114,6 +114,22 @@ TEST_CASE("study/2 errors name the target and the field", "[unit][calibrate]") {
   CHECK_THAT(Load(dir, j, &st), Catch::Contains("parameters[0].materials"));
 }
 
+TEST_CASE("study/2: optimiser.bracket_points is read, default 1, range named", "[unit][calibrate]") {
+  ScratchDir dir("study_v2_bracket_points");
+  StudyFile st;
+  json j = Example();
+  REQUIRE(Load(dir, j, &st) == "ok");
+  CHECK(st.options.optimiser_options.bracket_points == 1);
+  j["optimiser"]["bracket_points"] = 4;
+  REQUIRE(Load(dir, j, &st) == "ok");
+  CHECK(st.options.optimiser_options.bracket_points == 4);
+  for (int bad : {0, 1025}) {
+    j["optimiser"]["bracket_points"] = bad;
+    const std::string error = Load(dir, j, &st);
+    CHECK_THAT(error, Catch::Contains("bracket_points") && Catch::Contains("1024"));
+  }
+}
+
 TEST_CASE("a key of the other study format is refused, not ignored", "[unit][calibrate]") {
   ScratchDir dir("study_mixed_formats");
   StudyFile st;
