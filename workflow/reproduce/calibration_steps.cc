@@ -1,9 +1,12 @@
 #include "workflow/reproduce/calibration_steps.h"
 
+#include <filesystem>
 #include <functional>
-#include <sstream>
+#include <memory>
+#include <mutex>
 
 #include "objectives/farm/farm.h"
+#include "workflow/reproduce/tagged_log.h"
 
 namespace demcal::workflow {
 
@@ -15,19 +18,26 @@ bool RunCalibrationSteps(const ReproduceContext& ctx, const std::vector<Calibrat
       if (!RunCalibrationStep(ctx, steps[k], &(*outcomes)[k], error)) return false;
     return true;
   }
-  // Each step writes only its own log, outcome and error: the threads share nothing else.
-  std::vector<std::ostringstream> logs(steps.size());
+  // Each step writes only its own outcome and error, and its log lines, tagged with its folder's
+  // name, go to the shared log as they end (progress stays live): the threads share nothing else.
+  std::mutex log_lock;
+  std::vector<std::unique_ptr<TaggedLog>> tagged;
+  std::vector<std::unique_ptr<std::ostream>> logs;
   std::vector<ReproduceContext> contexts(steps.size(), ctx);
   std::vector<std::string> errors(steps.size());
   std::vector<char> ok(steps.size(), 0);
   std::vector<std::function<void()>> tasks;
   for (size_t k = 0; k < steps.size(); ++k) {
-    contexts[k].log = &logs[k];
+    const std::string tag = std::filesystem::path(steps[k].dir).filename().string();
+    tagged.push_back(std::make_unique<TaggedLog>(tag, ctx.log, &log_lock));
+    logs.push_back(std::make_unique<std::ostream>(tagged.back().get()));
+    contexts[k].log = logs.back().get();
     tasks.push_back(
         [&, k] { ok[k] = RunCalibrationStep(contexts[k], steps[k], &(*outcomes)[k], &errors[k]); });
   }
   objectives::farm::RunGathered(tasks);
-  for (const std::ostringstream& log : logs) *ctx.log << log.str();
+  logs.clear();
+  tagged.clear();  // writes any last line without its newline
   for (size_t k = 0; k < steps.size(); ++k)
     if (!ok[k]) return *error = errors[k], false;
   return true;

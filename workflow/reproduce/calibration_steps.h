@@ -5,8 +5,8 @@
 // step's runs and the ranks (or local threads) fill with all of them instead of one step's
 // candidate × replicates. Each step keeps its own folder, study.json and journal; its outcome is
 // the one it has run alone, bit for bit (same candidates, same seeds: a step's runs depend on
-// its own results only). Each step's log lines are held and written after all the steps, in
-// step order, so the log reads as in sequence.
+// its own results only). Each step's log lines go to the log as they end, prefixed with the
+// step's folder name (tagged_log.h), so progress stays live while the steps run.
 //
 // ctx.calibrations_in_sequence runs them one after another instead (the reference the test
 // compares with; `demcal reproduce --calibrations-in-sequence`).
