@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "objectives/common/settle_eta.h"
 #include "objectives/common/surface_change.h"
 
 namespace demcal::objectives {
@@ -30,8 +31,9 @@ SettleResult RunUntilSettled(core::Simulation& sim, const SettleCriteria& criter
                              const ProgressCallback& progress) {
   SettleResult result;
   const double earliest = criteria.feed_end_s + criteria.min_settle_s;
-  // Expected end for the progress display: the pour plus a settling time of the same order.
-  const double expected_end = std::min(criteria.max_time_s, earliest + 0.3);
+  // Expected end for the progress display: the pour plus a short settle, then followed by the
+  // kinetic energy's decay (settle_eta.h).
+  SettleEta eta(earliest, earliest + 0.3, criteria.specific_kinetic_J_kg, criteria.max_time_s);
   bool settled = false;
   SurfaceGrid window_start;
   double window_start_s = -1;
@@ -40,9 +42,12 @@ SettleResult RunUntilSettled(core::Simulation& sim, const SettleCriteria& criter
   observer.every_steps =
       std::max<int64_t>(1, std::llround(criteria.check_interval_s / sim.timestep_s()));
   observer.callback = [&](const core::Simulation& s) {
-    if (progress) progress(s.time_s(), std::max(expected_end, s.time_s()));
-    if (s.time_s() < earliest) return true;
+    if (s.time_s() < earliest) {
+      if (progress) progress(s.time_s(), eta.ExpectedEndS(s.time_s(), NAN));
+      return true;
+    }
     result.specific_kinetic_J_kg = SpecificKineticEnergy(s);
+    if (progress) progress(s.time_s(), eta.ExpectedEndS(s.time_s(), result.specific_kinetic_J_kg));
     if (result.specific_kinetic_J_kg < criteria.specific_kinetic_J_kg) {
       result.settled_by = "kinetic_energy";
       return !(settled = true);

@@ -1,0 +1,45 @@
+#include "objectives/common/settle_eta.h"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+
+using namespace demcal::objectives;
+
+// An energy that decays exponentially, E(t) = E0 exp(−k (t − t0)), reaches the threshold at
+// t0 + ln(E0 / E_threshold) / k exactly: the estimate must find that time from two windows.
+TEST_CASE("SettleEta finds the end of an exponential decay", "[objectives][settle]") {
+  const double pour_end = 1.5, k = 4.0, e0 = 1e-2, threshold = 1e-5, max_time = 20;
+  const double exact = pour_end + std::log(e0 / threshold) / k;
+  SettleEta eta(pour_end, pour_end + 0.3, threshold, max_time);
+  double end = 0;
+  for (double t = pour_end; t < pour_end + 0.35; t += 0.01)
+    end = eta.ExpectedEndS(t, e0 * std::exp(-k * (t - pour_end)));
+  CHECK(end == Approx(exact).epsilon(1e-9));
+}
+
+TEST_CASE("SettleEta: the guess before the pour ends, the hard stop while nothing decays",
+          "[objectives][settle]") {
+  SettleEta eta(1.5, 1.8, 1e-5, 6);
+  CHECK(eta.ExpectedEndS(0.2, NAN) == Approx(1.8));
+  CHECK(eta.ExpectedEndS(1.9, NAN) == Approx(1.9));  // past the guess: never before now
+  // Grains still draining through an orifice: the energy holds, so only max_time_s is known.
+  for (double t = 1.5; t < 2.0; t += 0.01) eta.ExpectedEndS(t, 0.05);
+  CHECK(eta.ExpectedEndS(2.0, 0.05) == Approx(6));
+  // A rising energy (an avalanche) is no decay either.
+  for (double t = 2.0; t < 2.3; t += 0.01) eta.ExpectedEndS(t, 0.05 * (1 + t));
+  CHECK(eta.ExpectedEndS(2.3, 0.2) == Approx(6));
+}
+
+TEST_CASE("SettleEta stays within [now, max_time]", "[objectives][settle]") {
+  SettleEta eta(0.0, 0.3, 1e-5, 2.0);
+  // A very slow decay would end long after the hard stop: the stop bounds it.
+  for (double t = 0; t < 0.5; t += 0.01) {
+    const double end = eta.ExpectedEndS(t, 1e-2 * std::exp(-0.01 * t));
+    CHECK(end >= t);
+    CHECK(end <= 2.0);
+  }
+  // Below the threshold already (the surface rule is still running): the end is now.
+  SettleEta below(0.0, 0.3, 1e-5, 2.0);
+  below.ExpectedEndS(0.0, 2e-6);
+  CHECK(below.ExpectedEndS(0.1, 1e-6) == Approx(0.1));
+}
