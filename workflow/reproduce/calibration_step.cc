@@ -75,8 +75,6 @@ void FillOutcome(const StudyFile& study, const CalibrationResult& r, Calibration
   if (!study.targets.empty()) o->provenance = study.targets[0].provenance;
 }
 
-nlohmann::json NumOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
-
 }  // namespace
 
 nlohmann::json CalibrationOutcome::ToJson() const {

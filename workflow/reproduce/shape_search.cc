@@ -16,10 +16,6 @@ namespace {
 
 namespace farm = objectives::farm;
 
-nlohmann::json NumOrNull(double v) {
-  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
-}
-
 std::string Deg(double v) {
   std::ostringstream os;
   os.precision(3);
