@@ -21,8 +21,8 @@ std::string ConditionText(const nlohmann::json& conditions) {
   return text;
 }
 
-// bracket_points only when above 1, so a one-point study is the file it always was (and its
-// journal's study hash with it).
+// bracket_points only when above 1: a one-point study's file, and with it its journal's study
+// hash, is the same as without the option, so its journal resumes.
 nlohmann::ordered_json StudyJson(const CalibrationStep& s, int bracket_points) {
   nlohmann::ordered_json measurement{{"table", fs::absolute(s.table).string()},
                                      {"material", s.material},
