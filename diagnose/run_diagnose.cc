@@ -45,7 +45,7 @@ bool Fits(const workflow::StudyFile& study, calibrate::PairProperty property,
 }
 
 // A candidate that shifts a property the study already fits is a copy of a fitted parameter:
-// guarded like the control, never named (docs/diagnose.md "Ambiguity and the control").
+// guarded like the control, never named (docs/diagnose/ranking.md).
 bool CopiesFittedParameter(const std::string& key, const workflow::StudyFile& study,
                            const EffectContext& c) {
   using calibrate::PairProperty;
