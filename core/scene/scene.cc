@@ -6,6 +6,7 @@
 #include <numbers>
 #include <variant>
 
+#include "core/bodies/clump_template.h"
 #include "core/contact/normal_model.h"
 
 namespace demcal::core {
@@ -63,16 +64,39 @@ double SphereRayleighTime(const Material& m, double radius_m) {
   return std::numbers::pi * radius_m * std::sqrt(m.density_kg_m3 / m.ShearModulus()) /
          (0.1631 * m.poisson_ratio + 0.8766);
 }
+
+// Smallest member radius of a species' grain per unit of its size-distribution diameter: 1/2 for
+// a sphere; for a clump, whose size is the equivalent-volume diameter, the smallest member
+// sphere's radius after the engine's normalisation (ParticleSystem::SetSpecies). A shape that
+// does not build leaves 1/2: validation reports it.
+double MinMemberRadiusPerDiameter(const Species& sp) {
+  if (sp.clump_shape.empty()) return 0.5;
+  std::vector<ClumpSphere> members;
+  for (const ShapeSphere& m : sp.clump_shape) members.push_back({m.centre, m.radius});
+  ClumpTemplate raw;
+  std::string ignored;
+  if (!BuildClumpTemplate(members, 1.0, {}, &raw, &ignored) ||
+      !(raw.EquivalentVolumeDiameter() > 0))
+    return 0.5;
+  double smallest = std::numeric_limits<double>::infinity();
+  for (const ShapeSphere& m : sp.clump_shape) smallest = std::min(smallest, m.radius);
+  return smallest / raw.EquivalentVolumeDiameter();
+}
 }  // namespace
 
+// Over every sphere that touches, clump members included, as LIGGGHTS' check does: a member
+// smaller than its grain's equivalent sphere rings faster, and with the grain's size as the
+// scale a compact chain (members close together, several in one contact) ran unstable.
 double RayleighTime(const Scene& scene) {
   double t = std::numeric_limits<double>::infinity();
   for (const Species& sp : scene.species)
-    t = std::min(t, SphereRayleighTime(scene.materials[sp.material], 0.5 * sp.size.MinDiameter()));
+    t = std::min(t, SphereRayleighTime(scene.materials[sp.material],
+                                       MinMemberRadiusPerDiameter(sp) * sp.size.MinDiameter()));
   for (const ParticleSpec& p : scene.particles)
     if (p.diameter_m > 0)
       t = std::min(t, SphereRayleighTime(scene.materials[scene.species[p.species].material],
-                                         0.5 * p.diameter_m));
+                                         MinMemberRadiusPerDiameter(scene.species[p.species]) *
+                                             p.diameter_m));
   return t;
 }
 

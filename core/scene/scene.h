@@ -83,8 +83,9 @@ struct Scene {
   double MinDiameter() const;
 };
 
-// Rayleigh time of the scene's stiffest, smallest species (docs/physics.md §1.5):
-// Δt_R = π R sqrt(ρ/G) / (0.1631 ν + 0.8766), minimised over species.
+// Rayleigh time of the scene's stiffest, smallest sphere (docs/physics.md §1.5):
+// Δt_R = π R sqrt(ρ/G) / (0.1631 ν + 0.8766), minimised over species and placed particles, with
+// R a clump's smallest member sphere.
 double RayleighTime(const Scene& scene);
 
 // The time step a run of the scene takes: time.timestep_s if set, else time.rayleigh_fraction ×

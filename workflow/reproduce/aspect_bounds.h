@@ -8,8 +8,7 @@
 //    at least kMinMemberSpacing of the smaller radius apart. Towards a = 1 the chain closes onto
 //    one sphere (at a = 1 all n spheres coincide): a contact then presses on several members at
 //    almost the same overlap, n against a wall and up to n² against another such grain, on the
-//    mass of one sphere, while the time step is a fraction of one sphere's Rayleigh time
-//    (core/scene/scene.cc). The run ends non_finite; the shape is count 1's sphere anyway.
+//    mass of one sphere. The run ends non_finite; the shape is count 1's sphere anyway.
 // Why 0.15: measured on examples/aor_bp.json with the species a clump, at its quick fidelity
 // (Rayleigh fraction 0.25), replicate 0 of seed 2018 or, where "3 of 3", replicates 0-2; the
 // spacing in member radii in brackets:
@@ -19,9 +18,10 @@
 //   4 spheres: a = 1.05 (0.044) ends non-finite; 1.115 (0.115), 1.5 (0.51) 3 of 3.
 // 0.15 is half as much again as the largest spacing that failed; the bounds are a = 1.057,
 // 1.100, 1.163 and 1.191 for 2-5 spheres. The 2-sphere chains at a = 1 and 1.001 give a heap at
-// a quarter of the time step. 5 spheres need more than this bound: their heaps also end
-// non-finite at a = 1.5 (2 of 3, spacing 0.36) and 2.0 (1 of 3), not at 2.5-3.5 (3 of 3), and
-// a = 1.5 gives a heap at half the time step: the time step, not the shape, is short there.
+// a quarter of the time step. These were measured with the time step of the grain's
+// equivalent sphere; with it 5-sphere heaps also ended non-finite at a = 1.5 (2 of 3, spacing
+// 0.36) and 2.0 (1 of 3), and with the Rayleigh time of the smallest member sphere, which the
+// engine now takes (core/scene/scene.cc), both gave heaps 3 of 3: the bounds are conservative.
 // The workflow file is checked against both bounds (workflow_file.cc); the search uses them as
 // each count's bracket (shape_search.h). Scale-free: the chain is normalised to the species' size.
 //
