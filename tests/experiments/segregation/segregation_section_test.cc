@@ -64,7 +64,7 @@ TEST_CASE("segregation section errors name the field", "[unit]") {
              Catch::Contains("segregation.funnel.orifice_diameter_m"));
   CHECK_THAT(ErrorAfter([](nlohmann::json& s) { s["funnel"]["orifice_diameter_m"] = 0.014; }),
              Catch::Contains("segregation.funnel.effective_orifice_diameter_m"));
-  // 2 mm + 1.5 · 3 mm = 6.5 mm < 3 · 3 mm at size ×3: the funnel would jam.
+  // 2 mm + 0.5 · 4 mm = 4 mm < 3 · 4 mm at the file's size ×4: the funnel would jam.
   CHECK_THAT(
       ErrorAfter([](nlohmann::json& s) { s["funnel"]["effective_orifice_diameter_m"] = 0.002; }),
       Catch::Contains("segregation.funnel.effective_orifice_diameter_m"));
