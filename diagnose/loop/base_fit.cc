@@ -104,6 +104,7 @@ BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observat
     const std::string name = j < static_cast<int>(names.size()) ? names[j]
                                                                 : "parameter " + std::to_string(j);
     b.at_bound.push_back(name + " at its " + (u <= 1e-9 ? "lower" : "upper") + " bound");
+    b.bounds.push_back({j, u <= 1e-9});
   }
   for (const std::string& a : b.at_bound) s << "; " << a;
   if (p > 0) {

@@ -43,6 +43,12 @@ inline constexpr int kMaxBaseBudgetScale = 4;
 // to tell two simulated refits apart.
 double StagnationMargin(double noise_sd_before, double noise_sd_after);
 
+// A base parameter fitted onto a bound of the study's range: its coordinate and which bound.
+struct BaseBound {
+  int coordinate = 0;
+  bool lower = true;
+};
+
 struct BaseFit {
   BaseCalibration base;
   int budget_scale = 1;       // the study's budget times this was used
@@ -56,6 +62,7 @@ struct BaseFit {
   // bound". The data may ask for a value beyond the range, and an effect that moves the
   // observables as that parameter does can be absorbed there, so a verdict on this fit says so.
   std::vector<std::string> at_bound;
+  std::vector<BaseBound> bounds;  // the same parameters, as coordinates
   std::string summary;  // in words: settled or not, with which budget, what is undetermined
 };
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <map>
 #include <numeric>
 #include <sstream>
 
@@ -99,6 +98,7 @@ void Fill(const Frame& f, const Work& w, const std::vector<CandidateEffect>& can
   }
   e->chi2_per_dof = e->chi2 / std::max(1, f.n() - f.fitted - k);
   e->control = candidates[w.candidate].control;
+  if (w.simulated) e->base_unit = w.best_point.base_unit;
   e->signature_match = SignatureMatch(f.r0, f.J, f.sigma.cwiseInverse().cwiseProduct(w.signature));
   if (w.best_point.effects.empty())
     e->values = {w.refit.t(0)};
@@ -259,22 +259,34 @@ void RefineRefits(ForwardModel& model, const Frame& f, const FitState& fit,
   }
 }
 
-std::vector<ObservableShare> Carried(const Frame& f, const std::vector<Observation>& obs,
-                                     const Eigen::VectorXd& winner,
-                                     const Eigen::VectorXd* runner_up) {
-  std::map<std::string, ObservableShare> by;
-  for (int i = 0; i < f.n(); ++i) {
-    ObservableShare& s = by[obs[i].observable];
-    s.observable = obs[i].observable;
-    s.against_base += f.r0(i) * f.r0(i) - winner(i) * winner(i);
-    if (runner_up) s.against_runner_up += (*runner_up)(i) * (*runner_up)(i)-winner(i) * winner(i);
+// A base on a bound (bound_alternative.h): the controls that copy a bound parameter (they stand
+// for it beyond its range) and the effects whose linearised refit moves every bound parameter
+// inward are refitted by simulation too, significant or not — a base within noise on its bound
+// has no significant candidate, yet the two explanations must be compared on real refits. The
+// effects are taken best linear χ² first, at most `refits` of them in all, like the shortlist.
+void BoundShortlist(const std::vector<CandidateEffect>& candidates,
+                    const std::vector<BaseBound>& bounds, int refits, std::vector<Work>& work,
+                    std::vector<Work*>* shortlist) {
+  auto listed = [shortlist](Work* w) {
+    return std::find(shortlist->begin(), shortlist->end(), w) != shortlist->end();
+  };
+  std::vector<Work*> inward;
+  int effects = 0;
+  for (Work& w : work) {
+    const CandidateEffect& c = candidates[w.candidate];
+    effects += listed(&w) && !c.control ? 1 : 0;
+    bool copies = false, in = w.probe_ok && !c.control;
+    for (const BaseBound& b : bounds) {
+      copies = copies || c.copies == b.coordinate;
+      in = in && (b.lower ? w.refit.delta(b.coordinate) > 0 : w.refit.delta(b.coordinate) < 0);
+    }
+    if (c.control && copies && w.probe_ok && !listed(&w)) shortlist->push_back(&w);
+    if (in && !listed(&w)) inward.push_back(&w);
   }
-  std::vector<ObservableShare> out;
-  for (const auto& [name, s] : by) out.push_back(s);
-  std::sort(out.begin(), out.end(), [](const ObservableShare& a, const ObservableShare& b) {
-    return a.against_runner_up > b.against_runner_up;
-  });
-  return out;
+  std::sort(inward.begin(), inward.end(),
+            [](const Work* a, const Work* b) { return a->refit.chi2 < b->refit.chi2; });
+  for (size_t i = 0; i < inward.size() && effects < refits; ++i, ++effects)
+    shortlist->push_back(inward[i]);
 }
 
 }  // namespace
@@ -282,7 +294,8 @@ std::vector<ObservableShare> Carried(const Frame& f, const std::vector<Observati
 StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>& observations,
                              const std::vector<CandidateEffect>& candidates,
                              const std::vector<int>& remaining, const FitState& fit,
-                             const DiagnoseOptions& options, const DiagnoseProgress& progress) {
+                             const DiagnoseOptions& options, const DiagnoseProgress& progress,
+                             const std::vector<BaseBound>& bounds) {
   StepOutcome out;
   Frame f = MakeFrame(observations, fit, options);
   f.per_candidate = options.significance / std::max<size_t>(1, remaining.size());
@@ -319,6 +332,7 @@ StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>
   std::sort(shortlist.begin(), shortlist.end(),
             [](const Work* a, const Work* b) { return a->refit.chi2 < b->refit.chi2; });
   if (static_cast<int>(shortlist.size()) > options.dem_refits) shortlist.resize(options.dem_refits);
+  if (!bounds.empty()) BoundShortlist(candidates, bounds, options.dem_refits, work, &shortlist);
   start = Clock::now();
   const int sims1 = model.SimulationsRun();
   if (!shortlist.empty()) {
@@ -333,6 +347,8 @@ StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>
   out.step.refit_residuals.resize(work.size());
   for (size_t i = 0; i < work.size(); ++i) {
     Record(f, work[i], candidates, static_cast<int>(i), &out.step);
+    out.unit_signatures.push_back(std::vector<double>(work[i].signature.data(),
+                                                      work[i].signature.data() + f.n()));
     out.step.signatures.push_back(std::vector<double>(probed[i].mean.size()));
     for (size_t k = 0; k < probed[i].mean.size(); ++k)
       out.step.signatures[i][k] = probed[i].mean[k] - fit.prediction.mean[k];
@@ -351,7 +367,7 @@ StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>
   const Eigen::VectorXd rw = ToVector(out.step.refit_residuals[win]);
   const Eigen::VectorXd rr =
       runner >= 0 ? ToVector(out.step.refit_residuals[runner]) : Eigen::VectorXd();
-  out.step.carried = Carried(f, observations, rw, runner >= 0 ? &rr : nullptr);
+  out.step.carried = Carried(f.r0, observations, rw, runner >= 0 ? &rr : nullptr);
   if (out.step.ranking.tied >= 0) {
     const int t = out.step.ranking.tied;
     const Eigen::VectorXd sa = f.sigma.cwiseInverse().cwiseProduct(work[win].signature);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "diagnose/loop/base_fit.h"
 #include "diagnose/loop/diagnosis.h"
 #include "diagnose/loop/fit_state.h"
 
@@ -17,10 +18,17 @@ struct StepOutcome {
   bool has_winner = false;
   FitState next;  // the winner's refitted fit (valid when has_winner)
   std::vector<PhaseTime> phases;
+  // Per entry: its signature per unit of its parameter (raw units), secant-corrected by its
+  // refits.
+  std::vector<std::vector<double>> unit_signatures;
 };
 
+// bounds: base parameters fitted onto a bound (base_fit.h); non-empty, the controls copying them
+// and the effects that move them inward are refitted by simulation too (BoundShortlist).
 StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>& observations,
-                             const std::vector<CandidateEffect>& candidates, const std::vector<int>& remaining,
-                             const FitState& fit, const DiagnoseOptions& options, const DiagnoseProgress& progress);
+                             const std::vector<CandidateEffect>& candidates,
+                             const std::vector<int>& remaining, const FitState& fit,
+                             const DiagnoseOptions& options, const DiagnoseProgress& progress,
+                             const std::vector<BaseBound>& bounds = {});
 
 }  // namespace demcal::diagnose

@@ -39,6 +39,8 @@
 #include "diagnose/gap/gap_significance.h"
 #include "diagnose/loop/diagnosis_termination.h"
 #include "diagnose/loop/forward_model.h"
+#include "diagnose/ranking/bound_alternative.h"
+#include "diagnose/ranking/observables_carried.h"
 #include "diagnose/ranking/ranking.h"
 #include "diagnose/ranking/separating_measurement.h"
 
@@ -53,14 +55,6 @@ struct DiagnoseOptions {
   int max_effects = 2;   // effects added at most
   int extra_refits = 4;  // re-centred refit points per refitted candidate beyond two
   bool IsValid(std::string* error) const;
-};
-
-// How much each observable carried the choice: Σ over its rows of r_runner_up² − r_winner²
-// (positive: it favours the winner) and of r_base² − r_winner² (what the winner fixed there).
-struct ObservableShare {
-  std::string observable;
-  double against_runner_up = 0;
-  double against_base = 0;
 };
 
 struct DiagnosisStep {
@@ -90,6 +84,11 @@ struct Diagnosis {
   calibrate::IdentifiabilityReport base_identifiability;
   std::string base_summary;         // settled or not, budget, undetermined base parameters
   std::vector<std::string> base_at_bound;  // base parameters fitted onto a bound (base_fit.h)
+  // A base fitted onto a bound, against the effects that let it back inside (bound_step.h):
+  // the judgement (entry indices of the first step; kNotJudged when nothing is on a bound), the
+  // effect judged, "mu_s_BP_BP beyond its lower bound", and the verdict's sentence.
+  BoundJudgement bound;
+  std::string bound_effect, bound_parameters, bound_note;
   std::vector<Observation> before;  // at the base calibration
   GapReport gap_before;
   // The discrepancy floor estimated from the residuals (discrepancy_floor.h), in single-run

@@ -52,7 +52,7 @@ inline std::vector<CandidateEffect> Candidates() {
              "less rolling resistance than assumed"}}},
           {"shape", "", {{"t", "", 0, 2, 0.5}}},
           {"polydispersity", "", {{"t", "", 0, 1.5, 0.5}}},
-          {"control", "", {{"t", "", -0.5, 0.5, 0.2}}, true}};
+          {"control", "", {{"t", "", -0.5, 0.5, 0.2}}, true, 0}};  // copies mu (coordinate 0)
 }
 
 // The library plus "roughness", whose signature is within a few per cent of rolling's: the
