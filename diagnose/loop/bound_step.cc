@@ -58,7 +58,14 @@ BoundCheck CheckBound(const StepOutcome& step, const FitState& fit,
     p << (k ? " and " : "") << names[bounds[k].coordinate] << " beyond its "
       << (bounds[k].lower ? "lower" : "upper") << " bound";
   b.parameters = p.str();
-  const std::vector<RankingEntry>& entries = step.step.entries;
+  // The step's entries (the controls' free refits among them), then the effects held inside.
+  std::vector<RankingEntry> entries = step.step.entries;
+  entries.insert(entries.end(), step.inside_entries.begin(), step.inside_entries.end());
+  std::vector<std::vector<double>> residuals = step.step.refit_residuals, signatures =
+                                                                          step.unit_signatures;
+  residuals.insert(residuals.end(), step.inside_residuals.begin(), step.inside_residuals.end());
+  signatures.insert(signatures.end(), step.inside_signatures.begin(),
+                    step.inside_signatures.end());
   const std::vector<Observation> at =
       WithPrediction(observations, fit.prediction, options.discrepancy_floor);
   const Eigen::VectorXd sigma = Sigmas(at);
@@ -85,6 +92,7 @@ BoundCheck CheckBound(const StepOutcome& step, const FitState& fit,
   }
   const RankingEntry& e = entries[j.effect];
   b.effect_candidate = e.candidate;
+  b.effect_value = e.values.empty() ? 0 : e.values[0];
   const std::string effect = Value(e, candidates[e.candidate]);
   if (j.verdict == BoundVerdict::kEffect) {
     s << effect << " fits better with the base parameter inside its range than " << b.parameters
@@ -109,10 +117,10 @@ BoundCheck CheckBound(const StepOutcome& step, const FitState& fit,
       others.col(others.cols() - 1) = Js.col(c);
     }
     const Eigen::VectorXd rb =
-        j.alternative >= 0 ? ToVector(step.step.refit_residuals[j.alternative]) : r0;
+        j.alternative >= 0 ? ToVector(residuals[j.alternative]) : r0;
     b.separating = FindSeparatingMeasurement(
-        others, sigma.cwiseInverse().cwiseProduct(ToVector(step.unit_signatures[j.effect])),
-        Js.col(bounds[0].coordinate), ToVector(step.step.refit_residuals[j.effect]), rb, sigma,
+        others, sigma.cwiseInverse().cwiseProduct(ToVector(signatures[j.effect])),
+        Js.col(bounds[0].coordinate), ToVector(residuals[j.effect]), rb, sigma,
         observations, e.key, names[bounds[0].coordinate] + " beyond its range");
   }
   b.text = s.str();

@@ -22,8 +22,9 @@
 namespace demcal::diagnose {
 
 struct BoundCheck {
-  BoundJudgement judgement;          // entry indices into the step's entries
+  BoundJudgement judgement;  // entry indices: the step's entries, then its inside_entries
   int effect_candidate = -1;         // the candidate of judgement.effect (−1: none)
+  double effect_value = 0;           // its refitted parameter
   SeparatingMeasurement separating;  // kNotToldApart: between the effect and the bound
   std::string parameters;            // "mu_s_BP_BP beyond its lower bound"
   std::string text;                  // the verdict's sentence

@@ -277,6 +277,7 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
                                       model.BaseParameterNames(), options);
       d.bound = b.judgement;
       d.bound_effect = b.effect_candidate >= 0 ? candidates[b.effect_candidate].key : "";
+      d.bound_effect_value = b.effect_value;
       d.bound_parameters = b.parameters;
       d.bound_note = b.text;
       if (progress) progress("base on a bound: " + b.text);

@@ -89,6 +89,7 @@ struct Diagnosis {
   // effect judged, "mu_s_BP_BP beyond its lower bound", and the verdict's sentence.
   BoundJudgement bound;
   std::string bound_effect, bound_parameters, bound_note;
+  double bound_effect_value = 0;
   std::vector<Observation> before;  // at the base calibration
   GapReport gap_before;
   // The discrepancy floor estimated from the residuals (discrepancy_floor.h), in single-run

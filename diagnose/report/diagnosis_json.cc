@@ -144,6 +144,7 @@ Json BoundJson(const Diagnosis& d) {
   return {{"verdict", BoundVerdictName(d.bound.verdict)},
           {"parameters", d.bound_parameters},
           {"effect", d.bound_effect.empty() ? Json(nullptr) : Json(d.bound_effect)},
+          {"effect_value", d.bound_effect.empty() ? Json(nullptr) : Number(d.bound_effect_value)},
           {"alternative",
            control ? d.steps.front().entries[d.bound.alternative].key : "base at its bound"},
           {"bic_gap", Number(d.bound.bic_gap)},

@@ -34,7 +34,7 @@ TEST_CASE("a base on its bound with a weak hidden effect is not told apart from 
     CHECK(d.bound.verdict == BoundVerdict::kNotToldApart);
     CHECK(d.named.empty());
     REQUIRE(d.bound_effect == "rolling");
-    CHECK(d.steps.front().entries[d.bound.effect].values[0] == Approx(-0.1).margin(0.02));
+    CHECK(d.bound_effect_value == Approx(-0.1).margin(0.02));
     CHECK(d.message.find("not told apart: u0 beyond its lower bound") != std::string::npos);
     CHECK(d.message.find("rolling (less rolling resistance than assumed") != std::string::npos);
     CHECK(d.separating.observation >= 0);
