@@ -86,6 +86,8 @@ DiagnosisRunInfo RunInfo(const DiagnoseCommandOptions& o, const workflow::StudyF
   if (!d.base.base_unit.empty()) info.base_before_si = study.space.FromUnit(d.base.base_unit);
   if (!d.final_point.base_unit.empty())
     info.base_after_si = study.space.FromUnit(d.final_point.base_unit);
+  if (!d.bound_effect_base_unit.empty())
+    info.bound_effect_base_si = study.space.FromUnit(d.bound_effect_base_unit);
   info.journal_error = m.journal_error();
   return info;
 }

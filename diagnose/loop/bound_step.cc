@@ -93,6 +93,8 @@ BoundCheck CheckBound(const StepOutcome& step, const FitState& fit,
   const RankingEntry& e = entries[j.effect];
   b.effect_candidate = e.candidate;
   b.effect_value = e.values.empty() ? 0 : e.values[0];
+  b.effect_base_unit = e.base_unit;
+  b.effect_chi2_per_dof = e.chi2_per_dof;
   const std::string effect = Value(e, candidates[e.candidate]);
   if (j.verdict == BoundVerdict::kEffect) {
     s << effect << " fits better with the base parameter inside its range than " << b.parameters

@@ -278,6 +278,8 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
       d.bound = b.judgement;
       d.bound_effect = b.effect_candidate >= 0 ? candidates[b.effect_candidate].key : "";
       d.bound_effect_value = b.effect_value;
+      d.bound_effect_base_unit = b.effect_base_unit;
+      d.bound_effect_chi2_per_dof = b.effect_chi2_per_dof;
       d.bound_parameters = b.parameters;
       d.bound_note = b.text;
       if (progress) progress("base on a bound: " + b.text);

@@ -90,6 +90,8 @@ struct Diagnosis {
   BoundJudgement bound;
   std::string bound_effect, bound_parameters, bound_note;
   double bound_effect_value = 0;
+  std::vector<double> bound_effect_base_unit;  // the base parameters of that effect's refit
+  double bound_effect_chi2_per_dof = 0;
   std::vector<Observation> before;  // at the base calibration
   GapReport gap_before;
   // The discrepancy floor estimated from the residuals (discrepancy_floor.h), in single-run

@@ -138,13 +138,19 @@ Json StepJson(const DiagnosisRunInfo& info, const std::vector<Observation>& obs,
 
 // A base fitted onto a bound against the effects that let it back inside (bound_step.h);
 // null when no base parameter ended on a bound or no step compared them.
-Json BoundJson(const Diagnosis& d) {
+Json BoundJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
   if (d.bound.verdict == BoundVerdict::kNotJudged) return nullptr;
+  Json base = Json::array();
+  for (size_t k = 0; k < info.base_names.size() && k < info.bound_effect_base_si.size(); ++k)
+    base.push_back({{"name", info.base_names[k]}, {"value", Number(info.bound_effect_base_si[k])}});
   const bool control = d.bound.alternative >= 0 && !d.steps.empty();
   return {{"verdict", BoundVerdictName(d.bound.verdict)},
           {"parameters", d.bound_parameters},
           {"effect", d.bound_effect.empty() ? Json(nullptr) : Json(d.bound_effect)},
           {"effect_value", d.bound_effect.empty() ? Json(nullptr) : Number(d.bound_effect_value)},
+          {"effect_base_parameters", base},
+          {"effect_chi2_per_dof",
+           d.bound_effect.empty() ? Json(nullptr) : Number(d.bound_effect_chi2_per_dof)},
           {"alternative",
            control ? d.steps.front().entries[d.bound.alternative].key : "base at its bound"},
           {"bic_gap", Number(d.bound.bic_gap)},
@@ -229,7 +235,7 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
                            {"singular_values", singular},
                            {"undetermined", undetermined},
                            {"at_bound", d.base_at_bound},
-                           {"bound_alternative", BoundJson(d)}};
+                           {"bound_alternative", BoundJson(info, d)}};
   Json phases = Json::array();
   for (const PhaseTime& p : d.phases)
     phases.push_back(
