@@ -24,6 +24,10 @@
 //     missing effect", never the control. A winner (and its tie, if any) that only re-values
 //     a parameter the base model already has, by no more than its assumed value
 //     (revaluation.h): "model-form offset" with the re-valuation stated, not named.
+// A base fitted onto a bound of its range (gap or not) gets the first step with the controls
+// copying that parameter refitted and the best effects refitted again with it held inside
+// (candidate_step.h); bound_step.h judges: an effect that rules the bound out goes on, one
+// as good as the bound gives "not told apart: the parameter beyond its range or the effect".
 // Frugal by construction: one base calibration, one simulated point per candidate and
 // iteration, two plus at most extra_refits × (base parameters + 3) per refitted candidate.
 //
