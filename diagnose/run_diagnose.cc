@@ -48,9 +48,9 @@ int Fits(const workflow::StudyFile& study, calibrate::PairProperty property,
 }
 
 // A candidate that shifts a property the study already fits is a copy of a fitted parameter:
-// guarded like the control, never named (docs/diagnose.md "Ambiguity and the control"). The
-// index of the parameter it copies (−1: none; the sliding-friction control is a control even
-// when the study does not fit μs).
+// guarded like the control, never named (docs/diagnose/ranking.md). The index of the parameter
+// it copies (−1: none; the sliding-friction control is a control even when the study does not
+// fit μs).
 int CopiedParameter(const std::string& key, const workflow::StudyFile& study,
                     const EffectContext& c) {
   using calibrate::PairProperty;

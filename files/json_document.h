@@ -9,6 +9,7 @@
 //   - a key that appears twice in one object is an error (nlohmann would silently keep the last
 //     one, which makes a file with two "seed"s ambiguous).
 // Messages start with the file name: "scene.json: materials[0].density_kg_m3: ...".
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -25,6 +26,12 @@ bool ParseJsonText(const std::string& text, const std::string& source, nlohmann:
 // Reads and parses a file; `what` names it in the message ("scene file", "experiment file").
 bool ReadJsonFile(const std::string& path, const std::string& what, nlohmann::json* out,
                   std::string* error);
+
+// JSON has no NaN or infinity: a figure that is not finite (not determined, a failed run) is
+// written as null.
+inline nlohmann::json NumOrNull(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
+}
 
 // Writes `value` as indented JSON (invalid UTF-8 replaced) atomically (text_file.h); false with
 // a message naming the file.

@@ -11,7 +11,8 @@
 //    chi² per observable (which kind of measurement carries the misfit).
 //  - Trends (covariate_trend.h): the weighted slope of r along every numeric condition column.
 // The significance is the user's (default 0.01: a one-in-a-hundred false alarm on a model that
-// fits, chosen before seeing any data; docs/diagnose.md). Nothing here depends on a dataset.
+// fits, chosen before seeing any data; docs/diagnose/thresholds.md). Nothing here depends on a
+// dataset.
 //
 //   GapReport g = TestGap(observations, 1, {.significance = 0.01});
 //   if (g.gap_detected) std::cout << g.summary;

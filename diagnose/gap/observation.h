@@ -5,9 +5,9 @@
 //   sigma² = u_measured² + sem_simulated² + floor²
 // u_measured is the table's (or the study's) standard uncertainty, sem_simulated the standard
 // error of the simulated mean over its replicates, and floor the model-discrepancy noise floor
-// (docs/diagnose.md: by default the single-run scatter of the simulation over the square root of
-// the repeats the measured value is the mean of: a value measured on one packing differs from
-// the right model's mean by about one packing's scatter, a mean of n packings by 1/√n of it).
+// (docs/diagnose/thresholds.md: by default the single-run scatter of the simulation over the square
+// root of the repeats the measured value is the mean of: a value measured on one packing differs
+// from the right model's mean by about one packing's scatter, a mean of n packings by 1/√n of it).
 // Units: the observable's (SI unless its name says otherwise).
 //
 //   Observation o{"angle_deg BP (coating=1.5)", "angle_deg", {{"coating_PEG_wt_pct", "1.5"}},

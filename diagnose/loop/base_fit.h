@@ -1,5 +1,5 @@
 #pragma once
-// SettleBase: a base fit worth diagnosing (docs/diagnose.md "A base worth diagnosing"). The
+// SettleBase: a base fit worth diagnosing (docs/diagnose/base_fit.md). The
 // study's calibration is run with its own budget; when it ends on that budget rather than by its
 // own criterion (calibrate/termination.h: within_noise, converged, out_of_range) it is run again
 // with twice the budget, then four times (kMaxBaseBudgetScale) — the journal reads back the runs

@@ -40,8 +40,7 @@ std::string Value(const RankingEntry& e, const CandidateEffect& c) {
   s.precision(3);
   const EffectParameter& p = c.parameters[0];
   s << e.key << " (" << EffectDirection(p, e.values.empty() ? 0 : e.values[0]) << ", " << p.name
-    << " = " << (e.values.empty() ? 0 : e.values[0]) << (p.unit.empty() ? "" : " " + p.unit)
-    << ")";
+    << " = " << (e.values.empty() ? 0 : e.values[0]) << (p.unit.empty() ? "" : " " + p.unit) << ")";
   return s.str();
 }
 
@@ -61,11 +60,10 @@ BoundCheck CheckBound(const StepOutcome& step, const FitState& fit,
   // The step's entries (the controls' free refits among them), then the effects held inside.
   std::vector<RankingEntry> entries = step.step.entries;
   entries.insert(entries.end(), step.inside_entries.begin(), step.inside_entries.end());
-  std::vector<std::vector<double>> residuals = step.step.refit_residuals, signatures =
-                                                                          step.unit_signatures;
+  std::vector<std::vector<double>> residuals = step.step.refit_residuals,
+                                   signatures = step.unit_signatures;
   residuals.insert(residuals.end(), step.inside_residuals.begin(), step.inside_residuals.end());
-  signatures.insert(signatures.end(), step.inside_signatures.begin(),
-                    step.inside_signatures.end());
+  signatures.insert(signatures.end(), step.inside_signatures.begin(), step.inside_signatures.end());
   const std::vector<Observation> at =
       WithPrediction(observations, fit.prediction, options.discrepancy_floor);
   const Eigen::VectorXd sigma = Sigmas(at);
@@ -83,7 +81,8 @@ BoundCheck CheckBound(const StepOutcome& step, const FitState& fit,
   s.precision(3);
   const std::string alternative =
       j.alternative >= 0
-          ? " (the control " + Value(entries[j.alternative], candidates[entries[j.alternative].candidate]) + ")"
+          ? " (the control " +
+                Value(entries[j.alternative], candidates[entries[j.alternative].candidate]) + ")"
           : " (the base at its bound)";
   if (j.effect < 0) {
     b.text = "no effect of the library lets the base parameter back inside its range (" +
@@ -104,9 +103,8 @@ BoundCheck CheckBound(const StepOutcome& step, const FitState& fit,
       << ": every effect that lets it back inside fits worse (best " << effect << ", BIC gap +"
       << j.bic_gap << ", beyond " << j.within << "); widen the study's range";
   } else {
-    s << b.parameters << alternative << " or " << effect
-      << " fit about equally (BIC gap " << j.bic_gap << " under the common floor, within "
-      << j.within << ")";
+    s << b.parameters << alternative << " or " << effect << " fit about equally (BIC gap "
+      << j.bic_gap << " under the common floor, within " << j.within << ")";
     // The two explanations' predictions; the bound parameter's own sensitivity stands for
     // "beyond its range" beside the effect's signature, the other fitted parameters as they are.
     const Eigen::MatrixXd Js = sigma.cwiseInverse().asDiagonal() * fit.jacobian;
@@ -118,12 +116,11 @@ BoundCheck CheckBound(const StepOutcome& step, const FitState& fit,
       others.conservativeResize(Eigen::NoChange, others.cols() + 1);
       others.col(others.cols() - 1) = Js.col(c);
     }
-    const Eigen::VectorXd rb =
-        j.alternative >= 0 ? ToVector(residuals[j.alternative]) : r0;
+    const Eigen::VectorXd rb = j.alternative >= 0 ? ToVector(residuals[j.alternative]) : r0;
     b.separating = FindSeparatingMeasurement(
         others, sigma.cwiseInverse().cwiseProduct(ToVector(signatures[j.effect])),
-        Js.col(bounds[0].coordinate), ToVector(residuals[j.effect]), rb, sigma,
-        observations, e.key, names[bounds[0].coordinate] + " beyond its range");
+        Js.col(bounds[0].coordinate), ToVector(residuals[j.effect]), rb, sigma, observations, e.key,
+        names[bounds[0].coordinate] + " beyond its range");
   }
   b.text = s.str();
   return b;

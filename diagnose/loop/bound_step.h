@@ -22,9 +22,9 @@
 namespace demcal::diagnose {
 
 struct BoundCheck {
-  BoundJudgement judgement;  // entry indices: the step's entries, then its inside_entries
-  int effect_candidate = -1;         // the candidate of judgement.effect (−1: none)
-  double effect_value = 0;           // its refitted parameter
+  BoundJudgement judgement;   // entry indices: the step's entries, then its inside_entries
+  int effect_candidate = -1;  // the candidate of judgement.effect (−1: none)
+  double effect_value = 0;    // its refitted parameter
   std::vector<double> effect_base_unit;  // and base parameters (unit cube)
   double effect_chi2_per_dof = 0;
   SeparatingMeasurement separating;  // kNotToldApart: between the effect and the bound

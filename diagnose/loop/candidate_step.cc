@@ -29,7 +29,8 @@ void ForceBoundControls(const std::vector<CandidateEffect>& candidates,
                         std::vector<Work*>* shortlist) {
   for (Work& w : work) {
     bool copies = false;
-    for (const BaseBound& b : bounds) copies = copies || candidates[w.candidate].copies == b.coordinate;
+    for (const BaseBound& b : bounds)
+      copies = copies || candidates[w.candidate].copies == b.coordinate;
     if (copies && candidates[w.candidate].control && w.probe_ok &&
         std::find(shortlist->begin(), shortlist->end(), &w) == shortlist->end())
       shortlist->push_back(&w);
@@ -49,11 +50,12 @@ void RefitInside(ForwardModel& model, const Frame& f, const FitState& fit,
                  const std::vector<BaseBound>& bounds, const std::vector<Work>& work,
                  const DiagnoseOptions& options, StepOutcome* out) {
   double noise_max = 0;
-  for (int k = 0; k < f.n(); ++k) noise_max = std::max(noise_max, fit.prediction.sem[k] / f.sigma(k));
+  for (int k = 0; k < f.n(); ++k)
+    noise_max = std::max(noise_max, fit.prediction.sem[k] / f.sigma(k));
   const double h = calibrate::FiniteDifferenceStep(noise_max);
   FitState inside = fit;
-  for (const BaseBound& b : bounds) (b.lower ? inside.lower : inside.upper)[b.coordinate] =
-      b.lower ? h : 1 - h;
+  for (const BaseBound& b : bounds)
+    (b.lower ? inside.lower : inside.upper)[b.coordinate] = b.lower ? h : 1 - h;
   Frame fi = MakeFrame(*f.observations, inside, options);
   fi.per_candidate = f.per_candidate;
   std::vector<Work> held;
@@ -76,8 +78,8 @@ void RefitInside(ForwardModel& model, const Frame& f, const FitState& fit,
   rows.refit_residuals.resize(held.size());
   for (size_t i = 0; i < held.size(); ++i) {
     Record(fi, held[i], candidates, static_cast<int>(i), &rows);
-    out->inside_signatures.push_back(std::vector<double>(held[i].signature.data(),
-                                                         held[i].signature.data() + f.n()));
+    out->inside_signatures.push_back(
+        std::vector<double>(held[i].signature.data(), held[i].signature.data() + f.n()));
   }
   out->inside_entries = rows.entries;
   out->inside_residuals = rows.refit_residuals;
@@ -145,8 +147,8 @@ StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>
   out.step.refit_residuals.resize(work.size());
   for (size_t i = 0; i < work.size(); ++i) {
     Record(f, work[i], candidates, static_cast<int>(i), &out.step);
-    out.unit_signatures.push_back(std::vector<double>(work[i].signature.data(),
-                                                      work[i].signature.data() + f.n()));
+    out.unit_signatures.push_back(
+        std::vector<double>(work[i].signature.data(), work[i].signature.data() + f.n()));
     out.step.signatures.push_back(std::vector<double>(probed[i].mean.size()));
     for (size_t k = 0; k < probed[i].mean.size(); ++k)
       out.step.signatures[i][k] = probed[i].mean[k] - fit.prediction.mean[k];

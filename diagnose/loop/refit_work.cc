@@ -12,7 +12,6 @@ Eigen::VectorXd ToVector(const std::vector<double>& v) {
   return Eigen::Map<const Eigen::VectorXd>(v.data(), v.size());
 }
 
-
 Frame MakeFrame(const std::vector<Observation>& observations, const FitState& fit,
                 const DiagnoseOptions& o) {
   Frame f{&observations};
@@ -32,7 +31,6 @@ Frame MakeFrame(const std::vector<Observation>& observations, const FitState& fi
   f.significance = o.significance;
   return f;
 }
-
 
 LinearRefitResult Refit(const Frame& f, const EffectParameter& p,
                         const Eigen::VectorXd& signature) {

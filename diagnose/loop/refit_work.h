@@ -50,8 +50,7 @@ Eigen::VectorXd ToVector(const std::vector<double>& v);
 Frame MakeFrame(const std::vector<Observation>& observations, const FitState& fit,
                 const DiagnoseOptions& o);
 
-LinearRefitResult Refit(const Frame& f, const EffectParameter& p,
-                        const Eigen::VectorXd& signature);
+LinearRefitResult Refit(const Frame& f, const EffectParameter& p, const Eigen::VectorXd& signature);
 
 // The evidence with the discrepancy floor in the variance (evidence.h), at the significance
 // over the step's candidates: the step names at most one of K, so each is held to α/K and a

@@ -1,10 +1,11 @@
 #pragma once
 // JudgeBound: a base fit that ends on a bound of its study's range, against the candidate
-// effects whose refits let that parameter back inside (docs/diagnose.md "A base fitted onto a
-// bound"). A fit on a bound may be the data asking for the parameter beyond the range (the
-// range was too narrow, or a model-form offset the parameter absorbs), or an effect that moves
-// the observables the same way and was absorbed there (LIGGGHTS data with less rolling
-// resistance pull a μs-only base to its lower bound). Two explanations, one verdict:
+// effects whose refits let that parameter back inside (docs/diagnose/base_fit.md, "A base
+// parameter fitted onto a bound"). A fit on a bound may be the data asking for the parameter
+// beyond the range (the range was too narrow, or a model-form offset the parameter absorbs),
+// or an effect that moves the observables the same way and was absorbed there (LIGGGHTS data
+// with less rolling resistance pull a μs-only base to its lower bound). Two explanations, one
+// verdict:
 //  - the bound alternative A: the better, by BicGap (evidence.h), of the base at its bound
 //    and the simulated refit of the control that copies the bound parameter (it may step
 //    beyond the range; no extra parameter for the base, one for the control);

@@ -14,7 +14,7 @@ std::vector<ObservableShare> Carried(const Eigen::VectorXd& r_base,
     ObservableShare& s = by[observations[i].observable];
     s.observable = observations[i].observable;
     s.against_base += r_base(i) * r_base(i) - winner(i) * winner(i);
-    if (runner_up) s.against_runner_up += (*runner_up)(i) * (*runner_up)(i) - winner(i) * winner(i);
+    if (runner_up) s.against_runner_up += (*runner_up)(i) * (*runner_up)(i)-winner(i) * winner(i);
   }
   std::vector<ObservableShare> out;
   for (const auto& [name, s] : by) out.push_back(s);

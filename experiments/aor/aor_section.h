@@ -1,5 +1,5 @@
 #pragma once
-// The "aor" section of an experiment file → objectives::AorSettings (docs/experiments.md).
+// The "aor" section of an experiment file → objectives::AorSettings (docs/experiments/aor.md).
 #include <nlohmann/json.hpp>
 #include <string>
 

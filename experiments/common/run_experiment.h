@@ -6,7 +6,7 @@
 //  - the command, RunExperiment: `demcal experiment aor|discharge|segregation PARAMS.json --out
 //    DIR [--replicates R] [--quick]` reads the file, calls the front door and turns a refused
 //    input into DIR/rejected.json; it returns an exit code (outputs/exit_codes.h).
-// docs/experiments.md lists every output file.
+// docs/experiments/<experiment>.md lists every output file.
 //
 //   ExperimentFile file;  // LoadExperimentFile, ParseExperimentJson, or built in memory
 //   ExperimentContext context = ExperimentContextFor(file, "out/aor", /*quick=*/true);

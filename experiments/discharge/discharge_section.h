@@ -1,6 +1,6 @@
 #pragma once
 // The "discharge" section of an experiment file → objectives::DischargeSettings
-// (docs/experiments.md, "## discharge").
+// (docs/experiments/discharge.md).
 #include <nlohmann/json.hpp>
 #include <string>
 

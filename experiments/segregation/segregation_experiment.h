@@ -7,7 +7,7 @@
 // discharge time, and the histories of a few tracked granules of the minor species (impact on
 // the heap and penetration below its surface, Figs. 17–19).
 //
-// Geometry (z up, floor at z = 0; see docs/experiments.md "segregation" for the assumptions):
+// Geometry (z up, floor at z = 0; see docs/experiments/segregation.md for the assumptions):
 //   box     x ∈ [0, width], y ∈ [0, depth]; its front (y = 0) and back (y = depth) planes are
 //           infinite, so they also slice the funnel: the funnel is a conical hopper cut to the
 //           box depth, its orifice the circle ∩ the 16 mm slab;

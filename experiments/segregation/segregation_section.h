@@ -1,6 +1,6 @@
 #pragma once
 // The "segregation" section of an experiment file → objectives::SegregationSettings
-// (docs/experiments.md, "segregation").
+// (docs/experiments/segregation.md).
 #include <nlohmann/json.hpp>
 #include <string>
 

@@ -21,8 +21,8 @@ std::string ConditionText(const nlohmann::json& conditions) {
   return text;
 }
 
-// bracket_points only when above 1, so a one-point study is the file it always was (and its
-// journal's study hash with it).
+// bracket_points only when above 1: a one-point study's file, and with it its journal's study
+// hash, is the same as without the option, so its journal resumes.
 nlohmann::ordered_json StudyJson(const CalibrationStep& s, int bracket_points) {
   nlohmann::ordered_json measurement{{"table", fs::absolute(s.table).string()},
                                      {"material", s.material},
@@ -74,8 +74,6 @@ void FillOutcome(const StudyFile& study, const CalibrationResult& r, Calibration
   }
   if (!study.targets.empty()) o->provenance = study.targets[0].provenance;
 }
-
-nlohmann::json NumOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
 
 }  // namespace
 

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <map>
 
+#include "files/json_document.h"
 #include "objectives/common/replicates.h"
 #include "workflow/reproduce/stages.h"
 
@@ -17,9 +18,6 @@ const char* const kIndices[] = {"cov_2d_front", "cov_r_2d_front", "s_n_2d_front"
 nlohmann::json MeanOf(const objectives::Summary* s) {
   return s && s->n > 0 ? nlohmann::json(s->mean) : nlohmann::json();
 }
-
-// A run's number as its result.json holds it: null where it is not finite.
-nlohmann::json Finite(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
 
 // mean and sem of a summarised metric; NaN when absent.
 std::pair<double, double> Get(const nlohmann::json& scenario, const std::string& metric) {
@@ -67,7 +65,7 @@ nlohmann::json ExtractSegregationMetrics(const SegregationResult& r) {
   const objectives::SegregationRun* run = r.runs.empty() ? nullptr : &r.runs.front();
   m["status"] = run ? run->Status() : "missing";
   m["ok"] = m["status"] == "ok";
-  m["wall_time_s"] = run ? Finite(run->wall_time_s) : nlohmann::json();
+  m["wall_time_s"] = run ? NumOrNull(run->wall_time_s) : nlohmann::json();
   m["particles"] = run ? nlohmann::json(run->particles) : nlohmann::json();
   for (const SegregationSpeciesResult& s : r.species)
     for (const char* index : kIndices) {
@@ -75,7 +73,7 @@ nlohmann::json ExtractSegregationMetrics(const SegregationResult& r) {
       m[key] = MeanOf(s.Index(index));
       // The random-mixture noise floor of the same heap, where the run has one.
       if (const FloorEstimate* floor = s.Floor(std::string(index) + "_floor"))
-        m[key + "_floor"] = floor->n > 0 ? Finite(floor->mean) : nlohmann::json();
+        m[key + "_floor"] = floor->n > 0 ? NumOrNull(floor->mean) : nlohmann::json();
     }
   m["mixture_angle_deg"] = MeanOf(&r.mixture_angle_deg);
   for (const NamedEstimate& o : r.mechanism) m[o.name] = MeanOf(&o.value);
@@ -83,8 +81,8 @@ nlohmann::json ExtractSegregationMetrics(const SegregationResult& r) {
   if (run) {  // 1/0: its mean is the fraction
     m["funnel_feed_limited"] = run->funnel_feed_limited ? 1 : 0;
     m["funnel_orifice_limited"] = run->funnel_regime == "orifice_limited" ? 1 : 0;
-    m["funnel_mass_flow_kg_s"] = Finite(run->funnel_mass_flow_kg_s);
-    m["feed_duration_s"] = Finite(run->feed_duration_s);
+    m["funnel_mass_flow_kg_s"] = NumOrNull(run->funnel_mass_flow_kg_s);
+    m["feed_duration_s"] = NumOrNull(run->feed_duration_s);
   }
   std::vector<double> peaks;
   if (run)

@@ -5,7 +5,6 @@
 #include <filesystem>
 #include <sstream>
 
-#include "core/bodies/clump_shapes.h"
 #include "core/math/number_text.h"
 #include "files/json_document.h"
 #include "objectives/farm/farm.h"
@@ -16,10 +15,6 @@ namespace demcal::workflow {
 namespace {
 
 namespace farm = objectives::farm;
-
-nlohmann::json NumOrNull(double v) {
-  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
-}
 
 std::string Deg(double v) {
   std::ostringstream os;
@@ -54,11 +49,12 @@ ShapeSearchRow RowOf(const WorkflowSpecies& s, int count, const CalibrationOutco
   ShapeSearchRow row;
   row.count = count;
   row.aspect_max = ConnectedAspectLimit(count, a.min, a.max);
+  row.aspect_min = DistinctAspectLimit(count, a.min, row.aspect_max);
   if (count >= 2) {
     row.aspect_ratio = o.value;
     row.aspect_sigma = std::isfinite(o.sigma) ? o.sigma : NAN;
     // The bracket evaluates the bounds exactly: the best candidate equals one or lies inside.
-    row.aspect_at_bound = o.value <= a.min || o.value >= row.aspect_max;
+    row.aspect_at_bound = o.value <= row.aspect_min || o.value >= row.aspect_max;
   } else {
     row.aspect_sigma = NAN;  // a sphere: nothing calibrated
   }
@@ -132,20 +128,6 @@ std::string Note(const WorkflowSpecies& s, const ShapeSearch& out) {
 
 }  // namespace
 
-double ConnectedAspectLimit(int count, double min, double max) {
-  auto connected = [count](double aspect) {
-    core::ShapeApproximation shape;
-    std::string ignored;
-    return core::ApproximateEllipsoid({aspect, 1, 1}, count, &shape, &ignored) &&
-           shape.connected;
-  };
-  if (count < 2 || connected(max)) return max;
-  if (!connected(min)) return min;
-  double lo = min, hi = max;  // connected at lo, not at hi; chains part as they stretch
-  for (int k = 0; k < 40; ++k) (connected(0.5 * (lo + hi)) ? lo : hi) = 0.5 * (lo + hi);
-  return lo;
-}
-
 const ShapeSearchRow* ShapeSearch::Used() const {
   for (const ShapeSearchRow& r : rows)
     if (r.count == chosen) return &r;
@@ -159,13 +141,16 @@ nlohmann::json ShapeSearch::TableJson() const {
     if (r.count >= 2 && !std::isfinite(r.aspect_sigma))
       row_note = "the aspect ratio's standard error is not determined; " + row_note;
     if (r.aspect_at_bound && !r.within_noise)
-      row_note = "best aspect ratio at a bound (upper bound " + core::NumberText(r.aspect_max) +
+      row_note = "best aspect ratio at a bound (lower bound " + core::NumberText(r.aspect_min) +
+                 ": the shortest chain whose spheres stand apart, or the workflow's; upper bound " +
+                 core::NumberText(r.aspect_max) +
                  ": the longest chain whose spheres touch, or the workflow's), still not within "
                  "noise; " + row_note;
     table["rows"].push_back({{"count", r.count},
                              {"aspect_ratio", r.aspect_ratio},
                              {"aspect_ratio_sigma", NumOrNull(r.aspect_sigma)},
                              {"aspect_at_bound", r.aspect_at_bound},
+                             {"aspect_ratio_min", r.aspect_min},
                              {"aspect_ratio_max", r.aspect_max},
                              {"angle_deg", NumOrNull(r.angle_deg)},
                              {"angle_sem_deg", NumOrNull(r.angle_sem_deg)},
@@ -190,9 +175,9 @@ CalibrationStep ShapeStep(const WorkflowFile& w, size_t k, int count,
   if (count >= 2) {
     step.parameter = "aspect_ratio_" + s.name;
     step.property = "aspect_ratio";
-    step.min = s.aspect_ratio.min;
     step.max = ConnectedAspectLimit(count, s.aspect_ratio.min, s.aspect_ratio.max);
-    step.start = std::min(s.aspect_ratio.start, step.max);
+    step.min = DistinctAspectLimit(count, s.aspect_ratio.min, step.max);
+    step.start = std::clamp(s.aspect_ratio.start, step.min, step.max);
     step.max_evaluations = s.aspect_ratio.max_evaluations;
   }
   return step;

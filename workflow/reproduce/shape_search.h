@@ -5,12 +5,11 @@
 // 1 (a sphere, which has no aspect ratio) is one candidate at the held property; at each count
 // n >= 2 the aspect ratio a of the prolate spheroid [a, 1, 1] is calibrated against the measured
 // angle by the bracket optimiser (at most aspect_ratio.max_evaluations candidates), the property
-// (Table 1's rolling friction) held at `start` throughout. A chain whose spheres do not touch is
-// a dumbbell, not a grain: at each count the upper bound is the largest aspect ratio at which
-// its chain is connected (ConnectedAspectLimit: 2 for 2 spheres, 3 for 3; 4 and 5 spheres stay
-// connected beyond 3.5). The first count whose calibrated
-// shape matches the angle within noise is kept and the larger counts are not run: the smallest
-// count that matches, at a bounded cost.
+// (Table 1's rolling friction) held at `start` throughout. Each count's range is the workflow's
+// cut to the chains that are grains (aspect_bounds.h): from the shortest chain whose spheres stand
+// apart (DistinctAspectLimit) to the longest whose spheres still touch (ConnectedAspectLimit).
+// The first count whose calibrated shape matches the angle within noise is kept and the larger
+// counts are not run: the smallest count that matches, at a bounded cost.
 //
 // Each count is one calibration (calibration_step.h) in <dir>/clumps_<n>/ with its own journal
 // (a rerun resumes it), run on a copy of the species' experiment file with the property held and
@@ -23,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "workflow/reproduce/aspect_bounds.h"
 #include "workflow/reproduce/calibration_step.h"
 #include "workflow/reproduce/reproduce_context.h"
 
@@ -33,6 +33,7 @@ struct ShapeSearchRow {
   int count = 0;
   double aspect_ratio = 1;     // calibrated (1 for a sphere), dimensionless
   double aspect_sigma = 0;     // its standard error (NaN: not determined)
+  double aspect_min = 0;       // the count's lower bound (DistinctAspectLimit)
   double aspect_max = 0;       // the count's upper bound (ConnectedAspectLimit)
   bool aspect_at_bound = false;  // the best candidate sits on a bound of the count's range
   double angle_deg = 0, angle_sem_deg = 0;  // the best candidate's heap angle ± standard error
@@ -53,13 +54,10 @@ struct ShapeSearch {
   std::string note;                  // the verdict in words
   const ShapeSearchRow* Used() const;  // the chosen row, else the nearest; null without rows
   // {"rows": [...], "note"} with the keys of clump_table.h's rows plus "aspect_ratio",
-  // "aspect_ratio_sigma", "aspect_at_bound", "aspect_ratio_max", "heaps", "wall_time_s".
+  // "aspect_ratio_sigma", "aspect_at_bound", "aspect_ratio_min", "aspect_ratio_max", "heaps",
+  // "wall_time_s".
   nlohmann::json TableJson() const;
 };
-
-// The largest aspect ratio in [min, max] at which `count` spheres chained on [a, 1, 1]
-// (core::ApproximateEllipsoid) still touch (max for count < 2; min if none does).
-double ConnectedAspectLimit(int count, double min, double max);
 
 // The calibration of species k at `count` on `experiment_file` (the aspect ratio for count >= 2,
 // the held property for count 1), in `dir`. The whole-workflow check parses it too.

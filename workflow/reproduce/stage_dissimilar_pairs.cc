@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "calibrate/dissimilar_pairs.h"
+#include "files/json_document.h"
 #include "workflow/reproduce/stages.h"
 
 namespace demcal::workflow {
@@ -49,8 +50,8 @@ bool RunDissimilarPairsStage(ReproduceContext& ctx, nlohmann::json* result, std:
                                        : "no coated Γ to start from",
                   synthetic);
   }
-  *result = {{"coated_gamma_J_m2", std::isfinite(gamma) ? nlohmann::json(gamma) : nlohmann::json()},
-             {"coated_gamma_sigma_J_m2", std::isfinite(sigma) ? nlohmann::json(sigma) : nlohmann::json()},
+  *result = {{"coated_gamma_J_m2", NumOrNull(gamma)},
+             {"coated_gamma_sigma_J_m2", NumOrNull(sigma)},
              {"from", from},
              {"radius_convention", "R*_coated = the coated granule's radius; R*_pair = R1 R2/(R1+R2) "
                                    "of the equivalent-volume radii"},

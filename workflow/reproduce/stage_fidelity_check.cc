@@ -111,7 +111,7 @@ bool RunFidelityCheckStage(ReproduceContext& ctx, nlohmann::json* result, std::s
   *result = {{"enabled", true}, {"exit_code", code}, {"fine_fidelity", fine},
              {"fine_angle_deg", std::isfinite(fine_angle) ? nlohmann::json(fine_angle) : nlohmann::json()},
              {"fine_sem_deg", std::isfinite(fine_sem) ? nlohmann::json(fine_sem) : nlohmann::json()},
-             {"base_angle_deg", std::isfinite(base) ? nlohmann::json(base) : nlohmann::json()},
+             {"base_angle_deg", NumOrNull(base)},
              {"base_sem_deg", std::isfinite(base_sem) ? nlohmann::json(base_sem) : nlohmann::json()},
              {"gamma_J_m2", level["value"]}, {"run", outcome["run"]},
              {"values", {{"fidelity_angle_shift_deg",

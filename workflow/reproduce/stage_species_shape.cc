@@ -12,13 +12,6 @@
 #include "workflow/reproduce/stages.h"
 
 namespace demcal::workflow {
-namespace {
-
-nlohmann::json NumOrNull(double v) {
-  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
-}
-
-}  // namespace
 
 bool RunShapeSpecies(const ReproduceContext& ctx, size_t k, nlohmann::json* species,
                      nlohmann::json* values, std::string* error) {

@@ -2,6 +2,8 @@
 
 #include "workflow/reproduce/stages.h"
 
+#include "files/json_document.h"
+
 namespace demcal::workflow {
 
 const std::vector<Stage>& ReproduceStages() {
@@ -18,8 +20,8 @@ const std::vector<Stage>& ReproduceStages() {
 }
 
 nlohmann::json ValueJson(double mean, double sem, const std::string& note, bool synthetic) {
-  return {{"mean", std::isfinite(mean) ? nlohmann::json(mean) : nlohmann::json()},
-          {"sem", std::isfinite(sem) ? nlohmann::json(sem) : nlohmann::json()},
+  return {{"mean", NumOrNull(mean)},
+          {"sem", NumOrNull(sem)},
           {"note", note},
           {"synthetic", synthetic}};
 }

@@ -6,9 +6,11 @@
 #include <sstream>
 
 #include "calibrate/observable_registry.h"
+#include "core/math/number_text.h"
 #include "files/json_document.h"
 #include "files/json_fields.h"
 #include "objectives/common/input_limits.h"
+#include "workflow/reproduce/aspect_bounds.h"
 
 namespace demcal::workflow {
 
@@ -65,6 +67,25 @@ void ParseAspectRatio(const nlohmann::json& j, const std::string& path, AspectRa
   a->enabled = f.ok();
 }
 
+// Every count n >= 2 needs aspect ratios in [min, max] at which its chain is a grain
+// (aspect_bounds.h): its spheres stand apart and still touch.
+void CheckCountRanges(const WorkflowSpecies& s, const std::string& path, JsonStatus* status) {
+  const AspectRatioSearch& a = s.aspect_ratio;
+  for (int n : s.clump_counts) {
+    const double hi = ConnectedAspectLimit(n, a.min, a.max);
+    const double lo = DistinctAspectLimit(n, a.min, hi);
+    if (n < 2 || lo < hi) continue;
+    const double apart = DistinctAspectLimit(n, core::limits::kClumpAspectRatio.lo,
+                                             core::limits::kClumpAspectRatio.hi);
+    const double touch = ConnectedAspectLimit(n, core::limits::kClumpAspectRatio.lo,
+                                              core::limits::kClumpAspectRatio.hi);
+    return status->Fail("field '" + path + "' [min, max] = [" + core::NumberText(a.min) + ", " +
+                        core::NumberText(a.max) + "] holds no grain of " + std::to_string(n) +
+                        " spheres: it must overlap [" + core::NumberText(apart) + ", " +
+                        core::NumberText(touch) + "], where its spheres stand apart and touch");
+  }
+}
+
 void ParseSpecies(const nlohmann::json& j, const std::string& path, const std::string& file,
                   WorkflowSpecies* s, JsonStatus* status) {
   JsonFields f(j, path, {"name", "experiment_file", "property", "min", "max", "start",
@@ -93,6 +114,7 @@ void ParseSpecies(const nlohmann::json& j, const std::string& path, const std::s
       return f.Fail("semi_axes", "give either semi_axes (a fixed shape) or aspect_ratio (a "
                                  "calibrated one), not both");
     ParseAspectRatio(*a, f.PathOf("aspect_ratio"), &s->aspect_ratio, status);
+    if (status->ok()) CheckCountRanges(*s, f.PathOf("aspect_ratio"), status);
     return;
   }
   NumberList(f, "semi_axes", s->clump_counts.empty() ? kOptional : kRequired,

@@ -2,8 +2,8 @@
 // the truth's friction μ lies inside the range [0.2, 1] but an effect that moves the angle and
 // height as μ does (less rolling resistance than the base assumes) pulls the μ-only base fit onto
 // the lower bound, as LIGGGHTS data with a lower rolling friction pull a μs-only base
-// (docs/diagnose.md "A base fitted onto a bound"). The answer is the effect, or "not told apart:
-// μ beyond its range or the effect", never "no missing effect" in silence nor a wrong effect.
+// (docs/diagnose/base_fit.md). The answer is the effect, or "not told apart: μ beyond its range
+// or the effect", never "no missing effect" in silence nor a wrong effect.
 #include <catch2/catch.hpp>
 
 #include "diagnose/analytic_forward_model.h"

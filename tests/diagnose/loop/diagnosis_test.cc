@@ -238,8 +238,8 @@ TEST_CASE("a candidate with a nonlinear signature is refitted on towards the tru
 
 TEST_CASE("refits re-estimate the sensitivities where they are, past a base fit stopped at a bound",
           "[unit]") {
-  // The DEM case this stands in for (docs/diagnose.md, rolling_strong): a base calibration that
-  // stopped on its budget near the top of the friction range, where the heap angle has stopped
+  // The DEM case this stands in for (docs/diagnose/results.md, rolling_strong): a base calibration
+  // that stopped on its budget near the top of the friction range, where the heap angle has stopped
   // rising with mu (angle_saturation 0.7), its sensitivities a backward difference over a coarse
   // step that still sees the angle rise. Hidden: rolling resistance 0.4 at mu 0.5. The two
   // Gauss–Newton points from the base fit's sensitivities stall (v ≈ 0.12, χ² ≈ 81 on 9

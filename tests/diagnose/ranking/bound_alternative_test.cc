@@ -92,7 +92,8 @@ TEST_CASE("JudgeBound: effects still on the bound, controls and linear refits do
                                        Fit("shape", 1.0, 0.5, false)};
   entries[2].simulated = false;  // a linearised refit is a shortlist, not evidence
   // rolling's refit stayed on the bound; the control is inside but never an effect.
-  const BoundJudgement j = JudgeBound(entries, {false, true, true}, {false, true, false}, Base(1.0));
+  const BoundJudgement j =
+      JudgeBound(entries, {false, true, true}, {false, true, false}, Base(1.0));
   CHECK(j.verdict == BoundVerdict::kNoEffectInside);
   CHECK(j.effect == -1);
 }

@@ -1,13 +1,19 @@
-// The per-count upper bound of the aspect-ratio search (shape_search.h): the longest chain whose
-// spheres still touch.
+// The per-count range of the aspect-ratio search (aspect_bounds.h, shape_search.h): from the
+// shortest chain whose spheres stand apart to the longest whose spheres still touch; the search's
+// bracket and the workflow file's check use both.
 #include "workflow/reproduce/shape_search.h"
 
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <numbers>
+
+#include "workflow/reproduce/species_twin.h"
 
 namespace demcal::workflow {
 namespace {
 
-TEST_CASE("aspect-ratio search: each count's bound is its longest connected chain", "[unit]") {
+TEST_CASE("aspect-ratio search: each count's bound is its longest connected chain",
+          "[unit][shape]") {
   // n equal spheres with the volume of the spheroid [a, 1, 1], n·(4/3)πr³ = (4/3)πa, end to
   // end over the length 2a touch when 2nr = 2a, i.e. n(a/n)³ = a: a = n. Tolerance: the chain
   // builder counts spheres within 1e-9 of its length as touching (clump_shapes.cc).
@@ -19,6 +25,58 @@ TEST_CASE("aspect-ratio search: each count's bound is its longest connected chai
   // Four and five stay connected over the bundled range (their tapered chains overlap).
   CHECK(ConnectedAspectLimit(4, 1.0, 3.5) == 3.5);
   CHECK(ConnectedAspectLimit(5, 1.0, 3.5) == 3.5);
+}
+
+TEST_CASE("aspect-ratio search: each count's lower bound is its shortest distinct chain",
+          "[unit][shape]") {
+  // At a = 1 every chain is n spheres on one another (clump_shapes.cc: a sphere target puts
+  // them all at the origin): nothing a heap can be made of at the engine's time step.
+  for (int n = 2; n <= 5; ++n) CHECK(MinMemberSpacing(n, 1.0) < 0.01);
+  CHECK(std::isinf(MinMemberSpacing(1, 1.0)));
+  // Two equal spheres of radius r, centres s = 0.15 r apart, end to end over 2a = 2r + s, with
+  // the spheroid's volume (4/3)πa: two balls less their lens, (4/3)π·2r³ − π(4r + s)(2r − s)²/12
+  // (the lens of two equal spheres). With s = 0.15 r and a = 1.075 r this gives r² and a:
+  const double s = kMinMemberSpacing;
+  const double union_over_r3 =
+      (4.0 / 3.0) * std::numbers::pi * 2 - std::numbers::pi * (4 + s) * (2 - s) * (2 - s) / 12;
+  const double r = std::sqrt((4.0 / 3.0) * std::numbers::pi * (1 + s / 2) / union_over_r3);
+  const double a2 = (1 + s / 2) * r;  // ≈ 1.0568
+  CHECK(DistinctAspectLimit(2, 1.0, 3.5) == Approx(a2).epsilon(1e-8));
+  // Every count's bound is where its spacing reaches the rule, and each longer count packs more
+  // spheres into the length, so it needs a longer chain.
+  double previous = 1.0;
+  for (int n = 2; n <= 5; ++n) {
+    INFO(n << " spheres");
+    const double lo = DistinctAspectLimit(n, 1.0, 3.5);
+    CHECK(MinMemberSpacing(n, lo) == Approx(kMinMemberSpacing).epsilon(1e-6));
+    CHECK(MinMemberSpacing(n, 0.99 * lo + 0.01) < kMinMemberSpacing);
+    CHECK(lo > previous);
+    CHECK(lo < ConnectedAspectLimit(n, 1.0, 3.5));
+    previous = lo;
+  }
+  // A sphere has no chain; a range already past the bound keeps its own minimum.
+  CHECK(DistinctAspectLimit(1, 1.0, 3.5) == 1.0);
+  CHECK(DistinctAspectLimit(2, 1.5, 3.5) == 1.5);
+}
+
+TEST_CASE("aspect-ratio search: a count's bracket is the workflow range cut to its grains",
+          "[unit][shape]") {
+  WorkflowFile w = testing_twin::TwinWorkflow("unused.csv", {1, 2, 3});
+  w.species[0].semi_axes.clear();
+  w.species[0].aspect_ratio = {
+      .min = 1.0, .max = 3.5, .start = 2.5, .max_evaluations = 6, .enabled = true};
+  const CalibrationStep two = ShapeStep(w, 0, 2, "experiment.json", "clumps_2");
+  CHECK(two.property == "aspect_ratio");
+  CHECK(two.min == Approx(DistinctAspectLimit(2, 1.0, 3.5)).epsilon(1e-10));
+  CHECK(two.max == ConnectedAspectLimit(2, 1.0, 3.5));
+  CHECK(two.start == two.max);  // the workflow's start 2.5 lies past the connected chains
+  const CalibrationStep three = ShapeStep(w, 0, 3, "experiment.json", "clumps_3");
+  CHECK(three.min == Approx(DistinctAspectLimit(3, 1.0, 3.5)).epsilon(1e-10));
+  CHECK(three.start == 2.5);
+  // Count 1 is one candidate, the sphere at the held property: no aspect ratio to bound.
+  const CalibrationStep one = ShapeStep(w, 0, 1, "experiment.json", "clumps_1");
+  CHECK(one.property != "aspect_ratio");
+  CHECK(one.max_evaluations == 1);
 }
 
 }  // namespace

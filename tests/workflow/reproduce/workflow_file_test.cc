@@ -124,6 +124,9 @@ TEST_CASE("the clumps workflow calibrates each species' aspect ratio; bad ones a
       {[](nlohmann::json& a) { a["max_evaluations"] = 2; },
        "aspect_ratio.max_evaluations' = 2 is outside the allowed range [3, 30]"},
       {[](nlohmann::json& a) { a["aspect"] = 2; }, "aspect_ratio"},
+      // No 2-sphere chain in [1, 1.05] stands apart (aspect_bounds.h: from a ≈ 1.057).
+      {[](nlohmann::json& a) { a["max"] = 1.05, a["start"] = 1.02; },
+       "aspect_ratio' [min, max] = [1, 1.05] holds no grain of 2 spheres: it must overlap [1.05"},
   };
   for (const Case& c : cases) {
     nlohmann::json doc = base;
