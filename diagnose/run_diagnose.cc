@@ -28,35 +28,41 @@ bool ChooseEffects(const std::vector<std::string>& keys, std::vector<const Effec
   return true;
 }
 
-// Whether the study fits the property of the pair (subject material, one of `others`).
-bool Fits(const workflow::StudyFile& study, calibrate::PairProperty property,
-          const std::string& material, const std::vector<std::string>& others) {
+// The index of the study's parameter that fits the property of the pair (subject material, one
+// of `others`); −1 when none does.
+int Fits(const workflow::StudyFile& study, calibrate::PairProperty property,
+         const std::string& material, const std::vector<std::string>& others) {
   const core::Scene& model = study.experiment().model;
   const int m = model.MaterialIndex(material);
-  for (const calibrate::Parameter& p : study.space.parameters) {
+  const std::vector<calibrate::Parameter>& parameters = study.space.parameters;
+  for (size_t j = 0; j < parameters.size(); ++j) {
+    const calibrate::Parameter& p = parameters[j];
     if (p.property != property || p.curve >= 0) continue;
     for (const std::string& other : others) {
       const int o = model.MaterialIndex(other);
       if ((p.material_i == m && p.material_j == o) || (p.material_i == o && p.material_j == m))
-        return true;
+        return static_cast<int>(j);
     }
   }
-  return false;
+  return -1;
 }
 
 // A candidate that shifts a property the study already fits is a copy of a fitted parameter:
-// guarded like the control, never named (docs/diagnose/ranking.md).
-bool CopiesFittedParameter(const std::string& key, const workflow::StudyFile& study,
-                           const EffectContext& c) {
+// guarded like the control, never named (docs/diagnose/ranking.md). The index of the parameter
+// it copies (−1: none; the sliding-friction control is a control even when the study does not
+// fit μs).
+int CopiedParameter(const std::string& key, const workflow::StudyFile& study,
+                    const EffectContext& c) {
   using calibrate::PairProperty;
-  if (key == "sliding_friction_control") return true;
+  if (key == "sliding_friction_control")
+    return Fits(study, PairProperty::kSlidingFriction, c.material, {c.material});
   if (key == "rolling_resistance")
     return Fits(study, PairProperty::kRollingFriction, c.material, {c.material});
   if (key == "jkr_adhesion")
     return Fits(study, PairProperty::kInterfacialEnergy, c.material, {c.material});
   if (key == "wall_friction")
     return Fits(study, PairProperty::kSlidingFriction, c.material, c.wall_materials);
-  return false;
+  return -1;
 }
 
 DiagnosisRunInfo RunInfo(const DiagnoseCommandOptions& o, const workflow::StudyFile& study,
@@ -80,6 +86,8 @@ DiagnosisRunInfo RunInfo(const DiagnoseCommandOptions& o, const workflow::StudyF
   if (!d.base.base_unit.empty()) info.base_before_si = study.space.FromUnit(d.base.base_unit);
   if (!d.final_point.base_unit.empty())
     info.base_after_si = study.space.FromUnit(d.final_point.base_unit);
+  if (!d.bound_effect_base_unit.empty())
+    info.bound_effect_base_si = study.space.FromUnit(d.bound_effect_base_unit);
   info.journal_error = m.journal_error();
   return info;
 }
@@ -110,9 +118,11 @@ int RunDiagnose(const DiagnoseCommandOptions& o, std::ostream& log) {
   if (writer && !LockOutputDirectory(o.out_dir, "demcal diagnose " + o.study_path, &lock, &error))
     return log << "error: --out: " << error << "\n", kExitInvalidInput;
   std::vector<CandidateEffect> candidates;
-  for (const Effect* e : effects)
+  for (const Effect* e : effects) {
+    const int copies = CopiedParameter(e->Key(), study, context);
     candidates.push_back({e->Key(), e->Description(), e->Parameters(context),
-                          CopiesFittedParameter(e->Key(), study, context)});
+                          copies >= 0 || e->Key() == "sliding_friction_control", copies});
+  }
   StudyModelOptions mo{o.out_dir, o.quick, o.threads, o.max_evaluations, o.quiet ? nullptr : &log};
   std::unique_ptr<StudyModel> model = StudyModel::Create(study, effects, context, mo, &error);
   if (!model) return log << "error: " << error << "\n", kExitInvalidInput;

@@ -1,11 +1,13 @@
 #include "diagnose/loop/base_fit.h"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "diagnose/gap/gap_significance.h"
 #include "diagnose/loop/fit_state.h"
+#include "diagnose/ranking/evidence.h"
 
 namespace demcal::diagnose {
 
@@ -16,21 +18,32 @@ bool SettledTermination(const std::string& termination) {
 
 namespace {
 
-double Chi2(const std::vector<Observation>& observations, const Prediction& p,
-            double floor_factor) {
-  double chi2 = 0;
-  for (const Observation& o : WithPrediction(observations, p, floor_factor))
-    chi2 += o.Residual() * o.Residual();
-  return chi2;
+// The fit's χ² and its standard deviation due to the simulation noise of the prediction's means
+// (Chi2NoiseSd, evidence.h, with the fixed floor only: φ = 0).
+struct NoisyChi2 {
+  double chi2 = INFINITY, noise_sd = 0;
+};
+
+NoisyChi2 Chi2(const std::vector<Observation>& observations, const Prediction& p,
+               double floor_factor) {
+  if (!p.ok) return {};
+  const std::vector<Observation> at = WithPrediction(observations, p, floor_factor);
+  Eigen::VectorXd r(at.size()), u(at.size());
+  for (size_t i = 0; i < at.size(); ++i) r(i) = at[i].Residual(), u(i) = at[i].sem / at[i].Sigma();
+  return {r.squaredNorm(), Chi2NoiseSd(r, u, Eigen::VectorXd::Zero(r.size()), 0)};
 }
 
 }  // namespace
+
+double StagnationMargin(double noise_sd_before, double noise_sd_after) {
+  return std::max(1.0, kNoiseSds * std::hypot(noise_sd_before, noise_sd_after));
+}
 
 BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observations,
                    double floor_factor, double significance,
                    const std::function<void(const std::string&)>& progress) {
   BaseFit b;
-  double previous = INFINITY;
+  NoisyChi2 previous;
   for (b.budget_scale = 1;; b.budget_scale *= 2) {
     b.base = model.CalibrateBase(b.budget_scale);
     if (!b.base.ok || b.base.settled) break;
@@ -43,16 +56,19 @@ BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observat
       b.within_noise = true;
       break;
     }
-    // Stagnation: twice the budget lowered the best χ² by less than 1 (one standard deviation
-    // of a fitted parameter, the profile-likelihood unit): the search has settled where it is,
-    // even if a noisy objective never meets the optimiser's own tolerance.
-    const double chi2 =
-        b.base.prediction.ok ? Chi2(observations, b.base.prediction, floor_factor) : INFINITY;
-    if (chi2 > previous - 1) {
+    // Stagnation (StagnationMargin): twice the budget lowered the best χ² by less than one
+    // standard deviation of a fitted parameter, or by less than the two fits' simulation noise
+    // allows: the search has settled where it is, even if a noisy objective never meets the
+    // optimiser's own tolerance.
+    const NoisyChi2 now = Chi2(observations, b.base.prediction, floor_factor);
+    b.chi2_rounds.push_back(now.chi2);
+    if (std::isfinite(previous.chi2) &&
+        previous.chi2 - now.chi2 < StagnationMargin(previous.noise_sd, now.noise_sd)) {
       b.base.settled = b.stagnated = true;
+      b.stagnation_margin = StagnationMargin(previous.noise_sd, now.noise_sd);
       break;
     }
-    previous = chi2;
+    previous = now;
     if (b.budget_scale >= kMaxBaseBudgetScale) break;
     if (progress)
       progress("the base calibration ended on its budget (" + b.base.termination + ", " +
@@ -64,7 +80,11 @@ BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observat
     << " evaluations"
     << (b.budget_scale > 1 ? " (" + std::to_string(b.budget_scale) + "x the study's budget)" : "");
   if (!b.base.ok) return b.summary = s.str(), b;
-  if (b.stagnated) s << ": settled, twice the budget lowered chi2 by less than 1";
+  if (b.stagnated)
+    s << ": settled, twice the budget lowered chi2 by less than " << b.stagnation_margin
+      << " (" << (b.stagnation_margin > 1 ? "the simulation noise of the two fits' chi2"
+                                          : "one standard deviation of a fitted parameter")
+      << ")";
   if (!b.base.settled)
     s << ": not settled by the calibration's own criterion"
       << (b.within_noise ? ", but within noise there (more budget could only lower chi2)" : "");
@@ -84,6 +104,7 @@ BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observat
     const std::string name = j < static_cast<int>(names.size()) ? names[j]
                                                                 : "parameter " + std::to_string(j);
     b.at_bound.push_back(name + " at its " + (u <= 1e-9 ? "lower" : "upper") + " bound");
+    b.bounds.push_back({j, u <= 1e-9});
   }
   for (const std::string& a : b.at_bound) s << "; " << a;
   if (p > 0) {

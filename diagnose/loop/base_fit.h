@@ -4,9 +4,9 @@
 // own criterion (calibrate/termination.h: within_noise, converged, out_of_range) it is run again
 // with twice the budget, then four times (kMaxBaseBudgetScale) — the journal reads back the runs
 // already made, so each extension costs only its new candidates. It also counts as settled when
-// twice the budget lowered the best χ² by less than 1 (stagnation: a noisy DEM objective may
-// never meet the optimiser's tolerance, yet more evaluations no longer move the fit by one
-// standard deviation of a fitted parameter). A base within noise (no gap at the significance) is
+// twice the budget lowered the best fit's χ² by less than StagnationMargin (below: a noisy DEM
+// objective may never meet the optimiser's tolerance, yet more evaluations no longer move the
+// fit by more than its own noise). A base within noise (no gap at the significance) is
 // not extended: more budget could only lower its χ², and "no missing effect" stands. A fit that
 // has not settled then
 // is reported as such and no effect is ranked on it: an unsettled base leaves a gap the
@@ -33,16 +33,36 @@ namespace demcal::diagnose {
 // doubling at most doubles the base calibration's runs), not a statistical threshold.
 inline constexpr int kMaxBaseBudgetScale = 4;
 
+// Stagnation: the drop of the best fit's χ² from one budget to twice it that still counts as no
+// progress, max(1, kNoiseSds·√(sd_before² + sd_after²)). 1 is one standard deviation of a
+// fitted parameter (the profile-likelihood unit). sd is each fit's χ² noise from its simulated
+// means' standard errors (Chi2NoiseSd, evidence.h): on an objective whose simulation noise moves
+// χ² by more than 1, the best of twice as many noisy candidates is lower by the luck of its
+// draws alone (the minimum of more draws), so a drop within two standard deviations of the
+// difference is not evidence that the search still moves — the same kNoiseSds the ranking uses
+// to tell two simulated refits apart.
+double StagnationMargin(double noise_sd_before, double noise_sd_after);
+
+// A base parameter fitted onto a bound of the study's range: its coordinate and which bound.
+struct BaseBound {
+  int coordinate = 0;
+  bool lower = true;
+};
+
 struct BaseFit {
   BaseCalibration base;
   int budget_scale = 1;       // the study's budget times this was used
   bool within_noise = false;  // not settled, not extended: no gap at this fit
-  bool stagnated = false;     // settled because twice the budget lowered χ² by less than 1
+  bool stagnated = false;     // settled because twice the budget lowered χ² by less than
+                              // stagnation_margin (StagnationMargin)
+  double stagnation_margin = 0;
+  std::vector<double> chi2_rounds;  // the best fit's χ² of every unsettled round, in order
   calibrate::IdentifiabilityReport identifiability;
   // Base parameters whose fit ended on a bound of the study's range: "mu_s_BP_BP at its lower
   // bound". The data may ask for a value beyond the range, and an effect that moves the
   // observables as that parameter does can be absorbed there, so a verdict on this fit says so.
   std::vector<std::string> at_bound;
+  std::vector<BaseBound> bounds;  // the same parameters, as coordinates
   std::string summary;  // in words: settled or not, with which budget, what is undetermined
 };
 

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "diagnose/loop/base_fit.h"
+#include "diagnose/loop/bound_step.h"
 #include "diagnose/loop/candidate_step.h"
 #include "diagnose/loop/fit_state.h"
 #include "diagnose/ranking/discrepancy_floor.h"
@@ -137,7 +138,9 @@ void Finish(const std::vector<Observation>& observations, const FitState& fit,
   } else if (d->termination == DiagnosisTermination::kNoMissingEffect) {
     m << "no missing effect found: the base model fits within noise (" << d->gap_before.summary
       << ")";
-    if (!d->base_at_bound.empty()) {
+    if (!d->bound_note.empty()) {
+      m << "; but the base fit ends on a bound: " << d->bound_note;
+    } else if (!d->base_at_bound.empty()) {
       m << "; but the base fit ends on a bound (";
       for (size_t k = 0; k < d->base_at_bound.size(); ++k)
         m << (k ? ", " : "") << d->base_at_bound[k];
@@ -148,6 +151,9 @@ void Finish(const std::vector<Observation>& observations, const FitState& fit,
   } else if (d->termination == DiagnosisTermination::kEffectFound) {
     m << "missing effect: " << Signed(fit.point, candidates) << "; after adding it "
       << d->gap_after.summary;
+  } else if (d->termination == DiagnosisTermination::kNotToldApart &&
+             d->bound.verdict == BoundVerdict::kNotToldApart) {
+    m << "not told apart: " << d->bound_note << "; " << d->separating.description;
   } else if (d->termination == DiagnosisTermination::kNotToldApart) {
     m << "not told apart: " << TieText(*d, candidates) << "; " << d->separating.description;
   } else if (d->termination == DiagnosisTermination::kGapRemains) {
@@ -178,6 +184,9 @@ void Finish(const std::vector<Observation>& observations, const FitState& fit,
       << ", and no effect of the library explains more than that floor "
       << "allows (gap not explained by the library: " << d->gap_before.summary << ")";
   }
+  if (!d->bound_note.empty() && d->termination != DiagnosisTermination::kNoMissingEffect &&
+      d->bound.verdict != BoundVerdict::kNotToldApart)
+    m << "; the base fit ended on a bound: " << d->bound_note;
   d->message = m.str();
 }
 
@@ -245,18 +254,44 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
     d.termination = DiagnosisTermination::kBaseUnsettled;
     gap = false;
   }
-  while (gap && static_cast<int>(d.named.size()) < options.max_effects) {
+  // A base within noise on a bound of its range is still compared with the effects that would
+  // let it back inside (bound_step.h): one step, whose verdict may replace "no missing effect".
+  const bool bound_probe = !gap && !settled.bounds.empty() &&
+                           d.termination == DiagnosisTermination::kNoMissingEffect;
+  while ((gap || (bound_probe && d.steps.empty())) &&
+         static_cast<int>(d.named.size()) < options.max_effects) {
     std::vector<int> remaining;
     for (int c = 0; c < static_cast<int>(candidates.size()); ++c)
       if (std::find(d.named.begin(), d.named.end(), c) == d.named.end()) remaining.push_back(c);
     if (remaining.empty()) break;
     const auto step_start = Clock::now();
-    StepOutcome s =
-        RunCandidateStep(model, observations, candidates, remaining, fit, options, progress);
+    const bool first = d.steps.empty();
+    StepOutcome s = RunCandidateStep(model, observations, candidates, remaining, fit, options,
+                                     progress, first ? settled.bounds : std::vector<BaseBound>{});
     s.step.wall_time_s = std::chrono::duration<double>(Clock::now() - step_start).count();
     d.phases.insert(d.phases.end(), s.phases.begin(), s.phases.end());
     d.steps.push_back(s.step);
     if (progress) progress("ranking: " + s.step.ranking.message);
+    if (first && !settled.bounds.empty()) {
+      const BoundCheck b = CheckBound(s, fit, observations, candidates, settled.bounds,
+                                      model.BaseParameterNames(), options);
+      d.bound = b.judgement;
+      d.bound_effect = b.effect_candidate >= 0 ? candidates[b.effect_candidate].key : "";
+      d.bound_effect_value = b.effect_value;
+      d.bound_effect_base_unit = b.effect_base_unit;
+      d.bound_effect_chi2_per_dof = b.effect_chi2_per_dof;
+      d.bound_parameters = b.parameters;
+      d.bound_note = b.text;
+      if (progress) progress("base on a bound: " + b.text);
+      if (b.judgement.verdict == BoundVerdict::kNotToldApart) {
+        d.termination = DiagnosisTermination::kNotToldApart;
+        d.not_told_apart = {b.effect_candidate};
+        d.separating = b.separating;
+        break;
+      }
+      // Without a gap only an effect that rules the bound out goes on to be named.
+      if (!gap && b.judgement.verdict != BoundVerdict::kEffect) break;
+    }
     if (s.step.ranking.control_first) {
       d.termination = d.named.empty() ? DiagnosisTermination::kModelFormOffset
                                       : DiagnosisTermination::kGapRemains;

@@ -24,6 +24,10 @@
 //     missing effect", never the control. A winner (and its tie, if any) that only re-values
 //     a parameter the base model already has, by no more than its assumed value
 //     (revaluation.h): "model-form offset" with the re-valuation stated, not named.
+// A base fitted onto a bound of its range (gap or not) gets the first step with the controls
+// copying that parameter refitted and the best effects refitted again with it held inside
+// (candidate_step.h); bound_step.h judges: an effect that rules the bound out goes on, one
+// as good as the bound gives "not told apart: the parameter beyond its range or the effect".
 // Frugal by construction: one base calibration, one simulated point per candidate and
 // iteration, two plus at most extra_refits × (base parameters + 3) per refitted candidate.
 //
@@ -39,6 +43,8 @@
 #include "diagnose/gap/gap_significance.h"
 #include "diagnose/loop/diagnosis_termination.h"
 #include "diagnose/loop/forward_model.h"
+#include "diagnose/ranking/bound_alternative.h"
+#include "diagnose/ranking/observables_carried.h"
 #include "diagnose/ranking/ranking.h"
 #include "diagnose/ranking/separating_measurement.h"
 
@@ -53,14 +59,6 @@ struct DiagnoseOptions {
   int max_effects = 2;   // effects added at most
   int extra_refits = 4;  // re-centred refit points per refitted candidate beyond two
   bool IsValid(std::string* error) const;
-};
-
-// How much each observable carried the choice: Σ over its rows of r_runner_up² − r_winner²
-// (positive: it favours the winner) and of r_base² − r_winner² (what the winner fixed there).
-struct ObservableShare {
-  std::string observable;
-  double against_runner_up = 0;
-  double against_base = 0;
 };
 
 struct DiagnosisStep {
@@ -90,6 +88,14 @@ struct Diagnosis {
   calibrate::IdentifiabilityReport base_identifiability;
   std::string base_summary;         // settled or not, budget, undetermined base parameters
   std::vector<std::string> base_at_bound;  // base parameters fitted onto a bound (base_fit.h)
+  // A base fitted onto a bound, against the effects that let it back inside (bound_step.h):
+  // the judgement (entry indices of the first step; kNotJudged when nothing is on a bound), the
+  // effect judged, "mu_s_BP_BP beyond its lower bound", and the verdict's sentence.
+  BoundJudgement bound;
+  std::string bound_effect, bound_parameters, bound_note;
+  double bound_effect_value = 0;
+  std::vector<double> bound_effect_base_unit;  // the base parameters of that effect's refit
+  double bound_effect_chi2_per_dof = 0;
   std::vector<Observation> before;  // at the base calibration
   GapReport gap_before;
   // The discrepancy floor estimated from the residuals (discrepancy_floor.h), in single-run

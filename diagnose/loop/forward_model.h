@@ -23,6 +23,10 @@ struct CandidateEffect {
   // A copy of a fitted base parameter (the sliding-friction control; rolling resistance when the
   // study fits the rolling friction): guarded, never named (ranking.h).
   bool control = false;
+  // The index of the fitted base parameter a control copies (−1: none, or not known): the
+  // control then stands for that parameter beyond its range when the base fit ends on its
+  // bound (bound_alternative.h).
+  int copies = -1;
 };
 
 struct ActiveEffect {

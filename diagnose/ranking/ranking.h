@@ -37,6 +37,8 @@ struct RankingEntry {
   double chi2_per_dof = 0;     // chi2 / (n − fitted − k)
   double signature_match = 0;  // linear_refit.h
   bool control = false;        // a copy of a fitted base parameter (CandidateEffect::control)
+  std::vector<double> base_unit;  // the simulated refit's base parameters (unit cube); empty
+                                  // for a linearised refit
   std::string note;            // e.g. "refit failed: ..." or "redundant with the fitted parameters"
 };
 

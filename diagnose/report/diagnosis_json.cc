@@ -136,6 +136,28 @@ Json StepJson(const DiagnosisRunInfo& info, const std::vector<Observation>& obs,
           {"wall_time_s", s.wall_time_s}};
 }
 
+// A base fitted onto a bound against the effects that let it back inside (bound_step.h);
+// null when no base parameter ended on a bound or no step compared them.
+Json BoundJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
+  if (d.bound.verdict == BoundVerdict::kNotJudged) return nullptr;
+  Json base = Json::array();
+  for (size_t k = 0; k < info.base_names.size() && k < info.bound_effect_base_si.size(); ++k)
+    base.push_back({{"name", info.base_names[k]}, {"value", Number(info.bound_effect_base_si[k])}});
+  const bool control = d.bound.alternative >= 0 && !d.steps.empty();
+  return {{"verdict", BoundVerdictName(d.bound.verdict)},
+          {"parameters", d.bound_parameters},
+          {"effect", d.bound_effect.empty() ? Json(nullptr) : Json(d.bound_effect)},
+          {"effect_value", d.bound_effect.empty() ? Json(nullptr) : Number(d.bound_effect_value)},
+          {"effect_base_parameters", base},
+          {"effect_chi2_per_dof",
+           d.bound_effect.empty() ? Json(nullptr) : Number(d.bound_effect_chi2_per_dof)},
+          {"alternative",
+           control ? d.steps.front().entries[d.bound.alternative].key : "base at its bound"},
+          {"bic_gap", Number(d.bound.bic_gap)},
+          {"tie_margin", Number(d.bound.within)},
+          {"note", d.bound_note}};
+}
+
 }  // namespace
 
 Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
@@ -184,6 +206,7 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
       d.steps.empty() ? Json::array() : StepJson(info, d.before, d.steps.front())["candidates"];
   Json tie = Json::array();
   for (int c : d.not_told_apart) tie.push_back(info.candidates[c].key);
+  if (d.bound.verdict == BoundVerdict::kNotToldApart) tie.push_back(d.bound_parameters);
   j["not_told_apart"] = tie;
   j["separating_measurement"] =
       d.not_told_apart.empty() ? Json(nullptr) : SeparatingJson(d.before, d.separating);
@@ -211,7 +234,8 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
                            {"identifiable", d.base_identifiability.Identifiable()},
                            {"singular_values", singular},
                            {"undetermined", undetermined},
-                           {"at_bound", d.base_at_bound}};
+                           {"at_bound", d.base_at_bound},
+                           {"bound_alternative", BoundJson(info, d)}};
   Json phases = Json::array();
   for (const PhaseTime& p : d.phases)
     phases.push_back(

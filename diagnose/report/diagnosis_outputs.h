@@ -38,6 +38,7 @@ struct DiagnosisRunInfo {
   std::vector<CandidateEffect> candidates;
   std::vector<std::string> base_names;  // study parameters
   std::vector<double> base_before_si, base_after_si;
+  std::vector<double> bound_effect_base_si;  // the base at the bound judgement's effect refit
   std::string journal_error;
 };
 

@@ -1,0 +1,204 @@
+#include "diagnose/loop/refit_work.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "calibrate/sensitivity_refinement.h"
+
+namespace demcal::diagnose::refits {
+
+Eigen::VectorXd ToVector(const std::vector<double>& v) {
+  return Eigen::Map<const Eigen::VectorXd>(v.data(), v.size());
+}
+
+Frame MakeFrame(const std::vector<Observation>& observations, const FitState& fit,
+                const DiagnoseOptions& o) {
+  Frame f{&observations};
+  const std::vector<Observation> at =
+      WithPrediction(observations, fit.prediction, o.discrepancy_floor);
+  f.sigma = Sigmas(at);
+  f.q = ScatterPerSigma(at);
+  f.r0 = StandardisedResiduals(observations, fit.prediction.mean, f.sigma);
+  f.J = f.sigma.cwiseInverse().asDiagonal() * fit.jacobian;
+  const std::vector<double> c = fit.Coordinates();
+  for (size_t j = 0; j < c.size(); ++j) {
+    f.delta_lower.push_back(fit.lower[j] - c[j]);
+    f.delta_upper.push_back(fit.upper[j] - c[j]);
+  }
+  f.fitted = fit.Fitted();
+  f.chi2_base = f.r0.squaredNorm();
+  f.significance = o.significance;
+  return f;
+}
+
+LinearRefitResult Refit(const Frame& f, const EffectParameter& p,
+                        const Eigen::VectorXd& signature) {
+  const Eigen::MatrixXd S = f.sigma.cwiseInverse().cwiseProduct(signature);
+  return LinearRefit(f.r0, f.J, S, {p.lower}, {p.upper}, f.delta_lower, f.delta_upper);
+}
+
+void Fill(const Frame& f, const Work& w, const std::vector<CandidateEffect>& candidates,
+          const Eigen::VectorXd& r, RankingEntry* e) {
+  const int k = static_cast<int>(candidates[w.candidate].parameters.size());
+  e->candidate = w.candidate;
+  e->key = candidates[w.candidate].key;
+  e->chi2_linear = w.refit.chi2;
+  e->linear = EvidenceWithFloor(f.r0, w.refit.residuals, f.q, k, f.fitted, f.per_candidate);
+  e->simulated = w.simulated;
+  e->chi2 = w.simulated ? w.best_chi2 : w.refit.chi2;
+  e->evidence = EvidenceWithFloor(f.r0, r, f.q, k, f.fitted, f.per_candidate);
+  // The simulated refit's χ² moves with its points' simulation noise (evidence.h, ToldApart):
+  // the ranking does not tell two candidates apart by less than that.
+  if (w.simulated && w.best_prediction.sem.size() == static_cast<size_t>(f.n())) {
+    const Eigen::VectorXd u = ToVector(w.best_prediction.sem).cwiseQuotient(f.sigma);
+    e->evidence.chi2_noise_sd = Chi2NoiseSd(r, u, f.q, e->evidence.floor);
+  }
+  e->chi2_per_dof = e->chi2 / std::max(1, f.n() - f.fitted - k);
+  e->control = candidates[w.candidate].control;
+  if (w.simulated) e->base_unit = w.best_point.base_unit;
+  e->signature_match = SignatureMatch(f.r0, f.J, f.sigma.cwiseInverse().cwiseProduct(w.signature));
+  if (w.best_point.effects.empty())
+    e->values = {w.refit.t(0)};
+  else
+    e->values = w.best_point.effects.back().values;
+}
+
+void SimulateRefits(ForwardModel& model, const Frame& f, const FitState& fit,
+                    const std::vector<CandidateEffect>& candidates, std::vector<Work*>& work) {
+  std::vector<ModelPoint> points;
+  for (Work* w : work) {
+    const ActiveEffect added{w->candidate, {w->refit.t(0)}};
+    points.push_back(fit.Step(w->refit.delta, &added));
+  }
+  const std::vector<Prediction> got = model.Evaluate(points);
+  for (size_t i = 0; i < work.size(); ++i) {
+    Work& w = *work[i];
+    if (!got[i].ok) continue;
+    const double chi2 = StandardisedResiduals(*f.observations, got[i].mean, f.sigma).squaredNorm();
+    if (!w.simulated || chi2 < w.best_chi2) {
+      w.best_chi2 = chi2, w.best_point = points[i], w.best_prediction = got[i], w.simulated = true;
+    }
+    const double t = w.refit.t(0);
+    if (t != 0) {
+      const Eigen::VectorXd moved =
+          ToVector(got[i].mean) - ToVector(fit.prediction.mean) - fit.jacobian * w.refit.delta;
+      w.signature = moved / t;
+    }
+    w.refit = Refit(f, candidates[w.candidate].parameters[0], w.signature);
+  }
+}
+
+void Record(const Frame& f, const Work& w, const std::vector<CandidateEffect>& candidates, int i,
+            DiagnosisStep* step) {
+  RankingEntry& e = step->entries[i];
+  const Eigen::VectorXd r =
+      w.simulated ? StandardisedResiduals(*f.observations, w.best_prediction.mean, f.sigma)
+                  : w.refit.residuals;
+  Fill(f, w, candidates, r, &e);
+  if (!w.probe_ok)
+    e.note = "signature run failed: " + w.probe_status;
+  else if (e.signature_match == 0)
+    e.note = "redundant with the fitted parameters";
+  step->refit_residuals[i].assign(r.data(), r.data() + r.size());
+}
+
+void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
+                     const std::vector<CandidateEffect>& candidates,
+                     const std::vector<Work*>& work) {
+  const size_t p = fit.point.base_unit.size();
+  std::vector<ModelPoint> probes;
+  std::vector<std::vector<double>> steps(work.size(), std::vector<double>(p + 1));
+  for (size_t i = 0; i < work.size(); ++i) {
+    double noise_max = 0;
+    for (int k = 0; k < f.n(); ++k)
+      noise_max = std::max(noise_max, work[i]->best_prediction.sem[k] / f.sigma(k));
+    const double h = calibrate::FiniteDifferenceStep(noise_max);
+    for (size_t j = 0; j < p; ++j) {
+      ModelPoint q = work[i]->best_point;
+      steps[i][j] = q.base_unit[j] + h > fit.upper[j] ? -h : h;
+      q.base_unit[j] += steps[i][j];
+      probes.push_back(q);
+    }
+    const EffectParameter& e = candidates[work[i]->candidate].parameters[0];
+    ModelPoint q = work[i]->best_point;
+    double& t = q.effects.back().values[0];
+    steps[i][p] =
+        t + h * (e.upper - e.lower) > e.upper ? -h * (e.upper - e.lower) : h * (e.upper - e.lower);
+    t += steps[i][p];
+    probes.push_back(q);
+  }
+  const std::vector<Prediction> probed = model.Evaluate(probes);
+  std::vector<std::vector<ModelPoint>> tries(work.size());
+  for (size_t i = 0; i < work.size(); ++i) {
+    Work& w = *work[i];
+    Eigen::MatrixXd J = fit.jacobian;  // the added effects' columns are kept
+    auto slope = [&](size_t j) {
+      return Eigen::VectorXd(
+          (ToVector(probed[i * (p + 1) + j].mean) - ToVector(w.best_prediction.mean)) /
+          steps[i][j]);
+    };
+    for (size_t j = 0; j < p; ++j)
+      if (probed[i * (p + 1) + j].ok) J.col(j) = slope(j);
+    if (probed[i * (p + 1) + p].ok) w.signature = slope(p);
+    w.jacobian = J;
+    const EffectParameter& e = candidates[w.candidate].parameters[0];
+    const double t_now = w.best_point.effects.back().values[0];
+    FitState here = fit;
+    here.point = w.best_point;
+    here.point.effects.pop_back();
+    const std::vector<double> c = here.Coordinates();
+    std::vector<double> lo, hi;
+    for (size_t j = 0; j < c.size(); ++j)
+      lo.push_back(fit.lower[j] - c[j]), hi.push_back(fit.upper[j] - c[j]);
+    const Eigen::VectorXd r =
+        StandardisedResiduals(*f.observations, w.best_prediction.mean, f.sigma);
+    const Eigen::MatrixXd Js = f.sigma.cwiseInverse().asDiagonal() * J;
+    const Eigen::MatrixXd S = f.sigma.cwiseInverse().cwiseProduct(w.signature);
+    const LinearRefitResult step =
+        LinearRefit(r, Js, S, {e.lower - t_now}, {e.upper - t_now}, lo, hi);
+    for (double scale : {1.0, 0.5}) {  // the Gauss–Newton step, then half of it (below)
+      const ActiveEffect added{w.candidate, {t_now + scale * step.t(0)}};
+      tries[i].push_back(here.Step(scale * step.delta, &added));
+    }
+  }
+  // Damped Gauss–Newton: where the full step does not lower χ² (noisy or curved sensitivities
+  // overshoot), half of it is simulated too.
+  std::vector<size_t> pending(work.size());
+  std::iota(pending.begin(), pending.end(), 0);
+  for (int attempt = 0; attempt < 2 && !pending.empty(); ++attempt) {
+    std::vector<ModelPoint> points;
+    for (size_t i : pending) points.push_back(tries[i][attempt]);
+    const std::vector<Prediction> got = model.Evaluate(points);
+    std::vector<size_t> failed;
+    for (size_t k = 0; k < pending.size(); ++k) {
+      Work& w = *work[pending[k]];
+      const double chi2 =
+          got[k].ok ? StandardisedResiduals(*f.observations, got[k].mean, f.sigma).squaredNorm()
+                    : INFINITY;
+      if (chi2 < w.best_chi2)
+        w.best_chi2 = chi2, w.best_point = points[k], w.best_prediction = got[k];
+      else
+        failed.push_back(pending[k]);
+    }
+    pending.swap(failed);
+  }
+}
+
+void RefineRefits(ForwardModel& model, const Frame& f, const FitState& fit,
+                  const std::vector<CandidateEffect>& candidates, int iterations,
+                  std::vector<Work*> active) {
+  std::erase_if(active,
+                [](const Work* w) { return !w->simulated; });  // no refit point to start from
+  for (int k = 0; k < iterations && !active.empty(); ++k) {
+    std::vector<double> before;
+    for (const Work* w : active) before.push_back(w->best_chi2);
+    RecentredRefits(model, f, fit, candidates, active);
+    std::vector<Work*> improving;
+    for (size_t i = 0; i < active.size(); ++i)
+      if (active[i]->best_chi2 < before[i] - 1) improving.push_back(active[i]);
+    active.swap(improving);
+  }
+}
+
+}  // namespace demcal::diagnose::refits

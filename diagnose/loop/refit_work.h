@@ -1,0 +1,91 @@
+#pragma once
+// The refit machinery of a candidate step (candidate_step.h): the step's frame (fixed sigmas,
+// residuals at the fit, standardised sensitivities), a candidate under way (its signature and
+// refits), the simulated Gauss–Newton refits, the re-centred refit points and the ranking entry
+// each candidate becomes. Internal to the loop (diagnose/loop/); the why of each step is at its
+// declaration below and in docs/diagnose.md "What it does".
+//
+// Thread-safety: runs on the calling thread; the model parallelises.
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "diagnose/loop/diagnosis.h"
+#include "diagnose/loop/fit_state.h"
+#include "diagnose/ranking/linear_refit.h"
+
+namespace demcal::diagnose::refits {
+
+// What a step works with: the fixed sigmas, the residuals at the fit and the standardised J.
+struct Frame {
+  const std::vector<Observation>* observations;
+  Eigen::VectorXd sigma, r0;
+  Eigen::VectorXd q;  // single-run scatter per sigma (the estimated floor's shape)
+  Eigen::MatrixXd J;
+  std::vector<double> delta_lower, delta_upper;
+  int fitted = 0;
+  double chi2_base = 0;
+  double significance = 0.01;
+  double per_candidate = 0.01;  // significance over the candidates of the step (Bonferroni)
+  int n() const { return static_cast<int>(r0.size()); }
+};
+
+// A candidate under way: its raw signature per unit parameter, its refits so far.
+struct Work {
+  int candidate = 0;
+  Eigen::VectorXd signature;  // raw units per unit of the parameter
+  Eigen::MatrixXd
+      jacobian;  // the base sensitivities re-estimated near its refit (empty: the fit's)
+  LinearRefitResult refit;
+  ModelPoint best_point;
+  Prediction best_prediction;
+  double best_chi2 = 0;
+  bool simulated = false;
+  bool probe_ok = true;
+  std::string probe_status;
+};
+
+Eigen::VectorXd ToVector(const std::vector<double>& v);
+
+Frame MakeFrame(const std::vector<Observation>& observations, const FitState& fit,
+                const DiagnoseOptions& o);
+
+LinearRefitResult Refit(const Frame& f, const EffectParameter& p, const Eigen::VectorXd& signature);
+
+// The evidence with the discrepancy floor in the variance (evidence.h), at the significance
+// over the step's candidates: the step names at most one of K, so each is held to α/K and a
+// model that fits names none with probability ≥ 1 − α (Bonferroni).
+void Fill(const Frame& f, const Work& w, const std::vector<CandidateEffect>& candidates,
+          const Eigen::VectorXd& r, RankingEntry* e);
+
+// Simulates the Gauss–Newton point of each candidate; keeps it when it beats the best so far
+// and corrects the signature by the secant through it.
+void SimulateRefits(ForwardModel& model, const Frame& f, const FitState& fit,
+                    const std::vector<CandidateEffect>& candidates, std::vector<Work*>& work);
+
+// Entry i of the step and its residuals at the refit (simulated when there is one).
+void Record(const Frame& f, const Work& w, const std::vector<CandidateEffect>& candidates, int i,
+            DiagnosisStep* step);
+
+// A refit point of each candidate from its own best point rather than from the base fit: the
+// sensitivities to the base parameters and to the effect are re-estimated there by finite
+// differences (one run each, in the unit cube the step of the calibration layer's rule for this
+// simulation noise, inward at a bound), then one Gauss–Newton step of base + effect is
+// simulated. The base fit's sensitivities can be wrong far from it (a friction whose heap angle
+// saturates at the refit point but not at the base would keep pulling the refit the wrong
+// way), and a secant signature inherits their error.
+void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
+                     const std::vector<CandidateEffect>& candidates,
+                     const std::vector<Work*>& work);
+
+// Further re-centred refit points for each candidate, while each lowers its best χ² by at least
+// 1 (a change of χ² below 1 is within one standard deviation of a fitted parameter, the
+// profile-likelihood unit, so it is noise), at most `iterations` more each. ΔBIC and the
+// likelihood ratio compare maximised likelihoods: a candidate still far from its minimum after
+// two points (a strongly nonlinear signature, a refit along a valley) would lose to one that
+// happened to converge faster.
+void RefineRefits(ForwardModel& model, const Frame& f, const FitState& fit,
+                  const std::vector<CandidateEffect>& candidates, int iterations,
+                  std::vector<Work*> active);
+
+}  // namespace demcal::diagnose::refits
