@@ -43,7 +43,7 @@ TEST_CASE("the bundled alizadeh2018 workflow loads with its paths resolved", "[u
   CHECK(w.coating.curve_form == demcal::calibrate::CurveForm::kLinear);
   CHECK(w.cohesion.gamma_J_m2 == Approx(0.086));
   CHECK(w.reference.size() >= 30);
-  CHECK(w.segregation.size_scale == 3);  // the bundled workflow's choice, docs/reproduce.md
+  CHECK(w.segregation.size_scale == 4);  // the bundled workflow's choice, docs/reproduce.md
   CHECK(ResolveWorkflowName("alizadeh2018", demcal::testing::RepoRoot().string()).ends_with(
       "datasets/alizadeh2018/workflow.json"));
   CHECK(ResolveWorkflowName("my/flow.json", "") == "my/flow.json");
