@@ -9,6 +9,8 @@
 #include <numbers>
 #include <numeric>
 
+#include "core/bodies/unit_clump.h"
+
 namespace demcal::core {
 
 bool ParticleSystem::SetSpecies(const std::vector<Species>& species, std::string* error) {
@@ -16,17 +18,9 @@ bool ParticleSystem::SetSpecies(const std::vector<Species>& species, std::string
   for (size_t s = 0; s < species.size(); ++s) {
     if (species[s].clump_shape.empty()) continue;
     std::vector<ClumpSphere> members;
-    for (const ShapeSphere& m : species[s].clump_shape) members.push_back({m.centre, m.radius});
-    ClumpTemplate raw;
     std::string why;
-    if (!BuildClumpTemplate(members, 1.0, {}, &raw, &why)) {
-      if (error) *error = "field 'species[" + std::to_string(s) + "].clump': " + why;
-      return false;
-    }
-    // Rescale to unit equivalent-volume diameter (volume π/6, unit density).
-    const double k = 1.0 / raw.EquivalentVolumeDiameter();
-    for (ClumpSphere& m : members) m.centre_m *= k, m.radius_m *= k;
-    if (!BuildClumpTemplate(members, 1.0, {}, &shapes[s], &why)) {
+    if (!UnitDiameterClumpMembers(species[s].clump_shape, &members, &why) ||
+        !BuildClumpTemplate(members, 1.0, {}, &shapes[s], &why)) {
       if (error) *error = "field 'species[" + std::to_string(s) + "].clump': " + why;
       return false;
     }

@@ -6,7 +6,7 @@
 #include <numbers>
 #include <variant>
 
-#include "core/bodies/clump_template.h"
+#include "core/bodies/unit_clump.h"
 #include "core/contact/normal_model.h"
 
 namespace demcal::core {
@@ -67,20 +67,16 @@ double SphereRayleighTime(const Material& m, double radius_m) {
 
 // Smallest member radius of a species' grain per unit of its size-distribution diameter: 1/2 for
 // a sphere; for a clump, whose size is the equivalent-volume diameter, the smallest member
-// sphere's radius after the engine's normalisation (ParticleSystem::SetSpecies). A shape that
+// sphere's radius at unit size (UnitDiameterClumpMembers, as the engine places it). A shape that
 // does not build leaves 1/2: validation reports it.
 double MinMemberRadiusPerDiameter(const Species& sp) {
   if (sp.clump_shape.empty()) return 0.5;
   std::vector<ClumpSphere> members;
-  for (const ShapeSphere& m : sp.clump_shape) members.push_back({m.centre, m.radius});
-  ClumpTemplate raw;
-  std::string ignored;
-  if (!BuildClumpTemplate(members, 1.0, {}, &raw, &ignored) ||
-      !(raw.EquivalentVolumeDiameter() > 0))
-    return 0.5;
+  std::string ignored;  // a shape that makes no clump is refused where the scene is checked
+  if (!UnitDiameterClumpMembers(sp.clump_shape, &members, &ignored)) return 0.5;
   double smallest = std::numeric_limits<double>::infinity();
-  for (const ShapeSphere& m : sp.clump_shape) smallest = std::min(smallest, m.radius);
-  return smallest / raw.EquivalentVolumeDiameter();
+  for (const ClumpSphere& m : members) smallest = std::min(smallest, m.radius_m);
+  return smallest;
 }
 }  // namespace
 

@@ -1,0 +1,21 @@
+#include "core/bodies/unit_clump.h"
+
+namespace demcal::core {
+
+bool UnitDiameterClumpMembers(const std::vector<ShapeSphere>& shape,
+                              std::vector<ClumpSphere>* members, std::string* error) {
+  members->clear();
+  for (const ShapeSphere& m : shape) members->push_back({m.centre, m.radius});
+  ClumpTemplate raw;
+  if (!BuildClumpTemplate(*members, 1.0, {}, &raw, error)) return false;
+  const double d = raw.EquivalentVolumeDiameter();
+  if (!(d > 0)) {
+    if (error) *error = "the member spheres have no volume";
+    return false;
+  }
+  const double k = 1.0 / d;
+  for (ClumpSphere& m : *members) m.centre_m *= k, m.radius_m *= k;
+  return true;
+}
+
+}  // namespace demcal::core
