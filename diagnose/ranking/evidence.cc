@@ -20,17 +20,6 @@ Evidence EvidenceOf(double chi2_base, double chi2_effect, int k, int n, double s
   return e;
 }
 
-double FloorVarianceDof(const Eigen::VectorXd& q, double phi, int dof) {
-  double estimated = 0, total = 0;
-  for (Eigen::Index i = 0; i < q.size(); ++i) {
-    estimated += phi * phi * q(i) * q(i);
-    total += 1 + phi * phi * q(i) * q(i);
-  }
-  if (!(estimated > 0)) return kMaxVarianceDof;
-  const double share = estimated / total;
-  return std::min(kMaxVarianceDof, std::max(1, dof) / (share * share));
-}
-
 Evidence EvidenceWithFloor(const Eigen::VectorXd& r_base, const Eigen::VectorXd& r_effect,
                            const Eigen::VectorXd& q, int k, int fitted, double significance) {
   const int n = static_cast<int>(r_base.size());
@@ -38,8 +27,7 @@ Evidence EvidenceWithFloor(const Eigen::VectorXd& r_base, const Eigen::VectorXd&
   Evidence e;
   e.floor = EstimateFloor(r_effect, q, dof);
   e.delta_chi2 = FlooredChi2(r_base, q, e.floor) - FlooredChi2(r_effect, q, e.floor);
-  e.variance_dof = e.floor > 0 ? FloorVarianceDof(q, e.floor, dof) : 0;
-  e.lr_p_value = e.floor > 0 ? FSurvival(std::max(0.0, e.delta_chi2) / k, k, e.variance_dof)
+  e.lr_p_value = e.floor > 0 ? FSurvival(std::max(0.0, e.delta_chi2) / k, k, dof)
                              : ChiSquareSurvival(std::max(0.0, e.delta_chi2), k);
   e.penalty = k * std::log(static_cast<double>(std::max(n, 1)));
   e.delta_bic = -e.delta_chi2 + e.penalty;

@@ -15,12 +15,10 @@
 // With the discrepancy floor (discrepancy_floor.h) in the variance, EvidenceWithFloor: the floor
 // φ is estimated from the effect's own fit (n − p − k degrees of freedom: the larger model's
 // residuals, so the improvement is not counted into the floor that judges it), both fits'
-// χ² are taken with it, Δχ² = χ²_base(φ) − χ²_effect(φ). When φ > 0 part of the variance was
-// estimated and Δχ²/k is compared with F(k, ν) (the extra-sum-of-squares F test with an
-// estimated dispersion), ν the Welch–Satterthwaite degrees of freedom of that variance
-// (FloorVarianceDof below): n − p − k when the floor is all of it, growing without bound as the
-// floor's share vanishes, so that the test passes smoothly into χ²_k at φ = 0. ΔBIC = −Δχ² +
-// k·ln n with the floor in the variance.
+// χ² are taken with it, Δχ² = χ²_base(φ) − χ²_effect(φ). When φ > 0 the variance's scale was
+// estimated and Δχ²/k is compared with F(k, n − p − k) (the extra-sum-of-squares F test with an
+// estimated dispersion); when φ = 0 with χ²_k as above. ΔBIC = −Δχ² + k·ln n with the floor in
+// the variance.
 //
 // Thread-safety: pure function.
 #include <Eigen/Dense>
@@ -33,9 +31,6 @@ struct Evidence {
   double delta_bic = 0;
   bool significant = false;  // lr_p_value < significance and delta_bic < 0
   double floor = 0;          // the discrepancy floor estimated with the effect, single-run scatters
-  // Degrees of freedom of the variance the F test divides by (FloorVarianceDof); 0 when the
-  // floor is 0 and the test is χ²_k.
-  double variance_dof = 0;
   // Standard deviation of the effect fit's floored χ² due to its own simulation noise (0 when the
   // fit was not simulated): Chi2NoiseSd below.
   double chi2_noise_sd = 0;
@@ -45,19 +40,6 @@ struct Evidence {
   Eigen::VectorXd residuals, q;
   double penalty = 0;
 };
-
-// The Welch–Satterthwaite degrees of freedom (Satterthwaite 1946) of the variance
-// Σ (1 + φ² q_i²) in σ units: the known part Σ 1 (measurement, simulation standard error,
-// fixed floor) has no estimation error, the floor's part Σ φ² q_i² was estimated on `dof`
-// degrees of freedom. With f = Σ φ² q_i² / Σ (1 + φ² q_i²), the share of the variance that was
-// estimated, ν = dof / f². f = 1 gives `dof` (the whole scale estimated: the F test); f → 0
-// gives ∞ (nothing estimated: χ²_k). Without it the test jumps from χ²_k to F(k, dof) as soon as
-// φ leaves 0: the `adhesion_coating` twin's adhesion refit, with a floor of 0.32 scatters (9 %
-// of its variance), had Δχ² 16.2 judged as F(1, 10), p = 0.0024, where its variance is known to
-// within a few per cent (ν ≈ 1200, p = 6e-5). Capped at kMaxVarianceDof, where F(k, ν)·k and
-// χ²_k agree to about 1e-6 relative.
-inline constexpr double kMaxVarianceDof = 1e6;
-double FloorVarianceDof(const Eigen::VectorXd& q, double phi, int dof);
 
 Evidence EvidenceOf(double chi2_base, double chi2_effect, int k, int n, double significance);
 // r_base, r_effect: standardised residuals of the base and the effect's fit (fixed σ); q: the
