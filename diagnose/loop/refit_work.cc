@@ -161,6 +161,16 @@ void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
       const ActiveEffect added{w.candidate, {t_now + scale * step.t(0)}};
       tries[i].push_back(here.Step(scale * step.delta, &added));
     }
+    // The finite-difference probes are simulated points of base + effect as well: one that fits
+    // better than the best so far is the better refit (header, RecentredRefits). The step above
+    // was taken from the old centre, whose sensitivities they measured.
+    for (size_t j = 0; j <= p; ++j) {
+      const Prediction& got = probed[i * (p + 1) + j];
+      if (!got.ok) continue;
+      const double chi2 = StandardisedResiduals(*f.observations, got.mean, f.sigma).squaredNorm();
+      if (chi2 < w.best_chi2) w.best_chi2 = chi2, w.best_point = probes[i * (p + 1) + j],
+                              w.best_prediction = got;
+    }
   }
   // Damped Gauss–Newton: where the full step does not lower χ² (noisy or curved sensitivities
   // overshoot), half of it is simulated too.
