@@ -1,6 +1,7 @@
-// A re-centred refit keeps the best simulated point of base + effect, its finite-difference
-// probes included (refit_work.h, RecentredRefits): the likelihood ratio compares maximised
-// likelihoods, and a probe that fits better than every refit point is the better fit.
+// A refit ends on the best simulated point of base + effect, its finite-difference probes
+// included (refit_work.h, RefineRefits): the likelihood ratio compares maximised likelihoods,
+// and a probe that fits better than every refit point is the better fit. The probes do not
+// re-centre the refit points.
 #include "diagnose/loop/refit_work.h"
 
 #include <catch2/catch.hpp>
@@ -48,7 +49,7 @@ class PacketModel : public ForwardModel {
 
 }  // namespace
 
-TEST_CASE("a re-centred refit keeps a finite-difference probe that fits better", "[unit]") {
+TEST_CASE("a refit ends on a finite-difference probe that fits better", "[unit]") {
   PacketModel model;
   model.measured = {10, 20, 30, 40};
   std::vector<Observation> obs(4);
@@ -75,8 +76,10 @@ TEST_CASE("a re-centred refit keeps a finite-difference probe that fits better",
   const double h = calibrate::FiniteDifferenceStep(0.5 / std::sqrt(1.25));
   model.lucky = 0.2 + h * 2;
   const int runs = model.SimulationsRun();
-  refits::RecentredRefits(model, f, fit, {effect}, {&w});
-  REQUIRE(model.SimulationsRun() - runs == 4);  // two probes, the step and its half
+  refits::RefineRefits(model, f, fit, {effect}, 4, {&w});
+  // One round: two probes, the step and its half; the steps did not lower χ², so the points end
+  // (the probe's gain is not the points' progress).
+  REQUIRE(model.SimulationsRun() - runs == 4);
   CHECK(w.best_chi2 == Approx(4 * 0.75 * 0.75 / 1.25));
   CHECK(w.best_point.effects.back().values[0] == Approx(model.lucky));
   CHECK(w.best_point.base_unit[0] == Approx(0.5));
