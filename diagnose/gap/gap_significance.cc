@@ -47,8 +47,8 @@ std::string Summary(const GapReport& g, double significance) {
   for (const CovariateTrend& t : g.trends)
     if (g.gap_detected && t.observable != "all" &&
         t.p_value < significance / std::max(1, per_observable))
-      s << "; " << t.observable << " residuals trend along " << t.covariate << " (slope "
-        << t.slope << " +- " << t.slope_sigma << ")";
+      s << "; " << t.observable << " residuals trend along " << t.covariate << " (slope " << t.slope
+        << " +- " << t.slope_sigma << ")";
   return s.str();
 }
 

@@ -54,8 +54,7 @@ BoundJudgement JudgeBound(const std::vector<RankingEntry>& entries, const std::v
       continue;
     if (BicGap(w.evidence, e) <= -IndistinctWithin(w.evidence, e) &&
         BicGap(w.evidence, *a) <= -IndistinctWithin(w.evidence, *a) &&
-        (j.outranked_by < 0 ||
-         w.evidence.delta_bic < entries[j.outranked_by].evidence.delta_bic))
+        (j.outranked_by < 0 || w.evidence.delta_bic < entries[j.outranked_by].evidence.delta_bic))
       j.outranked_by = static_cast<int>(i);
   }
   if (j.outranked_by >= 0) j.verdict = BoundVerdict::kOutranked;

@@ -57,10 +57,10 @@ std::string BoundVerdictName(BoundVerdict v);  // "not_told_apart", "effect", ..
 
 struct BoundJudgement {
   BoundVerdict verdict = BoundVerdict::kNotJudged;
-  int effect = -1;       // entry index of E (−1: none)
-  int alternative = -1;  // entry index of the control's refit standing for A; −1: the base
-  double bic_gap = 0;    // BicGap(E, A): negative favours E
-  double within = 0;     // IndistinctWithin(E, A): the tie margin
+  int effect = -1;        // entry index of E (−1: none)
+  int alternative = -1;   // entry index of the control's refit standing for A; −1: the base
+  double bic_gap = 0;     // BicGap(E, A): negative favours E
+  double within = 0;      // IndistinctWithin(E, A): the tie margin
   int outranked_by = -1;  // kOutranked: entry index of W
 };
 

@@ -27,9 +27,9 @@ class PacketModel : public ForwardModel {
   std::vector<Prediction> Evaluate(const std::vector<ModelPoint>& points) override {
     std::vector<Prediction> out;
     for (const ModelPoint& p : points) {
-      const double m =
-          !p.effects.empty() && std::fabs(p.effects.back().values[0] - lucky) < 1e-12 ? miss / 4
-                                                                                      : miss;
+      const double m = !p.effects.empty() && std::fabs(p.effects.back().values[0] - lucky) < 1e-12
+                           ? miss / 4
+                           : miss;
       Prediction pr{true, "ok"};
       for (size_t i = 0; i < measured.size(); ++i) {
         // Alternating signs: no step of the one base parameter and the effect removes it.
