@@ -95,7 +95,13 @@ BoundCheck CheckBound(const StepOutcome& step, const FitState& fit,
   b.effect_base_unit = e.base_unit;
   b.effect_chi2_per_dof = e.chi2_per_dof;
   const std::string effect = Value(e, candidates[e.candidate]);
-  if (j.verdict == BoundVerdict::kEffect) {
+  if (j.verdict == BoundVerdict::kOutranked) {
+    const RankingEntry& w = entries[j.outranked_by];
+    s << Value(w, candidates[w.candidate]) << " fits better than both " << b.parameters
+      << alternative << " and " << effect << " with the base parameter inside (BIC gap "
+      << BicGap(w.evidence, e.evidence) << " against the latter, beyond the tie margin of each)"
+      << "; the base parameter stays on its bound with it";
+  } else if (j.verdict == BoundVerdict::kEffect) {
     s << effect << " fits better with the base parameter inside its range than " << b.parameters
       << alternative << " (BIC gap " << j.bic_gap << ", beyond " << j.within << ")";
   } else if (j.verdict == BoundVerdict::kBeyondRange) {

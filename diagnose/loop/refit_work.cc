@@ -161,6 +161,13 @@ void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
       const ActiveEffect added{w.candidate, {t_now + scale * step.t(0)}};
       tries[i].push_back(here.Step(scale * step.delta, &added));
     }
+    for (size_t j = 0; j <= p; ++j) {  // the best probe, kept aside (header, RefineRefits)
+      const Prediction& got = probed[i * (p + 1) + j];
+      if (!got.ok) continue;
+      const double chi2 = StandardisedResiduals(*f.observations, got.mean, f.sigma).squaredNorm();
+      if (chi2 < w.probe_chi2)
+        w.probe_chi2 = chi2, w.probe_point = probes[i * (p + 1) + j], w.probe_prediction = got;
+    }
   }
   // Damped Gauss–Newton: where the full step does not lower χ² (noisy or curved sensitivities
   // overshoot), half of it is simulated too.
@@ -190,6 +197,7 @@ void RefineRefits(ForwardModel& model, const Frame& f, const FitState& fit,
                   std::vector<Work*> active) {
   std::erase_if(active,
                 [](const Work* w) { return !w->simulated; });  // no refit point to start from
+  const std::vector<Work*> all = active;
   for (int k = 0; k < iterations && !active.empty(); ++k) {
     std::vector<double> before;
     for (const Work* w : active) before.push_back(w->best_chi2);
@@ -199,6 +207,10 @@ void RefineRefits(ForwardModel& model, const Frame& f, const FitState& fit,
       if (active[i]->best_chi2 < before[i] - 1) improving.push_back(active[i]);
     active.swap(improving);
   }
+  for (Work* w : all)
+    if (w->probe_chi2 < w->best_chi2)
+      w->best_chi2 = w->probe_chi2, w->best_point = w->probe_point,
+      w->best_prediction = w->probe_prediction;
 }
 
 }  // namespace demcal::diagnose::refits

@@ -14,6 +14,8 @@ std::string BoundVerdictName(BoundVerdict v) {
       return "effect";
     case BoundVerdict::kBeyondRange:
       return "beyond_range";
+    case BoundVerdict::kOutranked:
+      return "outranked";
   }
   return "not_judged";
 }
@@ -45,6 +47,17 @@ BoundJudgement JudgeBound(const std::vector<RankingEntry>& entries, const std::v
     j.verdict = BoundVerdict::kNotToldApart;
   else
     j.verdict = BoundVerdict::kBeyondRange;
+  if (j.verdict != BoundVerdict::kNotToldApart) return j;
+  for (size_t i = 0; i < entries.size(); ++i) {  // a fit clearly better than both (header)
+    const RankingEntry& w = entries[i];
+    if (!w.simulated || w.control || !w.evidence.significant || static_cast<int>(i) == j.effect)
+      continue;
+    if (BicGap(w.evidence, e) <= -IndistinctWithin(w.evidence, e) &&
+        BicGap(w.evidence, *a) <= -IndistinctWithin(w.evidence, *a) &&
+        (j.outranked_by < 0 || w.evidence.delta_bic < entries[j.outranked_by].evidence.delta_bic))
+      j.outranked_by = static_cast<int>(i);
+  }
+  if (j.outranked_by >= 0) j.verdict = BoundVerdict::kOutranked;
   return j;
 }
 

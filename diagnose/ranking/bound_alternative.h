@@ -24,6 +24,13 @@
 //  - kBeyondRange: no effect with the parameter inside fits as well as A: the data may ask for
 //    the parameter beyond the range (widen it); no effect is suggested;
 //  - kNoEffectInside: no simulated effect refit left the bound.
+// A tie between A and E is the answer only when nothing fits clearly better than both: when a
+// significant simulated effect refit W (on the bound or not) beats both A and E beyond the tie
+// margin, the verdict is kOutranked and the ranking goes on as usual (W is what it names; the
+// base parameter stays on its bound with W). The cross-engine `wide_psd` case on demcal's `cdt`:
+// μs on its lower bound, the size width's refit (still on it) ΔBIC −43.8, the bound alternative
+// and the best effect held inside (less rolling resistance, χ²/dof 5.0) 5.9 apart — "not told
+// apart" between two fits both far worse than the hidden effect's.
 // The control is never named (the control guard): it only stands for "beyond the range".
 //
 //   BoundJudgement j = JudgeBound(entries, inside, copies_bound, base_evidence);
@@ -37,16 +44,24 @@
 
 namespace demcal::diagnose {
 
-enum class BoundVerdict { kNotJudged, kNoEffectInside, kNotToldApart, kEffect, kBeyondRange };
+enum class BoundVerdict {
+  kNotJudged,
+  kNoEffectInside,
+  kNotToldApart,
+  kEffect,
+  kBeyondRange,
+  kOutranked
+};
 
 std::string BoundVerdictName(BoundVerdict v);  // "not_told_apart", "effect", ...
 
 struct BoundJudgement {
   BoundVerdict verdict = BoundVerdict::kNotJudged;
-  int effect = -1;       // entry index of E (−1: none)
-  int alternative = -1;  // entry index of the control's refit standing for A; −1: the base
-  double bic_gap = 0;    // BicGap(E, A): negative favours E
-  double within = 0;     // IndistinctWithin(E, A): the tie margin
+  int effect = -1;        // entry index of E (−1: none)
+  int alternative = -1;   // entry index of the control's refit standing for A; −1: the base
+  double bic_gap = 0;     // BicGap(E, A): negative favours E
+  double within = 0;      // IndistinctWithin(E, A): the tie margin
+  int outranked_by = -1;  // kOutranked: entry index of W
 };
 
 // entries: the step's ranking entries; inside[i]: entry i's simulated refit has every bound

@@ -55,6 +55,22 @@ TEST_CASE("gap test detects an offset, names where, and finds the trend along th
     if (t.observable == "all") CHECK_FALSE(t.significant);
 }
 
+TEST_CASE("a gap names the observable whose residuals alone trend along a covariate", "[unit]") {
+  // Only the heap height grows with the coating (1 σ per level): the pooled trend over both
+  // observables is half of it, the heap height's own is named in the summary; the angle's not.
+  std::vector<Observation> obs = Residuals(24, 3, 0, 0);
+  for (Observation& o : obs)
+    if (o.observable == "heap_height_m")
+      o.simulated += 1.0 * std::stod(o.condition.at("coating_PEG_wt_pct"));
+  const GapReport g = TestGap(obs, 1, {0.01});
+  REQUIRE(g.gap_detected);
+  CHECK(g.summary.find("heap_height_m residuals trend along coating_PEG_wt_pct") !=
+        std::string::npos);
+  CHECK(g.summary.find("angle_deg residuals trend") == std::string::npos);
+  // Within noise: no trend is named.
+  CHECK(TestGap(Residuals(24, 3, 0, 0), 1, {0.01}).summary.find("trend") == std::string::npos);
+}
+
 TEST_CASE("gap options refuse a significance outside (0, 0.5)", "[unit]") {
   std::string error;
   CHECK_FALSE(GapOptions{0.7}.IsValid(&error));

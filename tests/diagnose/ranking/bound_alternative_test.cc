@@ -85,6 +85,24 @@ TEST_CASE("JudgeBound: the bound alternative fitting better asks for a wider ran
   CHECK(j.bic_gap == Approx(27.0 - 3.0).epsilon(1e-3));
 }
 
+TEST_CASE("JudgeBound: a tie is no answer when an effect on the bound fits far better than both",
+          "[unit]") {
+  // The base at its bound χ² 108, the effect held inside χ² 60 (under its floor, φ² q² = 5:
+  // 48/6 = 8 better than the base, gap −8 + 2.48, a tie), the size width's refit, still on the
+  // bound, χ² 12: significant, and beyond the margin 2·√50 of both.
+  const std::vector<RankingEntry> entries = {Fit("rolling", 3.0, std::sqrt(60.0 / 12), false, 5),
+                                             Fit("size", 3.0, 1.0, false, 5)};
+  const BoundJudgement j = JudgeBound(entries, {true, false}, {false, false}, Base(3.0, 5));
+  CHECK(j.verdict == BoundVerdict::kOutranked);
+  CHECK(j.effect == 0);
+  CHECK(j.outranked_by == 1);
+  // The same tie with the on-bound effect as poor as the tie: not told apart, as before.
+  const std::vector<RankingEntry> level = {Fit("rolling", 3.0, std::sqrt(60.0 / 12), false, 5),
+                                           Fit("size", 3.0, std::sqrt(58.0 / 12), false, 5)};
+  CHECK(JudgeBound(level, {true, false}, {false, false}, Base(3.0, 5)).verdict ==
+        BoundVerdict::kNotToldApart);
+}
+
 TEST_CASE("JudgeBound: effects still on the bound, controls and linear refits do not count",
           "[unit]") {
   std::vector<RankingEntry> entries = {Fit("rolling", 1.0, 0.5, false),

@@ -1,0 +1,88 @@
+// A refit ends on the best simulated point of base + effect, its finite-difference probes
+// included (refit_work.h, RefineRefits): the likelihood ratio compares maximised likelihoods,
+// and a probe that fits better than every refit point is the better fit. The probes do not
+// re-centre the refit points.
+#include "diagnose/loop/refit_work.h"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "calibrate/sensitivity_refinement.h"
+
+namespace demcal::diagnose {
+namespace {
+
+// A forward model whose simulated means are "packings" that depend on where they are run: every
+// point misses the measurements by ±`miss`, except the points whose effect value is `lucky`,
+// which miss them by a quarter of that. A stand-in for a noisy DEM objective where the
+// Gauss–Newton steps land on unlucky packings and one probe on a lucky one (the secant through
+// the probe extrapolates past it: the step lands elsewhere).
+class PacketModel : public ForwardModel {
+ public:
+  std::vector<double> measured;
+  double lucky = 0, miss = 3;
+  int BaseParameters() const override { return 1; }
+  BaseCalibration CalibrateBase(int) override { return {}; }
+  int SimulationsRun() const override { return runs_; }
+  std::vector<Prediction> Evaluate(const std::vector<ModelPoint>& points) override {
+    std::vector<Prediction> out;
+    for (const ModelPoint& p : points) {
+      const double m = !p.effects.empty() && std::fabs(p.effects.back().values[0] - lucky) < 1e-12
+                           ? miss / 4
+                           : miss;
+      Prediction pr{true, "ok"};
+      for (size_t i = 0; i < measured.size(); ++i) {
+        // Alternating signs: no step of the one base parameter and the effect removes it.
+        pr.mean.push_back(measured[i] + (i % 2 ? -m : m));
+        pr.sem.push_back(0.5);
+        pr.spread.push_back(1.0);
+      }
+      ++runs_;
+      out.push_back(pr);
+    }
+    return out;
+  }
+
+ private:
+  int runs_ = 0;
+};
+
+}  // namespace
+
+TEST_CASE("a refit ends on a finite-difference probe that fits better", "[unit]") {
+  PacketModel model;
+  model.measured = {10, 20, 30, 40};
+  std::vector<Observation> obs(4);
+  for (size_t i = 0; i < obs.size(); ++i) obs[i].measured = model.measured[i];
+  CandidateEffect effect{"effect", "a stand-in", {{"t", "", -1, 1, 0.5}}};
+  FitState fit;
+  fit.point.base_unit = {0.5};
+  fit.prediction = model.Evaluate({fit.point})[0];
+  fit.jacobian = Eigen::MatrixXd::Constant(4, 1, 1.0);
+  fit.lower = {0};
+  fit.upper = {1};
+  DiagnoseOptions options;
+  options.discrepancy_floor = 0;
+  refits::Frame f = refits::MakeFrame(obs, fit, options);
+  refits::Work w{0};
+  w.simulated = true;
+  w.best_point = fit.point;
+  w.best_point.effects = {{0, {0.2}}};
+  w.best_prediction = model.Evaluate({w.best_point})[0];
+  w.best_chi2 = 4 * 3.0 * 3.0 / (1 + 0.25);  // σ² = u² + sem² = 1.25
+  w.signature = Eigen::VectorXd::Constant(4, 1.0);
+  // The effect's probe is one finite-difference step of its range (2) above the kept point: the
+  // calibration layer's step for the noise there (sem/σ = 0.5/√1.25).
+  const double h = calibrate::FiniteDifferenceStep(0.5 / std::sqrt(1.25));
+  model.lucky = 0.2 + h * 2;
+  const int runs = model.SimulationsRun();
+  refits::RefineRefits(model, f, fit, {effect}, 4, {&w});
+  // One round: two probes, the step and its half; the steps did not lower χ², so the points end
+  // (the probe's gain is not the points' progress).
+  REQUIRE(model.SimulationsRun() - runs == 4);
+  CHECK(w.best_chi2 == Approx(4 * 0.75 * 0.75 / 1.25));
+  CHECK(w.best_point.effects.back().values[0] == Approx(model.lucky));
+  CHECK(w.best_point.base_unit[0] == Approx(0.5));
+}
+
+}  // namespace demcal::diagnose
