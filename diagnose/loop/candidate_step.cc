@@ -64,6 +64,7 @@ void RefitInside(ForwardModel& model, const Frame& f, const FitState& fit,
     held.push_back(w);
     held.back().refit = Refit(fi, candidates[w.candidate].parameters[0], w.signature);
     held.back().simulated = false;
+    held.back().held_note.clear();  // the copy's refits are its own
   }
   std::sort(held.begin(), held.end(),
             [](const Work& a, const Work& b) { return a.refit.chi2 < b.refit.chi2; });

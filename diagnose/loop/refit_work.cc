@@ -100,8 +100,52 @@ void Record(const Frame& f, const Work& w, const std::vector<CandidateEffect>& c
     e.note = "signature run failed: " + w.probe_status;
   else if (e.signature_match == 0)
     e.note = "redundant with the fitted parameters";
+  if (!w.held_note.empty()) e.note += (e.note.empty() ? "" : "; ") + w.held_note;
   step->refit_residuals[i].assign(r.data(), r.data() + r.size());
 }
+
+namespace {
+
+// A finite-difference probe without a value (a jammed funnel, a failed run) is retaken one step
+// on the other side of the point when that side is inside the coordinate's range, and the
+// derivative is then the one-sided backward difference from it: the same first-order accuracy
+// as the forward one, where keeping the old sensitivity would step on a derivative taken
+// elsewhere. probes, steps and probed are updated in place; index j < p is base coordinate j
+// (bounds fit.lower/upper), j == p the candidate's effect parameter (its own range).
+void RetakeOnOtherSide(ForwardModel& model, const FitState& fit,
+                       const std::vector<CandidateEffect>& candidates,
+                       const std::vector<Work*>& work, size_t p, std::vector<ModelPoint>& probes,
+                       std::vector<std::vector<double>>& steps, std::vector<Prediction>& probed) {
+  std::vector<size_t> at;
+  std::vector<ModelPoint> retakes;
+  for (size_t i = 0; i < work.size(); ++i) {
+    const EffectParameter& e = candidates[work[i]->candidate].parameters[0];
+    for (size_t j = 0; j <= p; ++j) {
+      if (probed[i * (p + 1) + j].ok) continue;
+      ModelPoint q = work[i]->best_point;
+      double& x = j < p ? q.base_unit[j] : q.effects.back().values[0];
+      const double lo = j < p ? fit.lower[j] : e.lower, hi = j < p ? fit.upper[j] : e.upper;
+      x -= steps[i][j];
+      if (x < lo || x > hi) continue;  // the point is on a bound: no other side
+      at.push_back(i * (p + 1) + j);
+      retakes.push_back(q);
+    }
+  }
+  if (retakes.empty()) return;
+  const std::vector<Prediction> got = model.Evaluate(retakes);
+  for (size_t k = 0; k < at.size(); ++k) {
+    const size_t i = at[k] / (p + 1), j = at[k] % (p + 1);
+    if (!got[k].ok) {
+      probed[at[k]].status += "; on the other side: " + got[k].status;
+      continue;
+    }
+    steps[i][j] = -steps[i][j];
+    probes[at[k]] = retakes[k];
+    probed[at[k]] = got[k];
+  }
+}
+
+}  // namespace
 
 void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
                      const std::vector<CandidateEffect>& candidates,
@@ -128,7 +172,9 @@ void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
     t += steps[i][p];
     probes.push_back(q);
   }
-  const std::vector<Prediction> probed = model.Evaluate(probes);
+  std::vector<Prediction> probed = model.Evaluate(probes);
+  RetakeOnOtherSide(model, fit, candidates, work, p, probes, steps, probed);
+  const std::vector<std::string> names = model.BaseParameterNames();
   std::vector<std::vector<ModelPoint>> tries(work.size());
   for (size_t i = 0; i < work.size(); ++i) {
     Work& w = *work[i];
@@ -138,11 +184,25 @@ void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
           (ToVector(probed[i * (p + 1) + j].mean) - ToVector(w.best_prediction.mean)) /
           steps[i][j]);
     };
-    for (size_t j = 0; j < p; ++j)
-      if (probed[i * (p + 1) + j].ok) J.col(j) = slope(j);
-    if (probed[i * (p + 1) + p].ok) w.signature = slope(p);
-    w.jacobian = J;
+    // A coordinate whose probes on both sides have no value has no derivative here: it is held
+    // at its value for this step (its column zeroed for the step's solve, its range closed),
+    // rather than stepped on a sensitivity taken elsewhere; the entry's note says so.
     const EffectParameter& e = candidates[w.candidate].parameters[0];
+    std::vector<bool> held(p + 1, false);
+    for (size_t j = 0; j <= p; ++j) {
+      const Prediction& got = probed[i * (p + 1) + j];
+      held[j] = !got.ok;
+      if (got.ok && j < p) J.col(j) = slope(j);
+      if (got.ok && j == p) w.signature = slope(p);
+      if (!got.ok) {
+        const std::string name = j < p ? (j < names.size() ? names[j] : "base " + std::to_string(j))
+                                       : e.name;
+        w.held_note = "held for a refit step, " + name +
+                      ": no finite-difference probe on either side has a value (" + got.status +
+                      ")";
+      }
+    }
+    w.jacobian = J;
     const double t_now = w.best_point.effects.back().values[0];
     FitState here = fit;
     here.point = w.best_point;
@@ -153,10 +213,12 @@ void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
       lo.push_back(fit.lower[j] - c[j]), hi.push_back(fit.upper[j] - c[j]);
     const Eigen::VectorXd r =
         StandardisedResiduals(*f.observations, w.best_prediction.mean, f.sigma);
-    const Eigen::MatrixXd Js = f.sigma.cwiseInverse().asDiagonal() * J;
+    Eigen::MatrixXd Js = f.sigma.cwiseInverse().asDiagonal() * J;
+    for (size_t j = 0; j < p; ++j)
+      if (held[j]) Js.col(j).setZero(), lo[j] = 0, hi[j] = 0;
     const Eigen::MatrixXd S = f.sigma.cwiseInverse().cwiseProduct(w.signature);
-    const LinearRefitResult step =
-        LinearRefit(r, Js, S, {e.lower - t_now}, {e.upper - t_now}, lo, hi);
+    const double t_lo = held[p] ? 0 : e.lower - t_now, t_hi = held[p] ? 0 : e.upper - t_now;
+    const LinearRefitResult step = LinearRefit(r, Js, S, {t_lo}, {t_hi}, lo, hi);
     for (double scale : {1.0, 0.5}) {  // the Gauss–Newton step, then half of it (below)
       const ActiveEffect added{w.candidate, {t_now + scale * step.t(0)}};
       tries[i].push_back(here.Step(scale * step.delta, &added));

@@ -46,6 +46,9 @@ struct Work {
   ModelPoint probe_point;
   Prediction probe_prediction;
   double probe_chi2 = INFINITY;
+  // Set when a re-centred step held a coordinate whose finite-difference probes on both sides
+  // had no value (RecentredRefits): said in the entry's note.
+  std::string held_note;
   bool simulated = false;
   bool probe_ok = true;
   std::string probe_status;
@@ -77,7 +80,9 @@ void Record(const Frame& f, const Work& w, const std::vector<CandidateEffect>& c
 // sensitivities to the base parameters and to the effect are re-estimated there by finite
 // differences (one run each, in the unit cube the step of the calibration layer's rule for this
 // simulation noise, inward at a bound), then one Gauss–Newton step of base + effect is
-// simulated. The base fit's sensitivities can be wrong far from it (a friction whose heap angle
+// simulated. A probe without a value is retaken one step on the other side of the point (a
+// one-sided backward difference); a coordinate with no value on either side is held for that
+// step, said in the entry's note. The base fit's sensitivities can be wrong far from it (a friction whose heap angle
 // saturates at the refit point but not at the base would keep pulling the refit the wrong
 // way), and a secant signature inherits their error. The best finite-difference probe is kept
 // aside (Work::probe_point).

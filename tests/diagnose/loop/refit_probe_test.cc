@@ -1,0 +1,115 @@
+// A re-centred refit's finite-difference probe without a value (a jammed run) is retaken one step
+// on the other side of the point, and the derivative taken one-sided from it (refit_work.h,
+// RecentredRefits); with no value on either side the coordinate is held for that step. On a
+// linear model a one-sided difference is exact, so one Gauss–Newton step from the retaken
+// derivatives lands on the least-squares point (the normal equations' solution).
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "calibrate/sensitivity_refinement.h"
+#include "diagnose/loop/refit_work.h"
+
+namespace demcal::diagnose {
+namespace {
+
+// mean_i = measured_i + a_i (u − u*) + b_i (t − t*), with u the one base parameter and t the
+// effect's: the data are fitted exactly at (u*, t*). A run whose effect value is above `jam_above`
+// or below `jam_below` has no value, as a funnel that jams.
+class JammingModel : public ForwardModel {
+ public:
+  std::vector<double> measured{10, 20, 30, 40}, a{1, 1, 1, 1}, b{1, -1, 2, 0};
+  double u_true = 0.5, t_true = 0.1;
+  double jam_above = INFINITY, jam_below = -INFINITY;
+  int BaseParameters() const override { return 1; }
+  std::vector<std::string> BaseParameterNames() const override { return {"u"}; }
+  BaseCalibration CalibrateBase(int) override { return {}; }
+  int SimulationsRun() const override { return runs_; }
+  std::vector<Prediction> Evaluate(const std::vector<ModelPoint>& points) override {
+    std::vector<Prediction> out;
+    for (const ModelPoint& p : points) {
+      ++runs_;
+      const double u = p.base_unit[0], t = p.effects.empty() ? 0 : p.effects.back().values[0];
+      if (t > jam_above || t < jam_below) {
+        out.push_back({false, "jammed"});
+        continue;
+      }
+      Prediction pr{true, "ok"};
+      for (size_t i = 0; i < measured.size(); ++i) {
+        pr.mean.push_back(measured[i] + a[i] * (u - u_true) + b[i] * (t - t_true));
+        pr.sem.push_back(0.01);
+        pr.spread.push_back(1.0);
+      }
+      out.push_back(pr);
+    }
+    return out;
+  }
+
+ private:
+  int runs_ = 0;
+};
+
+struct Setup {
+  JammingModel model;
+  std::vector<Observation> obs;
+  CandidateEffect effect{"effect", "a stand-in", {{"t", "", -1, 1, 0.5}}};
+  FitState fit;
+  refits::Frame frame;
+  refits::Work work{0};
+  double h = 0;  // the probes' step in the unit cube
+
+  Setup() : obs(4) {
+    for (size_t i = 0; i < obs.size(); ++i) obs[i].measured = model.measured[i];
+    fit.point.base_unit = {0.4};
+    fit.prediction = model.Evaluate({fit.point})[0];
+    fit.jacobian = Eigen::MatrixXd::Constant(4, 1, 1.0);
+    fit.lower = {0};
+    fit.upper = {1};
+    DiagnoseOptions options;
+    options.discrepancy_floor = 0;
+    frame = refits::MakeFrame(obs, fit, options);
+    work.simulated = true;
+    work.best_point = fit.point;
+    work.best_point.effects = {{0, {0.3}}};
+    work.best_prediction = model.Evaluate({work.best_point})[0];
+    work.best_chi2 =
+        StandardisedResiduals(obs, work.best_prediction.mean, frame.sigma).squaredNorm();
+    // A stale signature parallel to the base column: stepping on it cannot move t.
+    work.signature = Eigen::VectorXd::Constant(4, 1.0);
+    double noise_max = 0;
+    for (int k = 0; k < frame.n(); ++k)
+      noise_max = std::max(noise_max, work.best_prediction.sem[k] / frame.sigma(k));
+    h = calibrate::FiniteDifferenceStep(noise_max);
+  }
+};
+
+}  // namespace
+
+TEST_CASE("a jammed forward probe is retaken on the other side of the refit point", "[unit]") {
+  Setup s;
+  // The forward probe of t (0.3 + 2h, the effect's range being 2) jams; the backward one does not.
+  s.model.jam_above = 0.3 + s.h;
+  const int runs = s.model.SimulationsRun();
+  refits::RecentredRefits(s.model, s.frame, s.fit, {s.effect}, {&s.work});
+  // Two probes, the retake, then the full Gauss–Newton step, which lowers χ² (no half step).
+  CHECK(s.model.SimulationsRun() - runs == 4);
+  CHECK(s.work.best_point.effects.back().values[0] == Approx(s.model.t_true).margin(1e-9));
+  CHECK(s.work.best_point.base_unit[0] == Approx(s.model.u_true).margin(1e-9));
+  CHECK(s.work.best_chi2 == Approx(0).margin(1e-12));
+  for (int i = 0; i < 4; ++i) CHECK(s.work.signature(i) == Approx(s.model.b[i]));
+  CHECK(s.work.held_note.empty());
+}
+
+TEST_CASE("a coordinate with no probe value on either side is held for the step", "[unit]") {
+  Setup s;
+  s.model.jam_above = 0.3 + s.h;
+  s.model.jam_below = 0.3 - s.h;
+  refits::RecentredRefits(s.model, s.frame, s.fit, {s.effect}, {&s.work});
+  // t stays; u alone goes to its least-squares value at t = 0.3: the mean of the residuals
+  // b_i (t − t*) over a_i = 1 is (1 − 1 + 2 + 0)/4 × 0.2 = 0.1, so u = u* − 0.1.
+  CHECK(s.work.best_point.effects.back().values[0] == Approx(0.3));
+  CHECK(s.work.best_point.base_unit[0] == Approx(s.model.u_true - 0.1));
+  CHECK(s.work.held_note.find("held for a refit step, t") != std::string::npos);
+  CHECK(s.work.held_note.find("jammed; on the other side: jammed") != std::string::npos);
+}
+
+}  // namespace demcal::diagnose
