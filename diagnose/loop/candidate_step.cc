@@ -21,6 +21,36 @@ double Since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// A signature run without a value (a funnel that jams at the probe value) is retaken on the
+// other side of the fit, at minus the probe clipped to the parameter's range; the signature is
+// then the one-sided difference from there, as a re-centred refit's probe is retaken
+// (refit_work.h). taken_at: the value each signature is taken at. No value on either side: the
+// candidate keeps no signature, and its note says why.
+void RetakeSignatures(ForwardModel& model, const std::vector<CandidateEffect>& candidates,
+                      const std::vector<int>& remaining, const FitState& fit,
+                      std::vector<Prediction>& probed, std::vector<double>& taken_at) {
+  std::vector<size_t> at;
+  std::vector<ModelPoint> points;
+  for (size_t i = 0; i < remaining.size(); ++i) {
+    const EffectParameter& e = candidates[remaining[i]].parameters[0];
+    const double other = std::clamp(-e.probe, e.lower, e.upper);
+    if (probed[i].ok || other == 0) continue;
+    const ActiveEffect added{remaining[i], {other}};
+    points.push_back(fit.Step(Eigen::VectorXd::Zero(fit.Fitted()), &added));
+    at.push_back(i);
+  }
+  if (points.empty()) return;
+  const std::vector<Prediction> got = model.Evaluate(points);
+  for (size_t k = 0; k < at.size(); ++k) {
+    if (!got[k].ok) {
+      probed[at[k]].status += "; on the other side: " + got[k].status;
+      continue;
+    }
+    probed[at[k]] = got[k];
+    taken_at[at[k]] = points[k].effects.back().values[0];
+  }
+}
+
 // A base on a bound (bound_alternative.h): the controls that copy a bound parameter stand for it
 // beyond its range and are refitted by simulation too (free, so they may step beyond it),
 // significant or not — a base within noise on its bound has no significant candidate.
@@ -64,7 +94,7 @@ void RefitInside(ForwardModel& model, const Frame& f, const FitState& fit,
     held.push_back(w);
     held.back().refit = Refit(fi, candidates[w.candidate].parameters[0], w.signature);
     held.back().simulated = false;
-    held.back().held_note.clear();  // the copy's refits are its own
+    held.back().retake_note.clear();  // the copy's refits are its own
   }
   std::sort(held.begin(), held.end(),
             [](const Work& a, const Work& b) { return a.refit.chi2 < b.refit.chi2; });
@@ -105,16 +135,22 @@ StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>
   }
   if (progress)
     progress("signatures of " + std::to_string(remaining.size()) + " candidate effects");
-  const std::vector<Prediction> probed = model.Evaluate(probes);
+  std::vector<Prediction> probed = model.Evaluate(probes);
+  std::vector<double> taken_at;
+  for (int c : remaining) taken_at.push_back(candidates[c].parameters[0].probe);
+  RetakeSignatures(model, candidates, remaining, fit, probed, taken_at);
   out.phases.push_back({"signatures", model.SimulationsRun() - sims0, Since(start)});
   std::vector<Work> work;
   for (size_t i = 0; i < remaining.size(); ++i) {
     Work w{remaining[i]};
     w.probe_ok = probed[i].ok;
     w.probe_status = probed[i].status;
+    const double probe = candidates[w.candidate].parameters[0].probe;
     if (probed[i].ok) {
-      w.signature = (ToVector(probed[i].mean) - ToVector(fit.prediction.mean)) /
-                    candidates[w.candidate].parameters[0].probe;
+      w.signature = (ToVector(probed[i].mean) - ToVector(fit.prediction.mean)) / taken_at[i];
+      if (taken_at[i] != probe)
+        w.retake_note = "signature taken one-sided at " + std::to_string(taken_at[i]) +
+                        ": the run at the probe value had no value";
     } else {
       w.signature = Eigen::VectorXd::Zero(f.n());
     }
@@ -150,9 +186,11 @@ StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>
     Record(f, work[i], candidates, static_cast<int>(i), &out.step);
     out.unit_signatures.push_back(
         std::vector<double>(work[i].signature.data(), work[i].signature.data() + f.n()));
+    // The change at the probe value; a signature retaken on the other side, linearised to it.
+    const double scale = candidates[work[i].candidate].parameters[0].probe / taken_at[i];
     out.step.signatures.push_back(std::vector<double>(probed[i].mean.size()));
     for (size_t k = 0; k < probed[i].mean.size(); ++k)
-      out.step.signatures[i][k] = probed[i].mean[k] - fit.prediction.mean[k];
+      out.step.signatures[i][k] = scale * (probed[i].mean[k] - fit.prediction.mean[k]);
   }
   out.step.ranking = RankCandidates(out.step.entries);
   out.step.simulations = model.SimulationsRun() - sims0;

@@ -100,7 +100,7 @@ void Record(const Frame& f, const Work& w, const std::vector<CandidateEffect>& c
     e.note = "signature run failed: " + w.probe_status;
   else if (e.signature_match == 0)
     e.note = "redundant with the fitted parameters";
-  if (!w.held_note.empty()) e.note += (e.note.empty() ? "" : "; ") + w.held_note;
+  if (!w.retake_note.empty()) e.note += (e.note.empty() ? "" : "; ") + w.retake_note;
   step->refit_residuals[i].assign(r.data(), r.data() + r.size());
 }
 
@@ -197,7 +197,7 @@ void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
       if (!got.ok) {
         const std::string name = j < p ? (j < names.size() ? names[j] : "base " + std::to_string(j))
                                        : e.name;
-        w.held_note = "held for a refit step, " + name +
+        w.retake_note = "held for a refit step, " + name +
                       ": no finite-difference probe on either side has a value (" + got.status +
                       ")";
       }

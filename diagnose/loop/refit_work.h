@@ -46,9 +46,10 @@ struct Work {
   ModelPoint probe_point;
   Prediction probe_prediction;
   double probe_chi2 = INFINITY;
-  // Set when a re-centred step held a coordinate whose finite-difference probes on both sides
-  // had no value (RecentredRefits): said in the entry's note.
-  std::string held_note;
+  // Set when a run without a value was retaken on the other side (the signature,
+  // candidate_step.cc) or a re-centred step held a coordinate whose finite-difference probes on
+  // both sides had no value (RecentredRefits): said in the entry's note.
+  std::string retake_note;
   bool simulated = false;
   bool probe_ok = true;
   std::string probe_status;

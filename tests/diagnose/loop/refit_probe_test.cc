@@ -1,12 +1,14 @@
 // A re-centred refit's finite-difference probe without a value (a jammed run) is retaken one step
 // on the other side of the point, and the derivative taken one-sided from it (refit_work.h,
-// RecentredRefits); with no value on either side the coordinate is held for that step. On a
+// RecentredRefits); with no value on either side the coordinate is held for that step. A
+// signature run without a value is retaken at minus the probe value (candidate_step.cc). On a
 // linear model a one-sided difference is exact, so one Gauss–Newton step from the retaken
 // derivatives lands on the least-squares point (the normal equations' solution).
 #include <catch2/catch.hpp>
 #include <cmath>
 
 #include "calibrate/sensitivity_refinement.h"
+#include "diagnose/loop/candidate_step.h"
 #include "diagnose/loop/refit_work.h"
 
 namespace demcal::diagnose {
@@ -96,7 +98,7 @@ TEST_CASE("a jammed forward probe is retaken on the other side of the refit poin
   CHECK(s.work.best_point.base_unit[0] == Approx(s.model.u_true).margin(1e-9));
   CHECK(s.work.best_chi2 == Approx(0).margin(1e-12));
   for (int i = 0; i < 4; ++i) CHECK(s.work.signature(i) == Approx(s.model.b[i]));
-  CHECK(s.work.held_note.empty());
+  CHECK(s.work.retake_note.empty());
 }
 
 TEST_CASE("a coordinate with no probe value on either side is held for the step", "[unit]") {
@@ -108,8 +110,24 @@ TEST_CASE("a coordinate with no probe value on either side is held for the step"
   // b_i (t − t*) over a_i = 1 is (1 − 1 + 2 + 0)/4 × 0.2 = 0.1, so u = u* − 0.1.
   CHECK(s.work.best_point.effects.back().values[0] == Approx(0.3));
   CHECK(s.work.best_point.base_unit[0] == Approx(s.model.u_true - 0.1));
-  CHECK(s.work.held_note.find("held for a refit step, t") != std::string::npos);
-  CHECK(s.work.held_note.find("jammed; on the other side: jammed") != std::string::npos);
+  CHECK(s.work.retake_note.find("held for a refit step, t") != std::string::npos);
+  CHECK(s.work.retake_note.find("jammed; on the other side: jammed") != std::string::npos);
+}
+
+TEST_CASE("a jammed signature run is retaken on the other side of the fit", "[unit]") {
+  Setup s;
+  // The probe value 0.5 jams; −0.5 does not. The fit is at t = 0, u = 0.4.
+  s.model.jam_above = 0.25;
+  DiagnoseOptions options;
+  options.discrepancy_floor = 0;
+  options.dem_refits = 0;  // the signature alone
+  const StepOutcome out =
+      RunCandidateStep(s.model, s.obs, {s.effect}, {0}, s.fit, options, nullptr, {});
+  REQUIRE(out.unit_signatures.size() == 1);
+  for (int i = 0; i < 4; ++i) CHECK(out.unit_signatures[0][i] == Approx(s.model.b[i]));
+  CHECK(out.step.entries[0].note.find("signature taken one-sided at -0.5") != std::string::npos);
+  // The change at the probe value, linearised from the other side: b_i × 0.5.
+  for (int i = 0; i < 4; ++i) CHECK(out.step.signatures[0][i] == Approx(0.5 * s.model.b[i]));
 }
 
 }  // namespace demcal::diagnose
