@@ -195,11 +195,11 @@ void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
       if (got.ok && j < p) J.col(j) = slope(j);
       if (got.ok && j == p) w.signature = slope(p);
       if (!got.ok) {
-        const std::string name = j < p ? (j < names.size() ? names[j] : "base " + std::to_string(j))
-                                       : e.name;
+        const std::string name =
+            j < p ? (j < names.size() ? names[j] : "base " + std::to_string(j)) : e.name;
         w.retake_note = "held for a refit step, " + name +
-                      ": no finite-difference probe on either side has a value (" + got.status +
-                      ")";
+                        ": no finite-difference probe on either side has a value (" + got.status +
+                        ")";
       }
     }
     w.jacobian = J;

@@ -83,10 +83,10 @@ void Record(const Frame& f, const Work& w, const std::vector<CandidateEffect>& c
 // simulation noise, inward at a bound), then one Gauss–Newton step of base + effect is
 // simulated. A probe without a value is retaken one step on the other side of the point (a
 // one-sided backward difference); a coordinate with no value on either side is held for that
-// step, said in the entry's note. The base fit's sensitivities can be wrong far from it (a friction whose heap angle
-// saturates at the refit point but not at the base would keep pulling the refit the wrong
-// way), and a secant signature inherits their error. The best finite-difference probe is kept
-// aside (Work::probe_point).
+// step, said in the entry's note. The base fit's sensitivities can be wrong far from it (a friction
+// whose heap angle saturates at the refit point but not at the base would keep pulling the refit
+// the wrong way), and a secant signature inherits their error. The best finite-difference probe is
+// kept aside (Work::probe_point).
 void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
                      const std::vector<CandidateEffect>& candidates,
                      const std::vector<Work*>& work);
