@@ -203,10 +203,24 @@ int64_t NeighbourList::Find(uint32_t i, uint32_t j) const {
 std::vector<uint32_t> NeighbourList::CellOrder(const Settings& s,
                                                const std::vector<Vec3>& x) const {
   const Grid grid = MakeGrid(s, x, x.size());
-  std::vector<std::pair<int, uint32_t>> keyed(x.size());
+  // Cells in rows of whole planes, the planes across the axis with the most cells: a sphere's
+  // partners in the next plane are then the fewest slots away. The force sweep reaches each of
+  // them that much later again (Newton's third law adds to both), so that span of sphere state
+  // is what must stay in cache: on a bed 190 mm wide and 50 mm deep, a plane across its height
+  // holds about 12,000 spheres, more than a core's cache keeps; one across its width about 3,500
+  // (9 % less CPU time per step on 200,000 spheres, docs/performance.md).
+  const int n[3] = {grid.nx, grid.ny, grid.nz};
+  int axes[3] = {2, 1, 0};  // slowest first; equal counts keep z, y, x (slowest to fastest)
+  std::stable_sort(axes, axes + 3, [&](int a, int b) { return n[a] > n[b]; });
+  std::vector<std::pair<int64_t, uint32_t>> keyed(x.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, x.size()), [&](const auto& range) {
-    for (size_t i = range.begin(); i != range.end(); ++i)
-      keyed[i] = {grid.CellOf(x[i]), static_cast<uint32_t>(i)};
+    for (size_t i = range.begin(); i != range.end(); ++i) {
+      const int c = grid.CellOf(x[i]);
+      const int at[3] = {c % grid.nx, c / grid.nx % grid.ny, c / grid.nx / grid.ny};
+      const int64_t key =
+          (int64_t{at[axes[0]]} * n[axes[1]] + at[axes[1]]) * n[axes[2]] + at[axes[2]];
+      keyed[i] = {key, static_cast<uint32_t>(i)};
+    }
   });
   // The keys are unique (slot i), so any sort gives the one order: parallel where it can be.
   tbb::parallel_sort(keyed.begin(), keyed.end());
