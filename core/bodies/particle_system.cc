@@ -80,26 +80,36 @@ size_t ParticleSystem::BodyCount() const {
 }
 
 namespace {
-// MoveSphere over the free spheres [0, n) (clump members move with their clump).
-template <int kHalfKicks, bool kDrift>
-void MoveSpheres(Particles& p, size_t n, double dt) {
+// Half kicks of free spheres [0, n): one (finish = false) or two (the deferred one first).
+template <bool kFinish, bool kDrift>
+void KickSpheres(Particles& p, size_t n, double dt) {
+  const double half = 0.5 * dt;
   tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1024), [&](const auto& range) {
-    for (size_t i = range.begin(); i != range.end(); ++i)
-      if (p.body[i] < 0) MoveSphere<kHalfKicks, kDrift>(p, i, dt);
+    for (size_t i = range.begin(); i != range.end(); ++i) {
+      if (p.body[i] >= 0) continue;  // clump members move with their clump
+      const Vec3 dv = p.force_N[i] * (half * p.inv_mass[i]);
+      const Vec3 dw = p.torque_N_m[i] * (half * p.inv_inertia[i]);
+      Vec3 v = p.velocity_m_s[i], w = p.angular_velocity_rad_s[i];
+      if constexpr (kFinish) v += dv, w += dw;
+      v += dv, w += dw;
+      p.velocity_m_s[i] = v;
+      p.angular_velocity_rad_s[i] = w;
+      if constexpr (kDrift) p.position_m[i] += v * dt;
+    }
   }, tbb::static_partitioner());
 }
 }  // namespace
 
-void ParticleSystem::KickDrift(double dt, size_t moving_spheres, int owed_half_kicks,
-                               bool drift_spheres) {
+void ParticleSystem::FinishKick(double dt, size_t moving_spheres) {
+  KickSpheres<false, false>(spheres, std::min(moving_spheres, spheres.Size()), dt);
+}
+
+void ParticleSystem::KickDrift(double dt, size_t moving_spheres, bool finish_last_kick) {
   const double half = 0.5 * dt;
   Particles& p = spheres;
   const size_t n = std::min(moving_spheres, p.Size());
-  if (drift_spheres) {
-    if (owed_half_kicks == 2) MoveSpheres<2, true>(p, n, dt);
-    else if (owed_half_kicks == 1) MoveSpheres<1, true>(p, n, dt);
-    else MoveSpheres<0, true>(p, n, dt);
-  }
+  if (finish_last_kick) KickSpheres<true, true>(p, n, dt);
+  else KickSpheres<false, true>(p, n, dt);
   Clumps& c = clumps;
   // The drift (Drift's midpoint scheme) in passes over blocks of clumps, and the members in a
   // pass of their own: short loop bodies let the processor overlap successive clumps' long
@@ -125,9 +135,11 @@ void ParticleSystem::KickDrift(double dt, size_t moving_spheres, int owed_half_k
   });
 }
 
-void ParticleSystem::ReduceAndKickClumps(const Vec3& gravity, double dt) {
+void ParticleSystem::ReduceAndKick(const Vec3& gravity, double dt, size_t moving_spheres,
+                                   bool defer_sphere_kick) {
   const double half = 0.5 * dt;
   Particles& p = spheres;
+  if (!defer_sphere_kick) FinishKick(dt, moving_spheres);
   Clumps& c = clumps;
   tbb::parallel_for(tbb::blocked_range<size_t>(0, c.Size(), 256), [&](const auto& range) {
     for (size_t k = range.begin(); k != range.end(); ++k) {

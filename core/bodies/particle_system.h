@@ -55,14 +55,18 @@ struct ParticleSystem {
 
   // Velocity Verlet: first half kick and drift (members follow their clumps) ...
   // Only sphere slots [0, moving_spheres) are visited: the engine keeps fixed spheres after them.
-  // Free spheres: `owed_half_kicks` (0 to 2) half kicks still due from the last forces, then the
-  // drift (MoveSphere); none of it if !drift_spheres (the force sweep already moved them,
-  // SweepUpdate).
-  void KickDrift(double dt, size_t moving_spheres, int owed_half_kicks, bool drift_spheres);
-  // ... and, after forces, the clumps' second half kick (their forces reduced from their
-  // members'). The free spheres' half kicks are the force sweep's (SweepUpdate)
-  // or the next KickDrift's.
-  void ReduceAndKickClumps(const Vec3& gravity, double dt);
+  // `finish_last_kick`: the free spheres' second half kick of the previous step, deferred by
+  // ReduceAndKick, is done first in the same pass.
+  void KickDrift(double dt, size_t moving_spheres, bool finish_last_kick = false);
+  // ... and, after forces, the second half kick (clump forces reduced from their members).
+  // `defer_sphere_kick`: the free spheres' half kick is left to the next KickDrift (or
+  // FinishKick), so their state is streamed through memory once per step instead of twice; the
+  // same operations run in the same order, so the results are unchanged. Until then their
+  // velocities are half a kick behind: only for steps followed directly by another step.
+  void ReduceAndKick(const Vec3& gravity, double dt, size_t moving_spheres,
+                     bool defer_sphere_kick = false);
+  // The deferred half kick alone (before anything reads the velocities).
+  void FinishKick(double dt, size_t moving_spheres);
   // Clump forces and torques from their members' (needed once before the first step).
   void ReduceClumpForces(const Vec3& gravity);
   // Wraps free spheres and clump centres back into the periodic box (members follow).

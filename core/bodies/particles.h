@@ -58,26 +58,4 @@ struct Particles {
   double KineticEnergy() const;
 };
 
-// Velocity Verlet for free sphere i from its force and torque: kHalfKicks (0 to 2) half kicks
-// v += F Δt/(2m), ω += T Δt/(2I), then with kDrift x += v Δt. The one definition for the
-// integration pass (ParticleSystem::KickDrift) and the force sweep (ContactForces::Compute): the
-// same operations in the same order wherever a sphere is moved, so trajectories do not depend on
-// which of the two moved it.
-template <int kHalfKicks, bool kDrift>
-inline void MoveSphere(Particles& p, size_t i, double dt) {
-  static_assert(kHalfKicks >= 0 && kHalfKicks <= 2);
-  Vec3 v = p.velocity_m_s[i];
-  if constexpr (kHalfKicks > 0) {
-    const double half = 0.5 * dt;
-    const Vec3 dv = p.force_N[i] * (half * p.inv_mass[i]);
-    const Vec3 dw = p.torque_N_m[i] * (half * p.inv_inertia[i]);
-    Vec3 w = p.angular_velocity_rad_s[i];
-    if constexpr (kHalfKicks == 2) v += dv, w += dw;
-    v += dv, w += dw;
-    p.velocity_m_s[i] = v;
-    p.angular_velocity_rad_s[i] = w;
-  }
-  if constexpr (kDrift) p.position_m[i] += v * dt;
-}
-
 }  // namespace demcal::core

@@ -81,20 +81,6 @@ DEMCAL_HOT_INLINE bool ContactForces::ResolveContact(uint32_t k, bool in_contact
   return true;
 }
 
-// Applies `update` to sphere i, whose force and torque are complete; true if it drifted more
-// than half the skin from its reference.
-DEMCAL_HOT_INLINE bool MoveInSweep(Particles& p, const NeighbourList& list,
-                                   const SweepUpdate& update, double dt, size_t i) {
-  if (p.body[i] >= 0) return false;  // clump members move with their clump
-  if (update.drift) {
-    MoveSphere<2, true>(p, i, dt);
-    return list.MovedPastHalfSkin(i, p.position_m[i]);
-  }
-  if (update.half_kicks == 2) MoveSphere<2, false>(p, i, dt);
-  else if (update.half_kicks == 1) MoveSphere<1, false>(p, i, dt);
-  return false;
-}
-
 // Chunk c owns particle slots [Begin(c), End(c)) and sums, per particle and in the order a
 // serial sweep would, the contributions from earlier rows first, then its own row, then walls,
 // so results are bit-identical for any number of chunks. Cross pairs are evaluated into
@@ -102,8 +88,7 @@ DEMCAL_HOT_INLINE bool MoveInSweep(Particles& p, const NeighbourList& list,
 template <class Model>
 void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
                              const std::vector<Wall>& walls, const InteractionTable& table,
-                             const Model& model, const Vec3& gravity, double dt,
-                             const SweepUpdate& update, size_t c) {
+                             const Model& model, const Vec3& gravity, double dt, size_t c) {
   auto evaluate_cross = [&](uint32_t i, uint32_t k) {
     EvaluatePair(p, table, model, dt, i, k, list.Partner(k), pair_result_[k]);
   };
@@ -111,40 +96,26 @@ void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
   const uint32_t moving = list.FirstFixed();  // partners from here on are fixed spheres
   const uint32_t first_own_entry = list.RowBegin(begin);
   if (c > 0) chunks_.Ensure(c, evaluate_cross);
-  // Particle i's sum starts from gravity and the cross pairs of earlier chunks. It is set just
-  // before the first row that adds to it (its own, or an earlier one naming it): set in a pass
-  // of its own, the whole chunk's forces were streamed through memory once more.
-  uint32_t started = begin;  // sums of [begin, started) are set
-  auto start_sums = [&](uint32_t upto) {
-    for (; started < upto; ++started) {
-      const uint32_t i = started;
-      Vec3 f = p.body[i] < 0 ? gravity * p.mass_kg[i] : Vec3{};  // clumps get gravity whole
-      Vec3 t;
-      for (uint32_t r = list.ReverseBegin(i); r < list.ReverseEnd(i); ++r) {
-        const uint32_t k = list.ReverseEntry(r);
-        if (k >= first_own_entry) break;  // entries are ascending; the rest come from own rows
-        if (!pair_active_[k]) continue;
-        f -= pair_result_[k].force_i;
-        t += pair_result_[k].torque_j;
-      }
-      p.force_N[i] = f;
-      p.torque_N_m[i] = t;
+  for (uint32_t i = begin; i < end; ++i) {
+    Vec3 f = p.body[i] < 0 ? gravity * p.mass_kg[i] : Vec3{};  // clumps get gravity whole
+    Vec3 t;
+    for (uint32_t r = list.ReverseBegin(i); r < list.ReverseEnd(i); ++r) {
+      const uint32_t k = list.ReverseEntry(r);
+      if (k >= first_own_entry) break;  // entries are ascending; the rest come from own rows
+      if (!pair_active_[k]) continue;
+      f -= pair_result_[k].force_i;
+      t += pair_result_[k].torque_j;
     }
-  };
+    p.force_N[i] = f;
+    p.torque_N_m[i] = t;
+  }
   size_t ready = c;  // chunks up to `ready` have their incoming cross pairs evaluated
   RowScratch& scratch = row_scratch_[c];
-  scratch.unmoved.clear();
-  bool moved_past_half_skin = false;
-  const bool moves = update.half_kicks > 0 || update.drift;
   uint32_t* const touching = scratch.touching.data();
   ContactGeometry* const geometry = scratch.geometry.data();
   uint8_t* const in_contact = scratch.in_contact.data();
   const PeriodicBox* box = periodic_.Any() ? &periodic_ : nullptr;
   for (uint32_t i = begin; i < end; ++i) {
-    // Own partners lie in [i + 1, end); partners are ascending, so the last one bounds them.
-    const uint32_t row_end = list.RowEnd(i);
-    const uint32_t last = row_end > list.RowBegin(i) ? list.Partner(row_end - 1) : i;
-    start_sums(std::min(std::max(last, i) + 1, end));
     Vec3& fi = p.force_N[i];
     Vec3& ti = p.torque_N_m[i];
     // Pass 1, without branches on the data: the row's entries that may contribute (touching,
@@ -153,14 +124,12 @@ void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
     const Vec3 xi = p.position_m[i];
     const double ri = p.radius_m[i];
     uint32_t n = 0;
-    bool crosses = false;  // another chunk reads i's state for a cross pair
-    for (uint32_t k = list.RowBegin(i); k < row_end; ++k) {
+    for (uint32_t k = list.RowBegin(i); k < list.RowEnd(i); ++k) {
       const uint32_t j = list.Partner(k);
       touching[n] = k;
       if (j >= end && j < moving) {  // a cross pair, evaluated by SweepChunks::Ensure
         while (j >= chunks_.End(ready)) chunks_.Ensure(++ready, evaluate_cross);
         n += pair_active_[k];
-        crosses = true;
         continue;
       }
       const Vec3 d = box ? box->MinimumImage(xi - p.position_m[j]) : xi - p.position_m[j];
@@ -196,13 +165,7 @@ void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
       p.torque_N_m[j] += r.torque_j;
     }
     walls_.Sum(p, i, walls, table, model, dt, mesh_scratch_[c], fi, ti);
-    // i's sum is complete: every row naming it came earlier. Later rows of this chunk never
-    // read i's state; other chunks do through its cross pairs, so those spheres wait.
-    if (!moves) continue;
-    if (crosses) scratch.unmoved.push_back(i);
-    else moved_past_half_skin |= MoveInSweep(p, list, update, dt, i);
   }
-  scratch.moved_past_half_skin = moved_past_half_skin;
 }
 
 void ContactForces::PlanChunks(const NeighbourList& list) {
@@ -236,8 +199,7 @@ void ContactForces::PlanChunks(const NeighbourList& list) {
 void ContactForces::Compute(Particles& p, const NeighbourList& list,
                             const std::vector<Wall>& walls, double time_s,
                             const InteractionTable& table, const NormalModel& normal,
-                            const RollingModel& rolling, const Vec3& gravity, double dt,
-                            const SweepUpdate& update) {
+                            const RollingModel& rolling, const Vec3& gravity, double dt) {
   if (pair_history_.size() != list.PairCount()) {
     pair_history_.resize(list.PairCount());
     pair_active_.resize(list.PairCount(), 0);
@@ -249,13 +211,13 @@ void ContactForces::Compute(Particles& p, const NeighbourList& list,
   walls_.SetVelocities(walls, time_s);
   auto run = [&](const auto& model) {
     if (chunks == 1) {
-      SumChunk(p, list, walls, table, model, gravity, dt, update, 0);
+      SumChunk(p, list, walls, table, model, gravity, dt, 0);
       return;
     }
     chunks_.ResetClaims();
     tbb::parallel_for(size_t{0}, chunks, [&](size_t c) {
       const auto start = std::chrono::steady_clock::now();
-      SumChunk(p, list, walls, table, model, gravity, dt, update, c);
+      SumChunk(p, list, walls, table, model, gravity, dt, c);
       chunks_.AddTime(c, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     });
   };
@@ -267,14 +229,6 @@ void ContactForces::Compute(Particles& p, const NeighbourList& list,
         run(ContactModel<N, R>{normal_law, rolling_model});
       },
       normal, rolling);
-  // The spheres whose state other chunks read for cross pairs, now that every chunk is done.
-  moved_past_half_skin_ = false;
-  for (size_t c = 0; c < chunks; ++c) {
-    RowScratch& scratch = row_scratch_[c];
-    for (uint32_t i : scratch.unmoved)
-      scratch.moved_past_half_skin |= MoveInSweep(p, list, update, dt, i);
-    moved_past_half_skin_ = moved_past_half_skin_ || scratch.moved_past_half_skin;
-  }
 }
 
 void ContactForces::Rebuild(const Particles& p, const NeighbourList& old_list,

@@ -26,19 +26,6 @@
 
 namespace demcal::core {
 
-// What the force sweep does to each free moving sphere once its force and torque are complete:
-// the velocity-Verlet steps that follow a force pass (MoveSphere), done while the sphere's
-// state is in cache rather than in passes of their own over all spheres (on a 200,000-sphere
-// bed those passes streamed the state from memory again and took a quarter of the step).
-// A sphere still read by another chunk's cross pairs is moved after the sweep instead.
-struct SweepUpdate {
-  int half_kicks = 0;  // 0 to 2
-  // Then x += v Δt (needs half_kicks == 2), and whether the sphere is now more than half the
-  // skin from its reference position in `list` is recorded (MovedPastHalfSkin): the next
-  // step's rebuild check without a pass of its own. Not with periodic axes (no image here).
-  bool drift = false;
-};
-
 class ContactForces {
  public:
   // Sets all forces and torques of `p` (gravity included), with the normal law `normal`
@@ -47,11 +34,7 @@ class ContactForces {
   // selects their velocities.
   void Compute(Particles& p, const NeighbourList& list, const std::vector<Wall>& walls,
                double time_s, const InteractionTable& table, const NormalModel& normal,
-               const RollingModel& rolling, const Vec3& gravity, double dt,
-               const SweepUpdate& update = {});
-  // After a Compute that drifted the spheres: whether any left half the skin (the list must be
-  // rebuilt before the next force pass; NeighbourList::NeedsRebuild).
-  bool MovedPastHalfSkin() const { return moved_past_half_skin_; }
+               const RollingModel& rolling, const Vec3& gravity, double dt);
 
   // Called after every neighbour-list rebuild: carries pair histories over to the new list and
   // lists, per moving particle, the walls within its radius + skin (moving walls always), keeping
@@ -106,7 +89,7 @@ class ContactForces {
   template <class Model>
   void SumChunk(Particles& p, const NeighbourList& list, const std::vector<Wall>& walls,
                 const InteractionTable& table, const Model& model, const Vec3& gravity,
-                double dt, const SweepUpdate& update, size_t chunk);
+                double dt, size_t chunk);
   void PlanChunks(const NeighbourList& list);
 
   void RemapPairs(const NeighbourList& old_list, const NeighbourList& new_list,
@@ -140,11 +123,8 @@ class ContactForces {
     std::vector<uint32_t> touching;        // the row's entries that may contribute
     std::vector<ContactGeometry> geometry; // their geometry (own pairs)
     std::vector<uint8_t> in_contact;       // whether each is in contact
-    std::vector<uint32_t> unmoved;         // spheres left to move after the sweep (SweepUpdate)
-    bool moved_past_half_skin = false;
   };
   std::vector<RowScratch> row_scratch_;
-  bool moved_past_half_skin_ = false;
 };
 
 }  // namespace demcal::core

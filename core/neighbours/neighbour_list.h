@@ -67,10 +67,6 @@ class NeighbourList {
   const Vec3& ReferencePosition(size_t i) const { return reference_position_[i]; }
   const std::vector<Vec3>& ReferencePositions() const { return reference_position_; }
   bool NeedsRebuild(const std::vector<Vec3>& positions) const;
-  // NeedsRebuild's test for one moving particle i now at x (no periodic image).
-  bool MovedPastHalfSkin(size_t i, const Vec3& x) const {
-    return Norm2(x - reference_position_[i]) > half_skin2_;
-  }
   // NeedsRebuild for periodic boxes: displacements by minimum image (a wrap is not a move).
   bool NeedsRebuild(const std::vector<Vec3>& positions, const PeriodicBox& box) const;
 

@@ -20,13 +20,11 @@ const char* TerminationName(Termination t);
 
 // Wall time of a run by phase of the time step, s (steady clock, a few ns per reading).
 struct PhaseTimes {
-  // The free spheres' half kicks and drift when a pass of their own does them (clumps and the
-  // periodic wrap always); between checks the force sweep does them (SweepUpdate), in forces_s.
-  double integrate_s = 0;
+  double integrate_s = 0;      // both half kicks and the drift (clumps and periodic wrap too)
   double insert_s = 0;         // factories
-  double rebuild_check_s = 0;  // has any particle moved half the skin? (or the sweep's answer)
+  double rebuild_check_s = 0;  // has any particle moved half the skin?
   double rebuild_s = 0;        // re-sort, neighbour search, history and wall-candidate transfer
-  double forces_s = 0;         // contact force sweep (pairs and walls, sphere moves), wall work
+  double forces_s = 0;         // contact force sweep (pairs and walls), wall work
   double checks_s = 0;         // NaN / domain / energy checks and the observer
 
   PhaseTimes& operator-=(const PhaseTimes& o);

@@ -259,9 +259,9 @@ void Simulation::AddWallWork(double time_s) {
   energy_scale_J_ += std::abs(work);
 }
 
-void Simulation::ComputeForces(double time_s, const SweepUpdate& update) {
+void Simulation::ComputeForces(double time_s) {
   forces_.Compute(system_.spheres, list_, walls_, time_s, table_, normal_, rolling_,
-                  scene_.gravity_m_s2, dt_, update);
+                  scene_.gravity_m_s2, dt_);
 }
 
 void Simulation::Step(bool defer_kick) {
@@ -271,8 +271,8 @@ void Simulation::Step(bool defer_kick) {
     phase_s += std::chrono::duration<double>(now - last).count();
     last = now;
   };
-  // The free spheres' half kicks and drift that the last force sweep left (SweepUpdate).
-  system_.KickDrift(dt_, list_.FirstFixed(), owed_half_kicks_, !spheres_drifted_);
+  system_.KickDrift(dt_, list_.FirstFixed(), kick_pending_);
+  kick_pending_ = false;
   if (list_settings_.periodic.Any()) system_.WrapPeriodic(list_settings_.periodic);
   lap(phases_.integrate_s);
   const double t = time_s_ + dt_;  // the time of the drifted positions
@@ -280,12 +280,7 @@ void Simulation::Step(bool defer_kick) {
   const bool wall_removed = WallRemovedDuringStep(t);
   const bool inserted = !factories_.empty() && InsertFromFactories();
   lap(phases_.insert_s);
-  // A sweep that drifted the spheres also compared them with their references (clump members,
-  // which it leaves to their clumps, are not among them).
-  const bool moved = spheres_drifted_ && system_.clumps.Size() == 0
-                         ? forces_.MovedPastHalfSkin()
-                         : list_.NeedsRebuild(system_.spheres.position_m);
-  const bool rebuild = inserted || wall_removed || moved;
+  const bool rebuild = inserted || wall_removed || list_.NeedsRebuild(system_.spheres.position_m);
   lap(phases_.rebuild_check_s);
   if (rebuild) {
     // Sinks take their particles at a rebuild (the slots change, so the list is built anew),
@@ -298,20 +293,11 @@ void Simulation::Step(bool defer_kick) {
     RebuildNeighbours(true, removed ? removal_order_ : std::vector<uint32_t>{});
     lap(phases_.rebuild_s);
   }
-  // The sweep kicks each free sphere once its force is complete: the second half kick, and when
-  // the next step follows at once (`defer_kick`) its first half kick too; then also that step's
-  // drift, unless moving walls (whose work is taken from this step's positions) or periodic
-  // wrapping come between. Each sphere gets the same operations in the same order as in
-  // separate passes, so the trajectories are unchanged.
-  const SweepUpdate update{
-      .half_kicks = defer_kick ? 2 : 1,
-      .drift = defer_kick && !walls_move_ && !list_settings_.periodic.Any()};
-  ComputeForces(t, update);
+  ComputeForces(t);
   AddWallWork(t);
   lap(phases_.forces_s);
-  system_.ReduceAndKickClumps(scene_.gravity_m_s2, dt_);
-  owed_half_kicks_ = 2 - update.half_kicks;
-  spheres_drifted_ = update.drift;
+  system_.ReduceAndKick(scene_.gravity_m_s2, dt_, list_.FirstFixed(), defer_kick);
+  kick_pending_ = defer_kick;
   lap(phases_.integrate_s);
   time_s_ += dt_;
   ++steps_;

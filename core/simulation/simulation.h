@@ -119,15 +119,15 @@ class Simulation {
   void CreateFactories();
   // Runs the factories due now; true if particles were added.
   bool InsertFromFactories();
-  // One step. `defer_kick`: the force sweep also kicks (and drifts) the free spheres into the
-  // next step (SweepUpdate), leaving velocities half a kick ahead; only when that
-  // step follows with nothing in between that reads the state (no check, observer or end of Run).
+  // One step. `defer_kick`: leave the free spheres' second half kick to the next step's first
+  // pass (ParticleSystem::ReduceAndKick); only when that step follows with nothing in between
+  // that reads velocities (no check, observer or end of Run).
   void Step(bool defer_kick);
   // Translates the moving walls to where they are at time t.
   void PlaceWalls(double time_s);
   // Adds the work the moving walls did on the particles this step to the energy budget.
   void AddWallWork(double time_s);
-  void ComputeForces(double time_s, const SweepUpdate& update = {});
+  void ComputeForces(double time_s);
   // Removes the particles that reached a sink; true if any were, with removal_order_ holding
   // the old slot of each remaining one.
   bool RemoveSunkParticles();
@@ -182,10 +182,7 @@ class Simulation {
   double dt_ = 0;
   double time_s_ = 0;
   int64_t steps_ = 0;
-  // What the last force sweep left of the free spheres' velocity Verlet: half kicks still owed
-  // (1 after Initialize or a full step) and whether they were already drifted into this step.
-  int owed_half_kicks_ = 1;
-  bool spheres_drifted_ = false;
+  bool kick_pending_ = false;  // the last Step deferred its spheres' second half kick
   uint64_t rebuilds_since_reorder_ = 0;
   PhaseTimes phases_;
   double energy_budget_J_ = 0;   // initial KE + PE (+ inserted energy)
