@@ -4,7 +4,7 @@
 # and the variables WORK, NOISE_MAX, IDLE_WAIT, MAX_RETRY, BENCH_NICE set by the caller.
 # Provides: log/die helpers, number formatting, median, the LIGGGHTS install and mpirun command
 # (MPIRUN), the priority prefix (PRIO), and the background-load guard used by every timed run
-# (retrying / measured / BG_LOAD / NOISY_RUNS).
+# (retrying / measured / BG_LOAD / RUN_CORES / NOISY_RUNS).
 
 log()  { echo "[compare] $*"; }
 die()  { echo "[compare] ERROR: $*" >&2; exit 1; }
@@ -99,6 +99,10 @@ measured() {
   BG_LOAD=$(awk -v b0="$b0" -v b1="$b1" -v c0="$c0" -v c1="$c1" -v t0="$t0" -v t1="$t1" \
     'BEGIN { if (t1 - t0 < 2) { print 0; exit }   # too short for 10 ms accounting ticks
              x = ((b1 - b0) - (c1 - c0)) / (t1 - t0); if (x < 0) x = 0; printf "%.2f", x }')
+  # The cores the job itself held on average (its CPU seconds over its wall seconds).
+  # shellcheck disable=SC2034  # read by the scripts that source this file
+  RUN_CORES=$(awk -v c0="$c0" -v c1="$c1" -v t0="$t0" -v t1="$t1" \
+    'BEGIN { if (t1 - t0 <= 0) { print 0; exit } printf "%.3f", (c1 - c0) / (t1 - t0) }')
   return $rc
 }
 is_noisy() { awk -v l="$BG_LOAD" -v m="$NOISE_MAX" 'BEGIN { exit !(l >= m) }'; }

@@ -13,6 +13,7 @@
 #
 # Prints, per case, size and count, one line
 #   bed 200000 spheres, 4 threads/ranks: demcal X M, liggghts Y M particle-steps/s; ratio demcal/liggghts R
+#   (and below it the same per CPU second: the rate over the cores the job held on average)
 # then per case and size
 #   strong scaling speed-up demcal (N threads): X  [bed, 200000 spheres]
 #   strong scaling speed-up liggghts (N ranks): X  [bed, 200000 spheres]
@@ -25,6 +26,15 @@
 #   NSTEPS=4000  WARMUP=200  SETTLE_STEPS=16000   (reduce all three for a quick look)
 #   REPS=1                 runs per code and count (median)
 #   CODES="demcal liggghts"
+#   BASELINE_BIN=          another demcal_bench (e.g. a build of the previous commit): run
+#                          after demcal in every repetition on the same bed and counts, so the
+#                          machine's load hits both alike; adds "demcal before" to each line,
+#                          "speed-up demcal after/before" lines, and whether both builds end in
+#                          the same state_digest (a change meant to keep the results exactly)
+#   BED_DIR=               settled demcal beds to time instead of settling: BED_DIR/bed.N (a
+#                          checkpoint of "demcal_bench throughput --particles N --bed FILE") is
+#                          loaded by demcal and handed to LIGGGHTS as its data file (contact
+#                          histories start afresh in its warm-up); sizes without one settle
 #   BUILD_DIR=build  KEEP_WORK=0  MPIRUN_EXTRA=  BENCH_NICE=   as compare_liggghts.sh
 set -euo pipefail
 
@@ -42,6 +52,8 @@ OVERSUBSCRIBE=${OVERSUBSCRIBE:-0}
 BUILD_DIR=${BUILD_DIR:-build}
 [[ "$BUILD_DIR" = /* ]] || BUILD_DIR=$REPO_ROOT/$BUILD_DIR
 DEMCAL_BIN=$BUILD_DIR/bench/demcal_bench
+BASELINE_BIN=${BASELINE_BIN:-}
+BED_DIR=${BED_DIR:-}
 KEEP_WORK=${KEEP_WORK:-0}
 BENCH_NICE=${BENCH_NICE:-}
 # shellcheck disable=SC2034  # read by lib_compare.sh
@@ -66,6 +78,8 @@ for c in $CODES; do
     *) die "CODES: '$c' (allowed: demcal liggghts)" ;; esac
 done
 [[ -x "$DEMCAL_BIN" ]] || die "$DEMCAL_BIN not found: build demcal_bench (it also writes the LIGGGHTS inputs)"
+[[ -z "$BASELINE_BIN" || -x "$BASELINE_BIN" ]] || die "BASELINE_BIN: '$BASELINE_BIN' is not an executable"
+(( USE_DEMCAL )) || [[ -z "$BASELINE_BIN" ]] || die "BASELINE_BIN needs demcal in CODES"
 (( USE_LIGGGHTS == 0 )) || setup_liggghts
 if (( USE_LIGGGHTS )) && [[ $(id -u) -eq 0 ]]; then
   export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -84,6 +98,11 @@ cleanup() { if [[ "$KEEP_WORK" == 1 ]]; then log "work dir kept: $WORK"; else rm
 trap cleanup EXIT
 log "host: $CORES cores, $(date -u '+%Y-%m-%d %H:%M UTC'); counts ${RUN_COUNTS[*]}; sizes $SIZES;" \
     "cases $CASES; NSTEPS=$NSTEPS WARMUP=$WARMUP SETTLE_STEPS=$SETTLE_STEPS REPS=$REPS"
+
+# RATE per CPU second of the last measured run (RUN_CORES: the cores it held on average, set-up
+# included): on a shared machine a job's wall rate follows the share of the cores it got, its
+# rate per CPU second much less (MPI ranks that busy-wait for a descheduled partner still count).
+per_cpu() { awk -v r="$1" -v c="$RUN_CORES" 'BEGIN { if (c > 0) printf "%.6g", r / c; else print r }'; }
 
 # "-var NAME VALUE" arguments from a case.vars file into the array VARS.
 read_vars() { VARS=(); local k v; while read -r k v; do VARS+=(-var "$k" "$v"); done < "$1"; }
@@ -106,9 +125,9 @@ run_liggghts() {  # $1 case dir, $2 deck, $3 ranks, $4 moving spheres, $5 tag; s
   [[ -n "$RATE" ]] || die "no Loop line in $dir/log.$tag"
 }
 
-run_demcal() {  # $1 out file, then demcal_bench arguments; sets RATE and DIGEST
-  local out=$1; shift
-  measured "${PRIO[@]}" "$DEMCAL_BIN" "$@" > "$out" 2>&1 ||
+run_demcal() {  # $1 binary, $2 out file, then demcal_bench arguments; sets RATE and DIGEST
+  local bin=$1 out=$2; shift 2
+  measured "${PRIO[@]}" "$bin" "$@" > "$out" 2>&1 ||
     { tail -20 "$out" >&2; die "demcal_bench $* failed"; }
   RATE=$(bench_value particle_steps_per_s "$out")
   DIGEST=$(bench_value state_digest "$out")
@@ -121,19 +140,25 @@ prepare() {
   local case=$1 n=$2 dir=$3
   mkdir -p "$dir"
   if [[ $case == bed ]]; then
-    "$DEMCAL_BIN" throughput --particles "$n" --liggghts-inputs "$dir" > /dev/null
+    local settle=$SETTLE_STEPS
+    if [[ -n "$BED_DIR" && -f "$BED_DIR/bed.$n" ]]; then
+      cp "$BED_DIR/bed.$n" "$dir/demcal.bed"   # loaded, never settled (nor rewritten)
+      settle=0
+      log "  settled bed $BED_DIR/bed.$n: both codes time it (LIGGGHTS converts it, 0 steps)"
+    fi
+    "$DEMCAL_BIN" throughput --particles "$n" --bed "$dir/demcal.bed" --liggghts-inputs "$dir" > /dev/null
     cp "$SCRIPT_DIR"/liggghts/{setup.inc,case.inc,in.settle_data,in.bench} "$dir"/
     local bed_args=(throughput --particles "$n" --settle-steps "$SETTLE_STEPS" --bed "$dir/demcal.bed")
     DEMCAL_ARGS=("${bed_args[@]}" --steps "$NSTEPS" --warmup-steps "$WARMUP")
     DECK=in.bench
     if (( USE_LIGGGHTS )); then
       read_vars "$dir/case.vars"
-      log "  LIGGGHTS settle of the $n-sphere bed ($SETTLE_STEPS steps, $MAX_COUNT ranks, untimed) ..."
+      log "  LIGGGHTS settle of the $n-sphere bed ($settle steps, $MAX_COUNT ranks, untimed) ..."
       (cd "$dir" && "${PRIO[@]}" "${MPIRUN[@]}" -np "$MAX_COUNT" liggghts -in in.settle_data \
-         "${VARS[@]}" -var settle_steps "$SETTLE_STEPS" -log log.settle > out.settle 2>&1) ||
+         "${VARS[@]}" -var settle_steps "$settle" -log log.settle > out.settle 2>&1) ||
         { tail -20 "$dir/out.settle" >&2; die "LIGGGHTS settle failed"; }
     fi
-    if (( USE_DEMCAL )); then
+    if (( USE_DEMCAL )) && [[ ! -f "$dir/demcal.bed" ]]; then
       log "  demcal settle of the $n-sphere bed ($SETTLE_STEPS steps, all cores, untimed) ..."
       "$DEMCAL_BIN" "${bed_args[@]}" --threads "$MAX_COUNT" --steps 1 --warmup-steps 0 \
         > "$dir/demcal.settle.out" 2>&1 || { tail -20 "$dir/demcal.settle.out" >&2; die "demcal settle failed"; }
@@ -153,29 +178,51 @@ for n in $SIZES; do
     dir="$WORK/$case.$n"
     log "$case, $n spheres:"
     prepare "$case" "$n" "$dir"
-    declare -A DEM=() LIG=() DIG=()
+    declare -A DEM=() LIG=() DIG=() BASE=() BASE_DIG=() DEM_C=() LIG_C=() BASE_C=()
     for t in "${RUN_COUNTS[@]}"; do
-      dem_runs=() lig_runs=()
+      dem_runs=() lig_runs=() base_runs=() dem_cpu=() lig_cpu=() base_cpu=()
       for ((rep = 1; rep <= REPS; rep++)); do
         if (( USE_DEMCAL )); then
-          run_demcal "$dir/demcal.t$t.rep$rep.out" "${DEMCAL_ARGS[@]}" --threads "$t"
-          dem_runs+=("$RATE"); DIG[$t]=$DIGEST
-          log "    demcal   $t thread(s) rep $rep: $(fmt_m "$RATE")  [other load $BG_LOAD cores]"
+          run_demcal "$DEMCAL_BIN" "$dir/demcal.t$t.rep$rep.out" "${DEMCAL_ARGS[@]}" --threads "$t"
+          dem_runs+=("$RATE"); DIG[$t]=$DIGEST; dem_cpu+=("$(per_cpu "$RATE")")
+          log "    demcal   $t thread(s) rep $rep: $(fmt_m "$RATE"), $(fmt_m "${dem_cpu[-1]}") per CPU s  [held $RUN_CORES cores; other load $BG_LOAD cores]"
+        fi
+        if [[ -n "$BASELINE_BIN" ]]; then
+          run_demcal "$BASELINE_BIN" "$dir/before.t$t.rep$rep.out" "${DEMCAL_ARGS[@]}" --threads "$t"
+          base_runs+=("$RATE"); BASE_DIG[$t]=$DIGEST; base_cpu+=("$(per_cpu "$RATE")")
+          log "    before   $t thread(s) rep $rep: $(fmt_m "$RATE"), $(fmt_m "${base_cpu[-1]}") per CPU s  [held $RUN_CORES cores; other load $BG_LOAD cores]"
         fi
         if (( USE_LIGGGHTS )); then
           run_liggghts "$dir" "$DECK" "$t" "$MOVING" "np$t.rep$rep"
-          lig_runs+=("$RATE")
-          log "    liggghts $t rank(s)  rep $rep: $(fmt_m "$RATE")  [other load $BG_LOAD cores]"
+          lig_runs+=("$RATE"); lig_cpu+=("$(per_cpu "$RATE")")
+          log "    liggghts $t rank(s)  rep $rep: $(fmt_m "$RATE"), $(fmt_m "${lig_cpu[-1]}") per CPU s  [held $RUN_CORES cores; other load $BG_LOAD cores]"
         fi
       done
-      (( USE_DEMCAL )) && DEM[$t]=$(median "${dem_runs[@]}")
-      (( USE_LIGGGHTS )) && LIG[$t]=$(median "${lig_runs[@]}")
+      (( USE_DEMCAL )) && DEM[$t]=$(median "${dem_runs[@]}") && DEM_C[$t]=$(median "${dem_cpu[@]}")
+      (( USE_LIGGGHTS )) && LIG[$t]=$(median "${lig_runs[@]}") && LIG_C[$t]=$(median "${lig_cpu[@]}")
+      [[ -n "$BASELINE_BIN" ]] && BASE[$t]=$(median "${base_runs[@]}") && BASE_C[$t]=$(median "${base_cpu[@]}")
       line="$case $n spheres, $t threads/ranks:"
       (( USE_DEMCAL )) && line+=" demcal $(fmt_m "${DEM[$t]}")"
+      [[ -n "$BASELINE_BIN" ]] && line+=", demcal before $(fmt_m "${BASE[$t]}")"
       (( USE_LIGGGHTS )) && line+="$( (( USE_DEMCAL )) && echo ,) liggghts $(fmt_m "${LIG[$t]}")"
       line+=" particle-steps/s"
       (( USE_DEMCAL && USE_LIGGGHTS )) && line+="; ratio demcal/liggghts $(ratio "${DEM[$t]}" "${LIG[$t]}")"
+      [[ -n "$BASELINE_BIN" && USE_LIGGGHTS -eq 1 ]] &&
+        line+=" (before: $(ratio "${BASE[$t]}" "${LIG[$t]}"))"
       SUMMARY+=("$line")
+      line="  per CPU second ($case $n spheres, $t threads/ranks):"
+      (( USE_DEMCAL )) && line+=" demcal $(fmt_m "${DEM_C[$t]}")"
+      [[ -n "$BASELINE_BIN" ]] && line+=", demcal before $(fmt_m "${BASE_C[$t]}")"
+      (( USE_LIGGGHTS )) && line+=", liggghts $(fmt_m "${LIG_C[$t]}")"
+      (( USE_DEMCAL && USE_LIGGGHTS )) && line+="; ratio demcal/liggghts $(ratio "${DEM_C[$t]}" "${LIG_C[$t]}")"
+      [[ -n "$BASELINE_BIN" && USE_LIGGGHTS -eq 1 ]] &&
+        line+=" (before: $(ratio "${BASE_C[$t]}" "${LIG_C[$t]}"))"
+      [[ -n "$BASELINE_BIN" ]] && line+="; after/before $(ratio "${DEM_C[$t]}" "${BASE_C[$t]}")"
+      SUMMARY+=("$line")
+      if [[ -n "$BASELINE_BIN" ]]; then
+        same=$([[ "${BASE_DIG[$t]}" == "${DIG[$t]}" ]] && echo yes || echo NO)
+        SUMMARY+=("speed-up demcal after/before ($t threads): $(ratio "${DEM[$t]}" "${BASE[$t]}"); same final state: $same  [$case, $n spheres]")
+      fi
     done
     first=${RUN_COUNTS[0]}
     for t in "${RUN_COUNTS[@]:1}"; do
@@ -189,7 +236,7 @@ for n in $SIZES; do
       for t in "${RUN_COUNTS[@]}"; do [[ "${DIG[$t]}" == "${DIG[$first]}" ]] || same=NO; done
       SUMMARY+=("demcal final state identical across thread counts: $same  [$case, $n spheres]")
     fi
-    unset DEM LIG DIG
+    unset DEM LIG DIG BASE BASE_DIG DEM_C LIG_C BASE_C
   done
 done
 

@@ -48,6 +48,7 @@ void PrintResults(const Simulation& sim, const RunSummary& timed, int threads, i
   std::printf("state_digest: %a\n", demcal::bench::StateDigest(p));
   std::printf("sphere_steps_per_s: %.0f\n", static_cast<double>(p.Size()) * steps / timed.wall_time_s);
   std::printf("particle_steps_per_s: %.0f\n", bodies * steps / timed.wall_time_s);
+  std::printf("phases: %s\n", timed.phases.Report().c_str());
 }
 
 }  // namespace
@@ -59,7 +60,7 @@ int main(int argc, char** argv) {
   BedOptions c;
   int threads = 1;
   int64_t steps = 10000, warmup = 200, settle_steps = 16000;
-  std::string bed, liggghts_inputs;
+  std::string bed, save_bed, liggghts_inputs;
   tp->add_option("--threads", threads, "worker threads");
   tp->add_option("--steps", steps, "timed steps");
   tp->add_option("--warmup-steps", warmup, "untimed steps before timing");
@@ -73,10 +74,13 @@ int main(int argc, char** argv) {
   tp->add_option("--bed", bed,
                  "settled bed (a demcal checkpoint of this case without adhesion): loaded if "
                  "present, else written after settling");
+  tp->add_option("--save-bed", save_bed,
+                 "after the timed steps, write the state as a bed for --bed (e.g. one whose "
+                 "particle order this build chose)");
   tp->add_option("--seed", c.seed, "random seed of the pour");
   tp->add_option("--liggghts-inputs", liggghts_inputs,
-                 "write DIR/initial.data and DIR/case.vars of the unsettled bed for LIGGGHTS and "
-                 "exit");
+                 "write DIR/initial.data and DIR/case.vars for LIGGGHTS and exit: the unsettled "
+                 "pack, or the --bed if it exists");
   demcal::bench::PourCommand pour;
   CLI::App* pour_command = demcal::bench::AddPourCommand(app, &pour);
   demcal::bench::MemoryCommand memory;
@@ -92,22 +96,26 @@ int main(int argc, char** argv) {
     std::cerr << "error: " << error << "\n";
     return 1;
   }
-  if (!liggghts_inputs.empty()) {
+  // Without a settled bed to load, the LIGGGHTS inputs are the unsettled pack (LIGGGHTS then
+  // settles it itself, in.settle_data); with one, the bed as loaded, so that both codes time
+  // the very same state (in.settle_data with settle_steps 0 only converts it).
+  const bool bed_exists = !bed.empty() && std::filesystem::exists(bed);
+  auto write_liggghts_inputs = [&] {
     const demcal::bench::LiggghtsVars vars = {
         {"box_xy", demcal::bench::DenseBedBox(c).side_m},
         {"nparticles", static_cast<double>(sim.particles().Size())}};
-    if (!demcal::bench::WriteLiggghtsInputs(liggghts_inputs, sim.particles(), scene.domain_min_m,
-                                            scene.domain_max_m, vars, &error)) {
-      std::cerr << "error: " << error << "\n";
-      return 1;
-    }
-    return 0;
-  }
+    if (demcal::bench::WriteLiggghtsInputs(liggghts_inputs, sim.particles(), scene.domain_min_m,
+                                           scene.domain_max_m, vars, &error))
+      return 0;
+    std::cerr << "error: " << error << "\n";
+    return 1;
+  };
+  if (!liggghts_inputs.empty() && !bed_exists) return write_liggghts_inputs();
   if (c.cohesion > 0) {
     std::printf("interfacial_energy_J_m2: %.6g\ncohesion_number: %.6g\n",
                 scene.pair_parameters[0].interfacial_energy_J_m2, c.cohesion);
   }
-  if (!bed.empty() && std::filesystem::exists(bed)) {
+  if (bed_exists) {
     // The JKR run starts from the same (Hertz-settled) bed: only the contact parameters differ.
     const std::vector<std::string> may_differ =
         c.cohesion > 0 ? std::vector<std::string>{"contact parameters"} : std::vector<std::string>{};
@@ -123,6 +131,7 @@ int main(int argc, char** argv) {
     if (!settle.ok()) return 1;
     if (!bed.empty() && !sim.SaveCheckpoint(bed, &error)) std::cerr << "warning: " << error << "\n";
   }
+  if (!liggghts_inputs.empty()) return write_liggghts_inputs();
   sim.SetThreads(threads);
   sim.Run(warmup * sim.timestep_s());
   const RunSummary timed = sim.Run(steps * sim.timestep_s());
@@ -131,5 +140,9 @@ int main(int argc, char** argv) {
     return 1;
   }
   PrintResults(sim, timed, threads, steps);
+  if (!save_bed.empty() && !sim.SaveCheckpoint(save_bed, &error)) {
+    std::cerr << "error: " << error << "\n";
+    return 1;
+  }
   return 0;
 }
