@@ -10,6 +10,7 @@
 #include "calibrate/sensitivity_refinement.h"
 #include "diagnose/loop/candidate_step.h"
 #include "diagnose/loop/refit_work.h"
+#include "tests/diagnose/loop/one_parameter_fit.h"
 
 namespace demcal::diagnose {
 namespace {
@@ -61,14 +62,8 @@ struct Setup {
 
   Setup() : obs(4) {
     for (size_t i = 0; i < obs.size(); ++i) obs[i].measured = model.measured[i];
-    fit.point.base_unit = {0.4};
-    fit.prediction = model.Evaluate({fit.point})[0];
-    fit.jacobian = Eigen::MatrixXd::Constant(4, 1, 1.0);
-    fit.lower = {0};
-    fit.upper = {1};
-    DiagnoseOptions options;
-    options.discrepancy_floor = 0;
-    frame = refits::MakeFrame(obs, fit, options);
+    fit = OneParameterFit(model, 0.4, 4);
+    frame = FrameWithoutFloor(obs, fit);
     work.simulated = true;
     work.best_point = fit.point;
     work.best_point.effects = {{0, {0.3}}};

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "calibrate/sensitivity_refinement.h"
+#include "tests/diagnose/loop/one_parameter_fit.h"
 
 namespace demcal::diagnose {
 namespace {
@@ -55,15 +56,8 @@ TEST_CASE("a refit ends on a finite-difference probe that fits better", "[unit]"
   std::vector<Observation> obs(4);
   for (size_t i = 0; i < obs.size(); ++i) obs[i].measured = model.measured[i];
   CandidateEffect effect{"effect", "a stand-in", {{"t", "", -1, 1, 0.5}}};
-  FitState fit;
-  fit.point.base_unit = {0.5};
-  fit.prediction = model.Evaluate({fit.point})[0];
-  fit.jacobian = Eigen::MatrixXd::Constant(4, 1, 1.0);
-  fit.lower = {0};
-  fit.upper = {1};
-  DiagnoseOptions options;
-  options.discrepancy_floor = 0;
-  refits::Frame f = refits::MakeFrame(obs, fit, options);
+  const FitState fit = OneParameterFit(model, 0.5, 4);
+  const refits::Frame f = FrameWithoutFloor(obs, fit);
   refits::Work w{0};
   w.simulated = true;
   w.best_point = fit.point;
