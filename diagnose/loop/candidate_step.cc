@@ -39,16 +39,9 @@ void RetakeSignatures(ForwardModel& model, const std::vector<CandidateEffect>& c
     points.push_back(fit.Step(Eigen::VectorXd::Zero(fit.Fitted()), &added));
     at.push_back(i);
   }
-  if (points.empty()) return;
-  const std::vector<Prediction> got = model.Evaluate(points);
-  for (size_t k = 0; k < at.size(); ++k) {
-    if (!got[k].ok) {
-      probed[at[k]].status += "; on the other side: " + got[k].status;
-      continue;
-    }
-    probed[at[k]] = got[k];
-    taken_at[at[k]] = points[k].effects.back().values[0];
-  }
+  const std::vector<bool> got = EvaluateRetakes(model, at, points, probed);
+  for (size_t k = 0; k < at.size(); ++k)
+    if (got[k]) taken_at[at[k]] = points[k].effects.back().values[0];
 }
 
 // A base on a bound (bound_alternative.h): the controls that copy a bound parameter stand for it

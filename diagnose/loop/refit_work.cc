@@ -131,21 +131,32 @@ void RetakeOnOtherSide(ForwardModel& model, const FitState& fit,
       retakes.push_back(q);
     }
   }
-  if (retakes.empty()) return;
-  const std::vector<Prediction> got = model.Evaluate(retakes);
+  const std::vector<bool> got = EvaluateRetakes(model, at, retakes, probed);
   for (size_t k = 0; k < at.size(); ++k) {
+    if (!got[k]) continue;
     const size_t i = at[k] / (p + 1), j = at[k] % (p + 1);
-    if (!got[k].ok) {
-      probed[at[k]].status += "; on the other side: " + got[k].status;
-      continue;
-    }
     steps[i][j] = -steps[i][j];
     probes[at[k]] = retakes[k];
-    probed[at[k]] = got[k];
   }
 }
 
 }  // namespace
+
+std::vector<bool> EvaluateRetakes(ForwardModel& model, const std::vector<size_t>& at,
+                                  const std::vector<ModelPoint>& points,
+                                  std::vector<Prediction>& probed) {
+  if (points.empty()) return {};
+  const std::vector<Prediction> got = model.Evaluate(points);
+  std::vector<bool> valued(points.size());
+  for (size_t k = 0; k < at.size(); ++k) {
+    valued[k] = got[k].ok;
+    if (got[k].ok)
+      probed[at[k]] = got[k];
+    else
+      probed[at[k]].status += "; on the other side: " + got[k].status;
+  }
+  return valued;
+}
 
 void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
                      const std::vector<CandidateEffect>& candidates,
@@ -197,9 +208,10 @@ void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
       if (!got.ok) {
         const std::string name =
             j < p ? (j < names.size() ? names[j] : "base " + std::to_string(j)) : e.name;
-        w.retake_note = "held for a refit step, " + name +
-                        ": no finite-difference probe on either side has a value (" + got.status +
-                        ")";
+        w.retake_note += std::string(w.retake_note.empty() ? "" : "; ") +
+                         "held for a refit step, " + name +
+                         ": no finite-difference probe on either side has a value (" +
+                         got.status + ")";
       }
     }
     w.jacobian = J;

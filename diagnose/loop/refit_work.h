@@ -68,6 +68,15 @@ LinearRefitResult Refit(const Frame& f, const EffectParameter& p, const Eigen::V
 void Fill(const Frame& f, const Work& w, const std::vector<CandidateEffect>& candidates,
           const Eigen::VectorXd& r, RankingEntry* e);
 
+// Runs without a value (probed[at[k]]) retaken at points[k], in one batch: a retake with a value
+// replaces the run; one without appends its status to the run's ("; on the other side: ...").
+// Per retake, whether it got a value. The callers choose the other-side point: the signature
+// at minus the probe value (candidate_step.cc), a finite-difference probe one step back
+// (RecentredRefits).
+std::vector<bool> EvaluateRetakes(ForwardModel& model, const std::vector<size_t>& at,
+                                  const std::vector<ModelPoint>& points,
+                                  std::vector<Prediction>& probed);
+
 // Simulates the Gauss–Newton point of each candidate; keeps it when it beats the best so far
 // and corrects the signature by the secant through it.
 void SimulateRefits(ForwardModel& model, const Frame& f, const FitState& fit,

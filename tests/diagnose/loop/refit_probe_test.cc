@@ -17,12 +17,14 @@ namespace {
 
 // mean_i = measured_i + a_i (u − u*) + b_i (t − t*), with u the one base parameter and t the
 // effect's: the data are fitted exactly at (u*, t*). A run whose effect value is above `jam_above`
-// or below `jam_below` has no value, as a funnel that jams.
+// or below `jam_below`, or whose base value is outside [u_jam_below, u_jam_above], has no value,
+// as a funnel that jams.
 class JammingModel : public ForwardModel {
  public:
   std::vector<double> measured{10, 20, 30, 40}, a{1, 1, 1, 1}, b{1, -1, 2, 0};
   double u_true = 0.5, t_true = 0.1;
   double jam_above = INFINITY, jam_below = -INFINITY;
+  double u_jam_above = INFINITY, u_jam_below = -INFINITY;
   int BaseParameters() const override { return 1; }
   std::vector<std::string> BaseParameterNames() const override { return {"u"}; }
   BaseCalibration CalibrateBase(int) override { return {}; }
@@ -32,7 +34,7 @@ class JammingModel : public ForwardModel {
     for (const ModelPoint& p : points) {
       ++runs_;
       const double u = p.base_unit[0], t = p.effects.empty() ? 0 : p.effects.back().values[0];
-      if (t > jam_above || t < jam_below) {
+      if (t > jam_above || t < jam_below || u > u_jam_above || u < u_jam_below) {
         out.push_back({false, "jammed"});
         continue;
       }
@@ -123,6 +125,21 @@ TEST_CASE("a jammed signature run is retaken on the other side of the fit", "[un
   CHECK(out.step.entries[0].note.find("signature taken one-sided at -0.5") != std::string::npos);
   // The change at the probe value, linearised from the other side: b_i × 0.5.
   for (int i = 0; i < 4; ++i) CHECK(out.step.signatures[0][i] == Approx(0.5 * s.model.b[i]));
+}
+
+TEST_CASE("every coordinate held in a step is named in the note", "[unit]") {
+  Setup s;
+  s.model.jam_above = 0.3 + s.h;
+  s.model.jam_below = 0.3 - s.h;
+  const double u0 = s.fit.point.base_unit[0];
+  s.model.u_jam_above = u0 + 0.5 * s.h;
+  s.model.u_jam_below = u0 - 0.5 * s.h;
+  refits::RecentredRefits(s.model, s.frame, s.fit, {s.effect}, {&s.work});
+  // Nothing can move: the point stays, and both coordinates are said to be held.
+  CHECK(s.work.best_point.effects.back().values[0] == Approx(0.3));
+  CHECK(s.work.best_point.base_unit[0] == Approx(u0));
+  CHECK(s.work.retake_note.find("held for a refit step, u") != std::string::npos);
+  CHECK(s.work.retake_note.find("held for a refit step, t") != std::string::npos);
 }
 
 }  // namespace demcal::diagnose
