@@ -200,23 +200,33 @@ int64_t NeighbourList::Find(uint32_t i, uint32_t j) const {
   return (it != end && *it == j) ? (it - partner_.begin()) : -1;
 }
 
-std::vector<uint32_t> NeighbourList::CellOrder(const Settings& s,
-                                               const std::vector<Vec3>& x) const {
+std::vector<uint32_t> NeighbourList::CellOrder(const Settings& s, const std::vector<Vec3>& x,
+                                               const std::vector<uint8_t>& swept) const {
   const Grid grid = MakeGrid(s, x, x.size());
   // Cells in rows of whole planes, z slowest, x fastest. The force sweep revisits each sphere
   // when it reaches its partners' rows (Newton's third law adds to both), and the partners in the
   // next plane are a plane's worth of slots away: that span of sphere state must stay in a core's
-  // cache. A plane of more than kMaxPlaneCells cells (≈ 2.2 spheres of ≈ 140 B of state each:
-  // ≈ 630 kB, over half a 1 MB L2 cache) is replaced by the plane across the axis with the most
-  // cells. On a 190 mm wide, 50 mm deep bed (200,000 spheres) a plane across its height holds
-  // ≈ 12,700 spheres, one across its width ≈ 3,500: 9 % less CPU time per step; on its 60 mm
-  // wide twin (20,000), whose planes all fit, the other order was 3 % slower, so smaller grids
-  // keep z, y, x (docs/performance.md, "Large beds").
-  constexpr int64_t kMaxPlaneCells = 2048;
+  // cache. When the plane across z that a swept sphere sits in holds on average more than
+  // kMaxPlaneSpheres swept spheres (≈ 140 B of state each: ≈ 630 kB, over half a 1 MB L2
+  // cache), the planes lie across the axis with the most cells instead, the smallest planes.
+  // On a 190 mm wide, 50 mm deep bed (200,000 spheres) a plane across its height holds ≈ 12,700
+  // spheres, one across its width ≈ 3,500: 9 % less CPU time per step; on its 60 mm wide twin
+  // (20,000), whose planes all fit, the other order was 3 % slower (docs/performance.md, "Large
+  // beds"). Swept spheres are counted, not cells, and averaged over the spheres (Σ n² / Σ n over
+  // the planes' counts n) rather than taken at the fullest plane: a pour's column over a wide
+  // frozen base spans wide, nearly empty planes (the fixed base is not swept) and packs densely
+  // only where it lands; a rule by cells cost its pours 6–9 % (docs/performance.md).
+  constexpr int64_t kMaxPlaneSpheres = 4500;
+  std::vector<int64_t> per_plane(grid.nz, 0);
+  for (size_t i = 0; i < x.size(); ++i)
+    if (swept.empty() || swept[i]) ++per_plane[grid.CellOf(x[i]) / (grid.nx * grid.ny)];
   const int n[3] = {grid.nx, grid.ny, grid.nz};
   int axes[3] = {2, 1, 0};  // slowest first
-  if (int64_t{grid.nx} * grid.ny > kMaxPlaneCells)  // equal counts keep z, y, x
-    std::stable_sort(axes, axes + 3, [&](int a, int b) { return n[a] > n[b]; });
+  double spheres = 0, weighted = 0;
+  for (const int64_t count : per_plane)
+    spheres += static_cast<double>(count), weighted += static_cast<double>(count) * count;
+  if (weighted > kMaxPlaneSpheres * spheres)
+    std::stable_sort(axes, axes + 3, [&](int a, int b) { return n[a] > n[b]; });  // ties: z, y, x
   std::vector<std::pair<int64_t, uint32_t>> keyed(x.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, x.size()), [&](const auto& range) {
     for (size_t i = range.begin(); i != range.end(); ++i) {

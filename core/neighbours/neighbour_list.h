@@ -84,7 +84,10 @@ class NeighbourList {
   int64_t Find(uint32_t i, uint32_t j) const;
 
   // Particle slots ordered by cell (a locality-friendly order for Particles::Permute).
-  std::vector<uint32_t> CellOrder(const Settings& settings, const std::vector<Vec3>& positions) const;
+  // swept[i]: whether the force sweep visits slot i (not a fixed sphere it skips); empty: every
+  // slot. Only swept spheres count towards the size of a plane of cells (the .cc says why).
+  std::vector<uint32_t> CellOrder(const Settings& settings, const std::vector<Vec3>& positions,
+                                  const std::vector<uint8_t>& swept = {}) const;
 
   uint64_t Builds() const { return builds_; }
   // The list's arrays and its search scratch (core/math/heap_bytes.h).

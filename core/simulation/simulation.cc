@@ -188,17 +188,20 @@ void Simulation::RebuildNeighbours(bool allow_reorder, const std::vector<uint32_
   const size_t n = p.Size();
   size_t moving = n;
   bool fixed_last = true;  // every fixed sphere after every moving one
+  std::vector<uint8_t> swept;  // per slot, for a re-sort: whether the force sweep visits it
   if (options_.exclude_fixed_pairs) {
     moving = 0;
+    if (reorder) swept.resize(n);
     for (size_t i = 0; i < n; ++i) {
       const bool fixed = p.IsFixed(i);
       fixed_last = fixed_last && (fixed || moving == i);
       moving += !fixed;
+      if (reorder) swept[i] = !fixed;
     }
   }
   if (reorder || !fixed_last) {
     if (reorder) {
-      order = spare_list_.CellOrder(list_settings_, p.position_m);
+      order = spare_list_.CellOrder(list_settings_, p.position_m, swept);
     } else {
       order.resize(n);
       std::iota(order.begin(), order.end(), 0u);
