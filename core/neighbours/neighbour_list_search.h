@@ -50,21 +50,39 @@ void NeighbourList::ForEachCandidate(const Grid& grid, size_t i, const std::vect
         cells[a][count[a]++] = k;
     }
   }
+  // Cells adjacent along x hold adjacent runs of cell_particles_ (BucketIndex lists cell by
+  // cell), so where the x cells are consecutive a row of them is one run: one pair of bounds
+  // read per row instead of per cell. In a loose pack (a pour's column: less than one particle
+  // per cell) those bounds are most of the search's memory reads.
+  bool x_consecutive = count[0] > 0;
+  for (int k = 1; k < count[0]; ++k)
+    x_consecutive = x_consecutive && cells[0][k] == cells[0][k - 1] + 1;
+  auto visit_run = [&](uint32_t first, uint32_t last) {
+    for (uint32_t s = first; s < last; ++s) {
+      const uint32_t j = cell_particles_[s];
+      if ((kUpperOnly ? j <= i : j == i) || (own_body >= 0 && (*body)[j] == own_body)) continue;
+      const double reach = r[i] + r[j] + skin;
+      if (Norm2(box.MinimumImage(x[i] - x[j])) < reach * reach) visit(j);
+    }
+  };
   for (int cz = 0; cz < count[2]; ++cz) {
     for (int cy = 0; cy < count[1]; ++cy) {
       const int row = (cells[2][cz] * grid.ny + cells[1][cy]) * grid.nx;
+      if (x_consecutive) {
+        const uint32_t first = cell_start_[row + cells[0][0]];
+        const uint32_t last = cell_start_[row + cells[0][count[0] - 1] + 1];
+        // No skip by the run's last particle: across cells a run need not be in slot order
+        // (particles change cells between re-sorts; other plane orders put x slower).
+        visit_run(first, last);
+        continue;
+      }
       for (int cx = 0; cx < count[0]; ++cx) {
         const int cell = row + cells[0][cx];
         const uint32_t first = cell_start_[cell], last = cell_start_[cell + 1];
-        // A cell lists its particles in ascending slot order, and slots are kept in cell order
-        // (Simulation's periodic re-sort): about half the cells hold only j < i, skipped whole.
+        // A cell lists its particles in ascending slot order: one whose last precedes i holds
+        // only j < i, skipped whole.
         if (kUpperOnly && (first == last || cell_particles_[last - 1] <= i)) continue;
-        for (uint32_t s = first; s < last; ++s) {
-          const uint32_t j = cell_particles_[s];
-          if ((kUpperOnly ? j <= i : j == i) || (own_body >= 0 && (*body)[j] == own_body)) continue;
-          const double reach = r[i] + r[j] + skin;
-          if (Norm2(box.MinimumImage(x[i] - x[j])) < reach * reach) visit(j);
-        }
+        visit_run(first, last);
       }
     }
   }

@@ -9,6 +9,7 @@
 #include "apps/command_line.h"
 #include "outputs/exit_codes.h"
 #include "tests/workflow/test_paths.h"
+#include "core/io/scratch_dir.h"
 
 using demcal::apps::AddExportCommand;
 using demcal::testing::CheckHelpShows;
@@ -32,8 +33,8 @@ TEST_CASE("export refuses unknown targets and option values", "[unit][cli]") {
 
 TEST_CASE("export liggghts: cdt refused by pair; with the torque option a deck is written",
           "[unit][cli]") {
-  const fs::path dir = fs::temp_directory_path() / "demcal_export_command_test";
-  fs::remove_all(dir);
+  const demcal::testing::ScratchDir scratch("export_command_test");
+  const fs::path dir = scratch.path() / "deck";
   const std::string aor = (demcal::testing::RepoRoot() / "examples/aor_bp.json").string();
   CheckInputRefused(AddExportCommand,
                     {"export", "liggghts", aor, "--out", dir.string(), "--fidelity", "quick"},

@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 #include <filesystem>
+#include <unistd.h>
 
 #include "calibrate/target_evaluator.h"
 #include "synthetic_observable.h"
@@ -23,7 +24,9 @@ ParameterSpace RollingSpace() {
 }
 
 std::string FreshJournal(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / "demcal_calibration_test";
+  // One folder per process: ctest runs test cases side by side.
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("demcal_calibration_test_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   std::filesystem::remove(dir / name);
   return (dir / name).string();

@@ -13,9 +13,9 @@ using demcal::calibrate::ReplicateRecord;
 namespace {
 
 std::string FreshPath(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / "demcal_journal_test";
-  std::filesystem::create_directories(dir);
-  const std::string path = (dir / name).string();
+  // One folder per process: ctest runs test cases side by side.
+  static const demcal::testing::ScratchDir dir("journal_test");
+  const std::string path = dir.str(name);
   std::filesystem::remove(path);
   return path;
 }

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "objectives/report/svg_plot.h"
+#include "core/io/scratch_dir.h"
 
 using namespace demcal::workflow;
 
@@ -77,9 +78,8 @@ TEST_CASE("html report refuses a table row narrower than its header", "[unit]") 
 
 TEST_CASE("html report writes the page and the markdown with its figure files", "[unit]") {
   namespace fs = std::filesystem;
-  fs::path dir = fs::temp_directory_path() / "demcal_html_report_test";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const demcal::testing::ScratchDir scratch("html_report_test");
+  const fs::path dir = scratch.path();
   HtmlReport report("t");
   demcal::objectives::SvgPlot plot{.title = "p"};
   plot.series.push_back({.x = {0, 1}, .y = {0, 1}});

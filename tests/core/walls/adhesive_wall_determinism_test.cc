@@ -22,6 +22,7 @@
 #include "core/math/fnv1a.h"
 #include "core/math/random.h"
 #include "tests/core/walls/wall_test_support.h"
+#include "core/io/scratch_dir.h"
 
 namespace demcal::core {
 namespace {
@@ -92,9 +93,9 @@ uint64_t RunDigest(const Scene& scene, const std::string& checkpoint_path) {
 TEST_CASE("an adhesive scene on a plane and a mesh wall repeats bit for bit in one process",
           "[unit][physics][determinism]") {
   const Scene scene = AdhesiveSpheresOnWalls();
-  const auto dir = std::filesystem::temp_directory_path() / "demcal_adhesive_wall_determinism";
-  std::filesystem::create_directories(dir);
-  const std::string checkpoint = (dir / "state.ckpt").string();
+  // One folder per process: the memcheck run of this case (tests/CMakeLists.txt) runs beside it.
+  const demcal::testing::ScratchDir dir("adhesive_wall_determinism");
+  const std::string checkpoint = dir.str("state.ckpt");
 
   // The scene does what the test relies on: spheres rest on the floor and the plate, held by
   // adhesion, and some of them fell from the plate to the floor after it was removed.
@@ -119,7 +120,6 @@ TEST_CASE("an adhesive scene on a plane and a mesh wall repeats bit for bit in o
     INFO("stack filled with " << stack_value);
     CHECK(RunDigest(scene, checkpoint) == reference);
   }
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace demcal::core

@@ -7,6 +7,7 @@
 #include "objectives/report/heap_face_svg.h"
 #include "objectives/report/segregation_csv.h"
 #include "objectives/metrics/synthetic_heap.h"
+#include "core/io/scratch_dir.h"
 
 using namespace demcal::objectives;
 using demcal::objectives::testing::MakeHeap;
@@ -130,8 +131,8 @@ TEST_CASE("the granule track CSV has a row per sample with the specific kinetic 
 
 TEST_CASE("the writers create files and report an unwritable path", "[unit]") {
   const Fixture f;
-  const auto dir = std::filesystem::temp_directory_path() / "demcal_segregation_outputs";
-  std::filesystem::create_directories(dir);
+  const demcal::testing::ScratchDir scratch("segregation_outputs");
+  const std::filesystem::path dir = scratch.path();
   std::string error;
   CHECK(WriteBinCsv((dir / "bins.csv").string(), f.grid, f.counts, f.names, &error));
   CHECK(WriteSegregationCsv((dir / "indices.csv").string(), f.seg, f.names, &error));
