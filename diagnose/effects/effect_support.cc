@@ -1,5 +1,7 @@
 #include "diagnose/effects/effect_support.h"
 
+#include "core/contact/normal_model.h"
+
 namespace demcal::diagnose {
 namespace {
 
@@ -62,7 +64,14 @@ bool ShiftSelfContactWithCoating(calibrate::PairProperty property, double per_le
   double level = 1;
   if (!c.coating_column.empty() && !calibrate::ConditionNumber(condition, c.coating_column, &level))
     level = 0;
-  return ShiftPairProperty(property, m, m, per_level * level, model, why);
+  if (!ShiftPairProperty(property, m, m, per_level * level, model, why)) return false;
+  // One normal law per scene (core/contact/normal_model.h): an adhesion law added to a model
+  // with the other one is refused here, before any run, rather than by every run's validation.
+  const auto laws = core::NormalLawsCalledFor(model->pair_parameters);
+  if (laws.size() < 2) return true;
+  *why = "the model would call for two adhesion laws, " + laws[0].first + " and " +
+         laws[1].first + "; a scene runs one";
+  return false;
 }
 
 }  // namespace demcal::diagnose

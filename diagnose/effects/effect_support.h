@@ -29,7 +29,9 @@ double CoatingScale(const EffectContext& context);
 std::string CoatingScaledName(const EffectContext& context, const std::string& plain,
                               const std::string& stem, const std::string& unit_suffix);
 // The species' self-contact `property` += per_level × the condition's coating level (× 1 without
-// a coating column; an uncoated condition, with no level, gets 0).
+// a coating column; an uncoated condition, with no level, gets 0). False with why when the
+// result leaves the property's range or makes the model call for two normal laws (JKR's Γ and
+// sjkr's k: a scene runs one).
 bool ShiftSelfContactWithCoating(calibrate::PairProperty property, double per_level,
                                  const calibrate::Condition& condition,
                                  const EffectContext& context, core::Scene* model,

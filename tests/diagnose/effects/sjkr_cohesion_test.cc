@@ -67,6 +67,17 @@ TEST_CASE("sjkr_cohesion writes k = q·w into the species' self-contact only", "
   m = Model();
   CHECK_FALSE(e->Apply({-1}, {{"coating_PEG_wt_pct", "3"}}, Context(), &m, &why));
   CHECK(why.find("cohesion_energy_density_J_m3 of BP-BP") != std::string::npos);
+  // On a model with JKR adhesion (here BP-perspex), sjkr would make a scene of two laws.
+  m = Model();
+  m.pair_parameters[1].interfacial_energy_J_m2 = m.pair_parameters[2].interfacial_energy_J_m2 =
+      0.01;
+  CHECK_FALSE(e->Apply({5000}, {{"coating_PEG_wt_pct", "3"}}, Context(), &m, &why));
+  CHECK(why == "the model would call for two adhesion laws, jkr and sjkr; a scene runs one");
+  m = Model();
+  m.pair_parameters[0].cohesion_energy_density_J_m3 = 100;
+  CHECK_FALSE(FindEffect("jkr_adhesion")
+                  ->Apply({0.004}, {{"coating_PEG_wt_pct", "3"}}, Context(), &m, &why));
+  CHECK(why.find("two adhesion laws") != std::string::npos);
 }
 
 }  // namespace demcal::diagnose
