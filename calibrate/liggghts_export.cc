@@ -147,14 +147,15 @@ bool ConvertToLiggghts(const core::Scene& m, const ContactUse& use,
         law->notes.push_back(PairName(m, i, j) + ": cdt μr " + Number(p.rolling_friction) +
                              " written as " + Number(p.rolling_friction * factor) +
                              " (torque conversion ×" + Number(factor) + ")");
-      adhesive = adhesive || p.interfacial_energy_J_m2 > 0;
+      adhesive = adhesive || p.interfacial_energy_J_m2 > 0 || p.cohesion_energy_density_J_m3 > 0;
     }
   }
   if (!adhesive) return true;
   for (size_t i = 0; i < n; ++i) {
     for (size_t j = 0; j < n; ++j) {
       const double gamma = m.pair_parameters[i * n + j].interfacial_energy_J_m2;
-      double k = 0;
+      // A pair with sjkr's own k goes across as it is: the same law (core/contact/sjkr.h).
+      double k = m.pair_parameters[i * n + j].cohesion_energy_density_J_m3;
       if (gamma > 0) {
         if (!options.sjkr_approximation) {
           *error = PairName(m, i, j) + ": JKR adhesion (Γ = " + Number(gamma) +

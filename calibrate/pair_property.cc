@@ -19,6 +19,8 @@ constexpr PropertyInfo kProperties[] = {
     {PairProperty::kRollingFriction, "rolling_friction", "", 0, 10, true},
     {PairProperty::kRestitution, "restitution", "", 0, 1, true},
     {PairProperty::kInterfacialEnergy, "interfacial_energy_J_m2", "J/m2", 0, 1e3, true},
+    {PairProperty::kCohesionEnergyDensity, "cohesion_energy_density_J_m3", "J/m3", 0,
+     core::limits::kCohesionEnergyDensity.hi, true},
     {PairProperty::kAspectRatio, "aspect_ratio", "", core::limits::kClumpAspectRatio.lo,
      core::limits::kClumpAspectRatio.hi, false},
 };
@@ -34,6 +36,7 @@ double& Slot(core::PairParameters& pair, PairProperty property) {
     case PairProperty::kRollingFriction: return pair.rolling_friction;
     case PairProperty::kRestitution: return pair.restitution;
     case PairProperty::kInterfacialEnergy: return pair.interfacial_energy_J_m2;
+    case PairProperty::kCohesionEnergyDensity: return pair.cohesion_energy_density_J_m3;
     case PairProperty::kSlidingFriction:
     case PairProperty::kAspectRatio: break;
   }

@@ -17,10 +17,11 @@ enum class PairProperty {
   kRollingFriction,
   kRestitution,
   kInterfacialEnergy,
+  kCohesionEnergyDensity,  // sjkr's k (J/m3)
   kAspectRatio,  // of the species of material i (= j); see above
 };
 
-// The key used in study files ("sliding_friction", ...) and its unit ("" or "J/m2").
+// The key used in study files ("sliding_friction", ...) and its unit ("", "J/m2" or "J/m3").
 const char* PairPropertyKey(PairProperty property);
 const char* PairPropertyUnit(PairProperty property);
 double PairPropertyMax(PairProperty property);  // physical upper limit

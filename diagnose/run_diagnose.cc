@@ -60,6 +60,8 @@ int CopiedParameter(const std::string& key, const workflow::StudyFile& study,
     return Fits(study, PairProperty::kRollingFriction, c.material, {c.material});
   if (key == "jkr_adhesion")
     return Fits(study, PairProperty::kInterfacialEnergy, c.material, {c.material});
+  if (key == "sjkr_cohesion")
+    return Fits(study, PairProperty::kCohesionEnergyDensity, c.material, {c.material});
   if (key == "wall_friction")
     return Fits(study, PairProperty::kSlidingFriction, c.material, c.wall_materials);
   return -1;
@@ -121,7 +123,8 @@ int RunDiagnose(const DiagnoseCommandOptions& o, std::ostream& log) {
   for (const Effect* e : effects) {
     const int copies = CopiedParameter(e->Key(), study, context);
     candidates.push_back({e->Key(), e->Description(), e->Parameters(context),
-                          copies >= 0 || e->Key() == "sliding_friction_control", copies});
+                          copies >= 0 || e->Key() == "sliding_friction_control", copies,
+                          e->Mechanism()});
   }
   StudyModelOptions mo{o.out_dir, o.quick, o.threads, o.max_evaluations, o.quiet ? nullptr : &log};
   std::unique_ptr<StudyModel> model = StudyModel::Create(study, effects, context, mo, &error);

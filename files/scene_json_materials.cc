@@ -29,11 +29,14 @@ void ReadPairFields(JsonFields& f, PairParameters* p) {
   f.Number("restitution", &p->restitution, kOptional, Range::Of(physical::kRestitution));
   f.Number("interfacial_energy_J_m2", &p->interfacial_energy_J_m2, kOptional,
            Range::Of(physical::kInterfacialEnergy, "J/m2"));
+  f.Number("cohesion_energy_density_J_m3", &p->cohesion_energy_density_J_m3, kOptional,
+           Range::Of(physical::kCohesionEnergyDensity, "J/m3"));
 }
 
 const std::vector<std::string>& PairKeys() {
   static const std::vector<std::string> keys = {"sliding_friction", "rolling_friction",
-                                                "restitution", "interfacial_energy_J_m2"};
+                                                "restitution", "interfacial_energy_J_m2",
+                                                "cohesion_energy_density_J_m3"};
   return keys;
 }
 

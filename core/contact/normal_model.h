@@ -5,10 +5,15 @@
 // documents, and one alternative in NormalModel below; everything else asks this registry.
 //
 // The law is chosen once per run from the pair table (SelectNormalModel: the last law in
-// registry order that some pair calls for, else the first; today JKR when any pair has Γ > 0,
-// with Γ = 0 pairs reducing exactly to Hertz–Mindlin inside it), made with its options from the
+// registry order that some pair calls for, else the first; JKR when any pair has Γ > 0, sjkr
+// when any pair has k > 0, with the other pairs reducing exactly to Hertz–Mindlin inside it),
+// made with its options from the
 // scene's contact_model section (MakeNormalModel), and dispatched once per force pass by
-// std::visit around the contact loop (ContactForces::Compute), never per contact.
+// std::visit around the contact loop (ContactForces::Compute), never per contact. One law runs a
+// scene, so a pair table that calls for two adhesive laws (JKR's Γ on one pair, sjkr's k on
+// another) is refused by the scene's validation (NormalLawsCalledFor), not run with one of them
+// silently dropped: each law's loop is instantiated without the other's term, which keeps the
+// loop of the scenes without adhesion exactly what it was.
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -18,11 +23,12 @@
 #include "core/contact/hertz_mindlin.h"
 #include "core/contact/jkr.h"
 #include "core/contact/rolling_model.h"
+#include "core/contact/sjkr.h"
 #include "core/materials/interaction_table.h"
 
 namespace demcal::core {
 
-using NormalModel = std::variant<HertzMindlinNormal, JkrNormal>;
+using NormalModel = std::variant<HertzMindlinNormal, JkrNormal, SjkrNormal>;
 
 namespace normal_model_detail {
 template <class F>
@@ -44,6 +50,22 @@ inline const std::vector<std::string>& NormalModelNames() {
     return n;
   }();
   return names;
+}
+
+// For each law of the registry that some pair calls for, the index of the first such pair in
+// `pairs` (in registry order); more than one entry means the table mixes laws, which no scene may.
+inline std::vector<std::pair<std::string, size_t>> NormalLawsCalledFor(
+    const std::vector<PairParameters>& pairs) {
+  std::vector<std::pair<std::string, size_t>> called;
+  normal_model_detail::ForEachLaw([&](auto k) {
+    using Law = normal_model_detail::Law<k()>;
+    for (size_t i = 0; i < pairs.size(); ++i)
+      if (Law::CalledFor(pairs[i])) {
+        called.emplace_back(Law::kName, i);
+        return;
+      }
+  });
+  return called;
 }
 
 // The law the pair table calls for, with its options at their defaults.

@@ -46,6 +46,10 @@ inline constexpr Limit kRestitution = LeftOpen(0, 1);
 // Interfacial energy Γ: real adhesive contacts are below ~1 J/m2; the bound leaves three decades
 // for Γ carried to a softer simulation stiffness by the Cohesion-number scaling.
 inline constexpr Limit kInterfacialEnergy = Closed(0, 1e3);  // J/m2
+// sjkr cohesion energy density k (J/m³ = Pa: a cohesive stress over the contact circle). LIGGGHTS
+// users set 1e3 to 1e6; a cohesive stress above 1 GPa would exceed the strength of any solid
+// bridge between grains, so the bound still leaves three decades above the largest in use.
+inline constexpr Limit kCohesionEnergyDensity = Closed(0, 1e9);  // J/m3
 // EPSD rolling damping ratio (Ai et al. 2011): a fraction of critical damping.
 inline constexpr Limit kDampingRatio = Closed(0, 1);
 

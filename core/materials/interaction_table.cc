@@ -14,8 +14,9 @@ double BetaFromRestitution(double e) {
 }
 
 ResolvedPair MakeResolvedPair(double e_star, double g_star, double beta, double mu_s, double mu_r,
-                              double gamma) {
-  ResolvedPair pair{e_star, g_star, beta, mu_s, mu_r, gamma, 0.0, std::sqrt(4.0 * g_star / e_star)};
+                              double gamma, double cohesion_energy_density_J_m3) {
+  ResolvedPair pair{e_star, g_star, beta, mu_s, mu_r, gamma, 0.0,
+                    std::sqrt(4.0 * g_star / e_star), cohesion_energy_density_J_m3};
   ResolveNormalModelConstants(pair);  // what the normal laws derive from the pair
   return pair;
 }
@@ -34,7 +35,8 @@ InteractionTable::InteractionTable(const std::vector<Material>& materials,
                            2 * (2 - b.poisson_ratio) * (1 + b.poisson_ratio) / b.youngs_modulus_Pa;
       resolved_[i * n_ + j] =
           MakeResolvedPair(1.0 / inv_e, 1.0 / inv_g, BetaFromRestitution(p.restitution),
-                           p.sliding_friction, p.rolling_friction, p.interfacial_energy_J_m2);
+                           p.sliding_friction, p.rolling_friction, p.interfacial_energy_J_m2,
+                           p.cohesion_energy_density_J_m3);
     }
   }
 }

@@ -61,9 +61,14 @@ std::vector<FingerprintPart> SceneFingerprint(const Scene& s, double timestep_s,
     }
   }));
   parts.push_back(Part("contact parameters", [&](Fnv1a64& h) {
-    for (const PairParameters& p : s.pair_parameters)
+    for (const PairParameters& p : s.pair_parameters) {
       h.Field(p.sliding_friction), h.Field(p.rolling_friction), h.Field(p.restitution),
           h.Field(p.interfacial_energy_J_m2);
+      // Hashed only when set: a scene without sjkr cohesion hashes as one that cannot have it,
+      // so the checkpoints and journals of such scenes keep their keys.
+      if (p.cohesion_energy_density_J_m3 != 0)
+        h.Text("sjkr"), h.Field(p.cohesion_energy_density_J_m3);
+    }
     h.Text(s.rolling.name), h.Field(s.rolling.epsd_damping_ratio), h.Text(s.rolling.jkr_rolling_load);
   }));
   parts.push_back(Part("walls", [&](Fnv1a64& h) {

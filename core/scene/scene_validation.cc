@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/contact/jkr.h"
+#include "core/contact/normal_model.h"
 #include "core/scene/field_checker.h"
 #include "core/limits/physical_limits.h"
 #include "core/scene/scene.h"
@@ -88,7 +89,20 @@ void CheckPairs(const Scene& s, Checker& c) {
       c.Within(f + ".restitution", p.restitution, limits::kRestitution);
       c.Within(f + ".interfacial_energy_J_m2", p.interfacial_energy_J_m2,
                limits::kInterfacialEnergy, "J/m2");
+      c.Within(f + ".cohesion_energy_density_J_m3", p.cohesion_energy_density_J_m3,
+               limits::kCohesionEnergyDensity, "J/m3");
     }
+  }
+  // One normal law runs a scene (normal_model.h): a table that calls for two is refused.
+  const auto called = NormalLawsCalledFor(s.pair_parameters);
+  if (called.size() > 1) {
+    std::string laws;
+    for (const auto& [name, k] : called)
+      laws += (laws.empty() ? "" : " and ") + name + " (first at interactions[" +
+              s.materials[k / n].name + "," + s.materials[k % n].name + "])";
+    c.Fail("field 'interactions' calls for two normal laws, " + laws +
+           "; a scene runs one: give every pair either interfacial_energy_J_m2 (JKR) or "
+           "cohesion_energy_density_J_m3 (sjkr), not both kinds");
   }
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <set>
 
+#include "calibrate/liggghts_export.h"
+
 namespace demcal::diagnose {
 namespace {
 
@@ -25,6 +27,7 @@ void BaseValues(const core::Scene& model, int s, EffectContext* out) {
     out->sliding_friction = self.sliding_friction;
     out->rolling_friction = self.rolling_friction;
     out->interfacial_energy = self.interfacial_energy_J_m2;
+    out->cohesion_energy_density = self.cohesion_energy_density_J_m3;
     out->wall_friction = 0;
     bool first = true;
     for (const std::string& wall : out->wall_materials) {
@@ -33,6 +36,10 @@ void BaseValues(const core::Scene& model, int s, EffectContext* out) {
       first = false;
     }
   }
+  const core::Material& own = model.materials[m];
+  out->self_effective_youngs_Pa =
+      own.youngs_modulus_Pa / (2 * (1 - own.poisson_ratio * own.poisson_ratio));
+  out->self_effective_radius_m = 0.5 * calibrate::ContactUseOf(model).mean_radius_m[m];
   const core::SizeDistribution& size = model.species[s].size;
   using Kind = core::SizeDistribution::Kind;
   out->relative_width = 0;

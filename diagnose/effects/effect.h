@@ -25,7 +25,7 @@ namespace demcal::diagnose {
 // Signed: an effect may strengthen what the base model assumes (value > 0) or weaken it
 // (value < 0: less rolling resistance, lower wall friction, ...); lower < 0 wherever the
 // property can fall without leaving its physical range at the base model's value (μr ≥ 0,
-// Γ ≥ 0, μw ≥ 0, a relative width ≥ 0).
+// Γ ≥ 0, k ≥ 0, μw ≥ 0, a relative width ≥ 0).
 struct EffectParameter {
   std::string name;  // unique within the effect, unit in the name ("delta_mu_r")
   std::string unit;  // "" for a dimensionless one
@@ -59,6 +59,11 @@ struct EffectContext {
   double sliding_friction = 0;    // species' self-contact μs
   double rolling_friction = 0;    // species' self-contact μr
   double interfacial_energy = 0;  // species' self-contact Γ, J/m²
+  double cohesion_energy_density = 0;  // species' self-contact sjkr k, J/m³
+  // The species' self-contact E* (Pa) and R* (m, half its mean radius), at full scale: what an
+  // adhesion effect converts its probe with.
+  double self_effective_youngs_Pa = 0;
+  double self_effective_radius_m = 0;
   double wall_friction = 0;       // the smallest μs between the species and a wall material
   double relative_width = 0;      // (d_max − d_min) / d_mean of its size cut
 };
@@ -68,6 +73,10 @@ class Effect {
   virtual ~Effect() = default;
   virtual std::string Key() const = 0;          // "jkr_adhesion"
   virtual std::string Description() const = 0;  // what it changes in the model, in words
+  // The physical mechanism the effect is one law of ("adhesion" for JKR and sjkr). Two laws of
+  // one mechanism that fit equally still name the mechanism (ranking.h); by default an effect is
+  // a mechanism of its own.
+  virtual std::string Mechanism() const { return Key(); }
   virtual std::vector<EffectParameter> Parameters(const EffectContext& context) const = 0;
   // Writes the effect with these values (one per parameter) into the model of one condition.
   // False with why when the model lacks what the effect acts on or the value is out of range.

@@ -5,6 +5,7 @@ namespace demcal::diagnose {
 const std::vector<const Effect*>& EffectLibrary() {
   static const std::vector<const Effect*> library = {
       JkrAdhesionEffect(),
+      SjkrCohesionEffect(),
       RollingResistanceEffect(),
       ParticleShapeEffect(),
       SizePolydispersityEffect(),

@@ -14,6 +14,7 @@
 namespace demcal::diagnose {
 
 const Effect* JkrAdhesionEffect();
+const Effect* SjkrCohesionEffect();
 const Effect* RollingResistanceEffect();
 const Effect* ParticleShapeEffect();
 const Effect* SizePolydispersityEffect();

@@ -17,31 +17,25 @@ namespace {
 class JkrAdhesion final : public Effect {
  public:
   std::string Key() const override { return "jkr_adhesion"; }
+  std::string Mechanism() const override { return "adhesion"; }
   std::string Description() const override {
     return "JKR adhesion: interfacial energy of the species' self-contact, proportional to the "
            "coating level "
            "when the data have a coating column";
   }
   std::vector<EffectParameter> Parameters(const EffectContext& c) const override {
-    const double scale = c.coating_column.empty() ? 1.0 : c.coating_max;
-    const std::string name =
-        c.coating_column.empty() ? "gamma_J_m2" : "gamma_per_" + c.coating_column + "_J_m2";
+    const double scale = CoatingScale(c);
     // Down to Γ = 0 at the largest coating level (Γ_base + g·w ≥ 0 for every w up to it).
-    return {{name, "J/m2", -c.interfacial_energy / scale, 0.03 / scale, 0.01 / scale,
-             "more adhesion than assumed",
+    return {{CoatingScaledName(c, "gamma_J_m2", "gamma", "J_m2"), "J/m2",
+             -c.interfacial_energy / scale, kJkrUpperGamma_J_m2 / scale,
+             kJkrProbeGamma_J_m2 / scale, "more adhesion than assumed",
              c.interfacial_energy > 0 ? "less adhesion than assumed" : "",
              c.interfacial_energy / scale}};
   }
   bool Apply(const std::vector<double>& v, const calibrate::Condition& condition,
              const EffectContext& c, core::Scene* model, std::string* why) const override {
-    int m = 0;
-    if (!FindMaterial(*model, c.material, &m, why)) return false;
-    double level = 1;
-    if (!c.coating_column.empty() &&
-        !calibrate::ConditionNumber(condition, c.coating_column, &level))
-      level = 0;
-    return ShiftPairProperty(calibrate::PairProperty::kInterfacialEnergy, m, m, v[0] * level, model,
-                             why);
+    return ShiftSelfContactWithCoating(calibrate::PairProperty::kInterfacialEnergy, v[0],
+                                       condition, c, model, why);
   }
 };
 

@@ -100,17 +100,33 @@ std::string Names(const std::vector<int>& named, const std::vector<CandidateEffe
   return s;
 }
 
-// "rolling_resistance (less rolling resistance than assumed, delta_mu_r = -0.06)" per added effect.
-std::string Signed(const ModelPoint& point, const std::vector<CandidateEffect>& candidates) {
+// "rolling_resistance (less rolling resistance than assumed, delta_mu_r = -0.06)" per added
+// effect; an effect whose law was not told apart from another of its mechanism is preceded by
+// "adhesion, law not told apart: sjkr_cohesion or jkr_adhesion; the better fit: ".
+std::string Signed(const Diagnosis& d, const ModelPoint& point,
+                   const std::vector<CandidateEffect>& candidates) {
   std::ostringstream s;
   s.precision(3);
   for (const ActiveEffect& a : point.effects) {
-    const EffectParameter& p = candidates[a.candidate].parameters[0];
-    s << (s.tellp() > 0 ? " + " : "") << candidates[a.candidate].key << " ("
-      << EffectDirection(p, a.values[0]) << ", " << p.name << " = " << a.values[0]
-      << (p.unit.empty() ? "" : " " + p.unit) << ")";
+    const CandidateEffect& c = candidates[a.candidate];
+    const EffectParameter& p = c.parameters[0];
+    s << (s.tellp() > 0 ? " + " : "");
+    for (size_t k = 0; k < d.named.size() && k < d.named_law_alternative.size(); ++k)
+      if (d.named[k] == a.candidate && d.named_law_alternative[k] >= 0)
+        s << c.mechanism << ", law not told apart: " << c.key << " or "
+          << candidates[d.named_law_alternative[k]].key << "; the better fit: ";
+    s << c.key << " (" << EffectDirection(p, a.values[0]) << ", " << p.name << " = "
+      << a.values[0] << (p.unit.empty() ? "" : " " + p.unit) << ")";
   }
   return s.str();
+}
+
+// Whether candidate c is another law of a mechanism already named.
+bool MechanismNamed(const Diagnosis& d, const std::vector<CandidateEffect>& candidates, int c) {
+  for (int n : d.named)
+    if (!candidates[c].mechanism.empty() && candidates[n].mechanism == candidates[c].mechanism)
+      return true;
+  return false;
 }
 
 // `after_fit` is what the "after" figures describe: the fit with the named effects, or, for a
@@ -149,7 +165,7 @@ void Finish(const std::vector<Observation>& observations, const FitState& fit,
            "see where the fit goes";
     }
   } else if (d->termination == DiagnosisTermination::kEffectFound) {
-    m << "missing effect: " << Signed(fit.point, candidates) << "; after adding it "
+    m << "missing effect: " << Signed(*d, fit.point, candidates) << "; after adding it "
       << d->gap_after.summary;
   } else if (d->termination == DiagnosisTermination::kNotToldApart &&
              d->bound.verdict == BoundVerdict::kNotToldApart) {
@@ -157,8 +173,8 @@ void Finish(const std::vector<Observation>& observations, const FitState& fit,
   } else if (d->termination == DiagnosisTermination::kNotToldApart) {
     m << "not told apart: " << TieText(*d, candidates) << "; " << d->separating.description;
   } else if (d->termination == DiagnosisTermination::kGapRemains) {
-    m << "added " << Signed(fit.point, candidates) << " but a gap remains (" << d->gap_after.summary
-      << "), not explained by the library";
+    m << "added " << Signed(*d, fit.point, candidates) << " but a gap remains ("
+      << d->gap_after.summary << "), not explained by the library";
     if (!d->not_told_apart.empty())
       m << "; next, not told apart: " << TieText(*d, candidates) << "; "
         << d->separating.description;
@@ -262,7 +278,9 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
          static_cast<int>(d.named.size()) < options.max_effects) {
     std::vector<int> remaining;
     for (int c = 0; c < static_cast<int>(candidates.size()); ++c)
-      if (std::find(d.named.begin(), d.named.end(), c) == d.named.end()) remaining.push_back(c);
+      if (std::find(d.named.begin(), d.named.end(), c) == d.named.end() &&
+          !MechanismNamed(d, candidates, c))
+        remaining.push_back(c);
     if (remaining.empty()) break;
     const auto step_start = Clock::now();
     const bool first = d.steps.empty();
@@ -321,6 +339,9 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
       break;
     }
     d.named.push_back(s.step.entries[s.step.ranking.winner].candidate);
+    const int alternative = s.step.ranking.same_mechanism;
+    d.named_law_alternative.push_back(alternative >= 0 ? s.step.entries[alternative].candidate
+                                                       : -1);
     fit = s.next;
     const GapReport g =
         TestGap(WithPrediction(observations, fit.prediction, options.discrepancy_floor),

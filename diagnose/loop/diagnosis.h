@@ -23,7 +23,10 @@
 //     (a copy of a fitted parameter) first or level with the winner: "model-form offset / no
 //     missing effect", never the control. A winner (and its tie, if any) that only re-values
 //     a parameter the base model already has, by no more than its assumed value
-//     (revaluation.h): "model-form offset" with the re-valuation stated, not named.
+//     (revaluation.h): "model-form offset" with the re-valuation stated, not named. Two laws
+//     of one mechanism within ΔBIC 6 (JKR and sjkr adhesion) name the mechanism with the
+//     better-fitting law and say the law is not told apart; once a mechanism is named, its
+//     other laws are not tried on top of it.
 // A base fitted onto a bound of its range (gap or not) gets the first step with the controls
 // copying that parameter refitted and the best effects refitted again with it held inside
 // (candidate_step.h); bound_step.h judges: an effect that rules the bound out goes on, one
@@ -103,6 +106,9 @@ struct Diagnosis {
   double floor_before = 0, floor_after = 0;
   std::vector<DiagnosisStep> steps;
   std::vector<int> named;            // candidate indices added, in order
+  // Per named effect: another law of its mechanism that the data did not tell apart from it
+  // (candidate index; −1: none). The mechanism is named, with the better-fitting law's values.
+  std::vector<int> named_law_alternative;
   std::vector<int> not_told_apart;   // candidate indices of the last step's tie (kNotToldApart)
   SeparatingMeasurement separating;  // the measurement that would tell them apart
   std::string control_note;          // why the control guard held (a model-form offset)

@@ -27,6 +27,8 @@ struct CandidateEffect {
   // control then stands for that parameter beyond its range when the base fit ends on its
   // bound (bound_alternative.h).
   int copies = -1;
+  // The physical mechanism it is a law of (Effect::Mechanism); "": a mechanism of its own.
+  std::string mechanism;
 };
 
 struct ActiveEffect {

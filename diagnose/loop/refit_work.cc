@@ -43,6 +43,7 @@ void Fill(const Frame& f, const Work& w, const std::vector<CandidateEffect>& can
   const int k = static_cast<int>(candidates[w.candidate].parameters.size());
   e->candidate = w.candidate;
   e->key = candidates[w.candidate].key;
+  e->mechanism = candidates[w.candidate].mechanism;
   e->chi2_linear = w.refit.chi2;
   e->linear = EvidenceWithFloor(f.r0, w.refit.residuals, f.q, k, f.fitted, f.per_candidate);
   e->simulated = w.simulated;

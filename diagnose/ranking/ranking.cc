@@ -7,6 +7,10 @@
 
 namespace demcal::diagnose {
 
+bool SameMechanism(const RankingEntry& a, const RankingEntry& b) {
+  return !a.mechanism.empty() && a.mechanism == b.mechanism;
+}
+
 Ranking RankCandidates(const std::vector<RankingEntry>& entries) {
   Ranking r;
   r.order.resize(entries.size());
@@ -53,12 +57,18 @@ Ranking RankCandidates(const std::vector<RankingEntry>& entries) {
     << ", likelihood-ratio p " << entries[r.winner].evidence.lr_p_value << ")";
   for (int i : r.order) {
     if (i == r.winner) continue;
-    if (entries[i].simulated && !ToldApart(entries[i].evidence, entries[r.winner].evidence)) {
-      r.distinguished = false;
-      if (r.tied < 0) r.tied = i;
-      m << "; not told apart from " << entries[i].key << " (delta BIC "
-        << entries[i].evidence.delta_bic << ")";
+    if (!entries[i].simulated || ToldApart(entries[i].evidence, entries[r.winner].evidence))
+      continue;
+    if (SameMechanism(entries[i], entries[r.winner])) {
+      if (r.same_mechanism < 0) r.same_mechanism = i;
+      m << "; law not told apart from " << entries[i].key << " (same mechanism, "
+        << entries[i].mechanism << "; delta BIC " << entries[i].evidence.delta_bic << ")";
+      continue;
     }
+    r.distinguished = false;
+    if (r.tied < 0) r.tied = i;
+    m << "; not told apart from " << entries[i].key << " (delta BIC "
+      << entries[i].evidence.delta_bic << ")";
   }
   r.message = m.str();
   return r;

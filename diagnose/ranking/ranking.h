@@ -12,7 +12,11 @@
 // runner-up is not told apart from the winner (ToldApart, evidence.h: within kBicIndistinct or
 // within the refits' simulation noise) the two are not told apart and the ranking
 // says so (`distinguished` false; only simulated refits are compared); the winner is still the
-// lower ΔBIC.
+// lower ΔBIC. Laws of one mechanism: a runner-up not told apart from the winner that is another
+// law of the winner's mechanism (JKR and sjkr adhesion) does not make a tie: the mechanism is
+// what the diagnosis names, and both laws say it is there; it is `same_mechanism` instead, so
+// the answer names the mechanism, the better-fitting law (the winner) and that the law is not
+// told apart. Entries of different mechanisms (or none declared) tie as before.
 //
 //   Ranking r = RankCandidates(entries, 0.01);
 //   if (r.winner >= 0) entries[r.winner].key ...
@@ -28,6 +32,7 @@ namespace demcal::diagnose {
 struct RankingEntry {
   int candidate = 0;  // index into the loop's candidates
   std::string key;
+  std::string mechanism;       // the physical mechanism it is a law of; "": its own
   std::vector<double> values;  // refitted effect parameters
   double chi2_linear = 0;      // predicted by the linearised refit
   Evidence linear;
@@ -47,9 +52,13 @@ struct Ranking {
   int winner = -1;         // entry index, −1: none significant (or the control guard held)
   bool distinguished = true;
   int tied = -1;               // an entry not told apart from the winner (−1: none)
+  int same_mechanism = -1;     // another law of the winner's mechanism, not told apart from it
   bool control_first = false;  // the control ranked first, or level with the winner: no effect
   std::string message;
 };
+
+// Both entries declare the same mechanism (two laws of it).
+bool SameMechanism(const RankingEntry& a, const RankingEntry& b);
 
 Ranking RankCandidates(const std::vector<RankingEntry>& entries);
 

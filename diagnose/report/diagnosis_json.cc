@@ -127,6 +127,9 @@ Json StepJson(const DiagnosisRunInfo& info, const std::vector<Observation>& obs,
           {"distinguished", s.ranking.distinguished},
           {"not_told_apart_from",
            s.ranking.tied >= 0 ? Json(s.entries[s.ranking.tied].key) : Json(nullptr)},
+          {"law_not_told_apart_from", s.ranking.same_mechanism >= 0
+                                          ? Json(s.entries[s.ranking.same_mechanism].key)
+                                          : Json(nullptr)},
           {"control_first", s.ranking.control_first},
           {"separating_measurement",
            s.ranking.tied >= 0 ? SeparatingJson(obs, s.separating) : Json(nullptr)},
@@ -179,6 +182,19 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
                               {"direction", EffectDirection(p, a.values[0])}});
   }
   j["named_effects"] = named;
+  // Per named effect, its mechanism and the other law of it the data did not tell apart (null:
+  // none): "adhesion", "jkr_adhesion" when sjkr_cohesion fitted better but not decisively.
+  Json mechanisms = Json::array();
+  for (size_t k = 0; k < d.named.size(); ++k) {
+    const int alternative = k < d.named_law_alternative.size() ? d.named_law_alternative[k] : -1;
+    const CandidateEffect& c = info.candidates[d.named[k]];
+    mechanisms.push_back({{"effect", c.key},
+                          {"mechanism", c.mechanism.empty() ? c.key : c.mechanism},
+                          {"law_not_told_apart_from", alternative >= 0
+                                                          ? Json(info.candidates[alternative].key)
+                                                          : Json(nullptr)}});
+  }
+  j["named_mechanisms"] = mechanisms;
   j["named_effects_signed"] = signed_effects;
   Json revalued = Json::array();  // model form: re-valued modelled parameters, never named
   for (const ActiveEffect& a : d.revalued) {

@@ -48,6 +48,10 @@ double ScaleGammaAtConstantCohesion(double gamma_J_m2, double stiffness_ratio, d
   return gamma_J_m2 * std::pow(stiffness_ratio, 0.4) * std::pow(size_ratio, 1.6);
 }
 
+double ScaleSjkrAtConstantBond(double k_J_m3, double stiffness_ratio, double size_ratio) {
+  return k_J_m3 * std::cbrt(stiffness_ratio * stiffness_ratio * size_ratio);
+}
+
 namespace {
 
 void ScaleSizes(double s, core::SizeDistribution* size) {
@@ -65,8 +69,11 @@ void ApplyFidelity(const Fidelity& fidelity, core::Scene* scene) {
   for (core::ParticleSpec& p : scene->particles) p.diameter_m *= s;
   for (core::Material& m : scene->materials) m.youngs_modulus_Pa *= k;
   // Every E scales by k, so every E* does; every R* of a particle pair scales by s.
-  for (core::PairParameters& pair : scene->pair_parameters)
+  for (core::PairParameters& pair : scene->pair_parameters) {
     pair.interfacial_energy_J_m2 = ScaleGammaAtConstantCohesion(pair.interfacial_energy_J_m2, k, s);
+    pair.cohesion_energy_density_J_m3 =
+        ScaleSjkrAtConstantBond(pair.cohesion_energy_density_J_m3, k, s);
+  }
   scene->time.rayleigh_fraction = fidelity.rayleigh_fraction;
 }
 

@@ -5,7 +5,8 @@
 //     ratios and mass fractions are kept; the geometry of the test is not scaled);
 //   * stiffness reduction: every material's Young's modulus × stiffness_scale;
 //   * Γ carried by the Cohesion number Coh = (1/(ρ g)) [Γ⁵/(E*² R*⁸)]^{1/3} (Behjani et al.
-//     2017, used by the paper): Coh fixed ⇒ Γ' = Γ (E*'/E*)^{2/5} (R*'/R*)^{8/5}.
+//     2017, used by the paper): Coh fixed ⇒ Γ' = Γ (E*'/E*)^{2/5} (R*'/R*)^{8/5};
+//   * sjkr's k carried at constant cohesive-to-weight ratio: k' = k (E*'/E*)^{2/3} (R'/R)^{1/3}.
 // The fidelity is written into every experiment output.
 //
 // Usage:
@@ -39,9 +40,14 @@ double GammaForCohesionNumber(double coh, double effective_youngs_Pa, double eff
                               double density_kg_m3, double gravity_m_s2);
 // Γ at constant Cohesion number (and density) after E* × stiffness_ratio, R* × size_ratio.
 double ScaleGammaAtConstantCohesion(double gamma_J_m2, double stiffness_ratio, double size_ratio);
+// sjkr's cohesion energy density k at constant cohesive-to-weight ratio after the same scaling:
+// the cohesion k·π a² ≈ 2πkR*δ at the overlap δ ∝ (W / (E*√R*))^{2/3} a grain's weight W ∝ ρgR³
+// makes is a fraction ∝ k / (E*^{2/3} R^{1/3} (ρg)^{1/3}) of W, so k ∝ E*^{2/3} R^{1/3}
+// (docs/physics.md §6).
+double ScaleSjkrAtConstantBond(double k_J_m3, double stiffness_ratio, double size_ratio);
 
 // Scales the species sizes (and explicit particle diameters), every material's Young's modulus
-// and every pair's Γ of `scene`, and sets its time-step fraction. Geometry is left alone.
+// and every pair's Γ and k of `scene`, and sets its time-step fraction. Geometry is left alone.
 void ApplyFidelity(const Fidelity& fidelity, core::Scene* scene);
 
 }  // namespace demcal::objectives

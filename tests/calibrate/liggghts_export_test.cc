@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 using namespace demcal;
 
@@ -108,6 +109,23 @@ TEST_CASE("LIGGGHTS export: JKR is refused naming the pair, or written as sjkr o
   CHECK_THAT(
       calibrate::LiggghtsMaterialLines(m, law),
       Catch::Contains("fix m7 all property/global cohesionEnergyDensity peratomtypepair 2 0 "));
+}
+
+TEST_CASE("LIGGGHTS export: a pair with sjkr's own k is written as cohesion sjkr, unchanged",
+          "[unit][calibrate]") {
+  core::Scene m = BpAndPerspex();
+  m.rolling.name = "epsd2";
+  m.pair_parameters[0].cohesion_energy_density_J_m3 = 7500;
+  calibrate::LiggghtsLaw law;
+  std::string error;
+  // No approximation asked for: it is LIGGGHTS' own law (core/contact/sjkr.h).
+  REQUIRE(calibrate::ConvertToLiggghts(m, calibrate::ContactUseOf(m, {1}), {}, &law, &error));
+  CHECK_THAT(law.model, Catch::EndsWith("cohesion sjkr rolling_friction epsd2"));
+  CHECK(law.cohesion_energy_density_J_m3 == std::vector<double>{7500, 0, 0, 0});
+  CHECK(law.notes.empty());
+  CHECK_THAT(calibrate::LiggghtsMaterialLines(m, law),
+             Catch::Contains("fix m7 all property/global cohesionEnergyDensity peratomtypepair 2 "
+                             "7500 0 "));
 }
 
 TEST_CASE("LIGGGHTS export: sjkr's k carries JKR's pull-off force at its zero-load contact",

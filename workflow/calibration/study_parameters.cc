@@ -84,7 +84,7 @@ void ParseStudyParameter(const nlohmann::json& j, const std::string& path, Study
   f.String("name", &name, kRequired);
   f.String("property", &property, kRequired,
            {"sliding_friction", "rolling_friction", "restitution", "interfacial_energy_J_m2",
-            "aspect_ratio"});
+            "cohesion_energy_density_J_m3", "aspect_ratio"});
   std::pair<std::string, std::string> names;
   int mi = 0, mj = 0;
   if (!f.ok() || !ParsePair(f, study->experiment().model, &names, &mi, &mj)) return;

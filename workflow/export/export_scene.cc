@@ -118,7 +118,8 @@ bool ApplyCalibratedParams(const nlohmann::json& params, const std::string& sour
       calibrate::PairProperty property;
       if (!calibrate::PairPropertyFromKey(it.key(), &property)) {
         *error = where + "." + it.key() + "' is not a pair property (sliding_friction, " +
-                 "rolling_friction, restitution, interfacial_energy_J_m2)";
+                 "rolling_friction, restitution, interfacial_energy_J_m2, " +
+                 "cohesion_energy_density_J_m3)";
         return false;
       }
       const double max = calibrate::PairPropertyMax(property);

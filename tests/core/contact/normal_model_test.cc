@@ -21,7 +21,7 @@ PairParameters Pair(double gamma_J_m2) {
 }  // namespace
 
 TEST_CASE("every normal law of the registry is listed by its name", "[unit][contact]") {
-  CHECK(NormalModelNames() == std::vector<std::string>{"hertz_mindlin", "jkr"});
+  CHECK(NormalModelNames() == std::vector<std::string>{"hertz_mindlin", "jkr", "sjkr"});
   CHECK(NormalModelName(NormalModel{}) == "hertz_mindlin");
   CHECK(NormalModelName(JkrNormal{}) == "jkr");
 }

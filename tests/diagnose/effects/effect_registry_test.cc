@@ -19,7 +19,14 @@ core::Scene Model() {
   return m;
 }
 
-EffectContext Context() { return {"BP", "BP", {"perspex"}, "coating_PEG_wt_pct", 3.0}; }
+// With the self-contact E* and R* MakeEffectContext derives from Model() (E/(2(1 − ν²)), half
+// the mean radius), which the sjkr candidate converts its probe with.
+EffectContext Context() {
+  EffectContext c{"BP", "BP", {"perspex"}, "coating_PEG_wt_pct", 3.0};
+  c.self_effective_youngs_Pa = 2.5e8 / (2 * (1 - 0.25 * 0.25));
+  c.self_effective_radius_m = 0.5 * 231.25e-6;
+  return c;
+}
 
 }  // namespace
 
@@ -40,10 +47,11 @@ TEST_CASE("effect library: every effect is off at 0 and declares a probe inside 
     REQUIRE(e->Apply({0.0}, {{"coating_PEG_wt_pct", "3"}}, Context(), &m, &why));
     CHECK(m.pair_parameters[0].sliding_friction == 0.5);
     CHECK(m.pair_parameters[0].interfacial_energy_J_m2 == 0);
+    CHECK(m.pair_parameters[0].cohesion_energy_density_J_m3 == 0);
     CHECK(m.species[0].clump_shape.empty());
     CHECK(m.species[0].size.max_diameter_m == 500e-6);
   }
-  CHECK(keys.size() == 6);
+  CHECK(keys.size() == 7);
   CHECK(FindEffect("nonsense") == nullptr);
 }
 

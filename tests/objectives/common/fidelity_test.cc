@@ -1,6 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <utility>
 
 #include "objectives/common/fidelity.h"
 
@@ -28,6 +29,23 @@ TEST_CASE("Γ scaled at constant Cohesion number keeps the number", "[unit]") {
   CHECK(ScaleGammaAtConstantCohesion(0.086, 0.25 / 1.6, 1.0) == Approx(0.0409).epsilon(2e-3));
 }
 
+TEST_CASE("sjkr's k scaled with a fidelity keeps the cohesion-to-weight ratio", "[unit]") {
+  // The sjkr force k·π a² (a² → 2Rδ on a flat) at the Hertz overlap of a grain under its own
+  // weight W (Johnson, Contact Mechanics, 1985, §4.2: δ = (3W / (4E*√R))^{2/3}), over W.
+  auto ratio = [](double k, double e_star, double r) {
+    const double w = 1500 * 9.81 * 4.0 / 3.0 * std::acos(-1.0) * r * r * r;
+    const double delta = std::pow(3 * w / (4 * e_star * std::sqrt(r)), 2.0 / 3.0);
+    return k * std::acos(-1.0) * 2 * r * delta / w;
+  };
+  const double k = 2e4, e_star = 2e8, r = 3e-4;
+  for (const auto& [stiffness, size] : {std::pair{0.01, 5.0}, std::pair{0.01, 1.0},
+                                        std::pair{1.0, 3.0}, std::pair{0.1, 0.5}}) {
+    const double scaled = ScaleSjkrAtConstantBond(k, stiffness, size);
+    CHECK(ratio(scaled, stiffness * e_star, size * r) ==
+          Approx(ratio(k, e_star, r)).epsilon(1e-12));
+  }
+}
+
 TEST_CASE("a fidelity scales sizes, moduli and Γ of a scene together", "[unit]") {
   core::Scene s;
   s.materials = {{"a", 2e8, 0.25, 1000}, {"wall", 3e9, 0.25, 0}};
@@ -38,6 +56,7 @@ TEST_CASE("a fidelity scales sizes, moduli and Γ of a scene together", "[unit]"
   s.species[1].size.max_diameter_m = 3e-3;
   s.pair_parameters = std::vector<core::PairParameters>(4);
   s.pair_parameters[0].interfacial_energy_J_m2 = 0.1;
+  s.pair_parameters[3].cohesion_energy_density_J_m3 = 1e4;
   const Fidelity f{"test", 2.0, 0.1, 0.25};
   REQUIRE(f.IsValid(nullptr));
   ApplyFidelity(f, &s);
@@ -48,6 +67,9 @@ TEST_CASE("a fidelity scales sizes, moduli and Γ of a scene together", "[unit]"
   CHECK(s.pair_parameters[0].interfacial_energy_J_m2 ==
         Approx(0.1 * std::pow(0.1, 0.4) * std::pow(2.0, 1.6)));
   CHECK(s.pair_parameters[1].interfacial_energy_J_m2 == 0);
+  CHECK(s.pair_parameters[3].cohesion_energy_density_J_m3 ==
+        Approx(1e4 * std::pow(0.1, 2.0 / 3.0) * std::pow(2.0, 1.0 / 3.0)));
+  CHECK(s.pair_parameters[0].cohesion_energy_density_J_m3 == 0);
   CHECK(s.time.rayleigh_fraction == 0.25);
 }
 
