@@ -6,17 +6,14 @@
 
 #include "core/simulation/simulation.h"
 #include "files/scene_json.h"
+#include "tests/files/pour_box_document.h"
 #include "workflow/test_paths.h"
 
 using namespace demcal::workflow;
+using demcal::testing::PourBoxDocument;
 using nlohmann::json;
 
 namespace {
-
-json PourBox() {
-  return json::parse(
-      std::ifstream((demcal::testing::RepoRoot() / "examples" / "pour_box.json").string()));
-}
 
 std::string ErrorOf(const json& document) {
   SceneFile file;
@@ -27,7 +24,7 @@ std::string ErrorOf(const json& document) {
 }  // namespace
 
 TEST_CASE("particles marked fixed are read and stay in place in a run", "[unit]") {
-  json d = PourBox();
+  json d = PourBoxDocument();
   d.erase("factories");
   d.erase("fills");
   d["particles"] = json::parse(R"([
@@ -55,7 +52,7 @@ TEST_CASE("particles marked fixed are read and stay in place in a run", "[unit]"
 }
 
 TEST_CASE("a non-boolean fixed is refused naming the field", "[unit]") {
-  json d = PourBox();
+  json d = PourBoxDocument();
   d["particles"] = json::parse(R"([{"species": "beads", "position_m": [0.02, 0.02, 0.1],
       "fixed": 1}])");
   CHECK_THAT(ErrorOf(d), Catch::Contains("particles[0].fixed"));

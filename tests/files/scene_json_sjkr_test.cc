@@ -7,17 +7,14 @@
 
 #include "core/contact/normal_model.h"
 #include "files/scene_json.h"
+#include "tests/files/pour_box_document.h"
 #include "workflow/test_paths.h"
 
 using namespace demcal::workflow;
+using demcal::testing::PourBoxDocument;
 using nlohmann::json;
 
 namespace {
-
-json PourBox() {
-  return json::parse(
-      std::ifstream((demcal::testing::RepoRoot() / "examples" / "pour_box.json").string()));
-}
 
 // Parses `document` into `file` and returns the error ("" if it parsed).
 std::string Parse(const json& document, SceneFile* file) {
@@ -28,7 +25,7 @@ std::string Parse(const json& document, SceneFile* file) {
 }  // namespace
 
 TEST_CASE("a pair's sjkr cohesion energy density is read and selects the sjkr law", "[unit]") {
-  json d = PourBox();
+  json d = PourBoxDocument();
   d["interactions"]["pairs"][0]["cohesion_energy_density_J_m3"] = 7500.0;
   SceneFile file;
   REQUIRE(Parse(d, &file).empty());
@@ -43,7 +40,7 @@ TEST_CASE("a pair's sjkr cohesion energy density is read and selects the sjkr la
 
 TEST_CASE("a bad sjkr cohesion energy density is refused naming file, field and range",
           "[unit]") {
-  json d = PourBox();
+  json d = PourBoxDocument();
   SceneFile file;
   d["interactions"]["default"]["cohesion_energy_density_J_m3"] = -1.0;
   std::string error = Parse(d, &file);
@@ -57,7 +54,7 @@ TEST_CASE("a bad sjkr cohesion energy density is refused naming file, field and 
 }
 
 TEST_CASE("a scene whose pairs call for both JKR and sjkr is refused with both named", "[unit]") {
-  json d = PourBox();
+  json d = PourBoxDocument();
   d["interactions"]["default"]["interfacial_energy_J_m2"] = 0.01;
   d["interactions"]["pairs"][0]["cohesion_energy_density_J_m3"] = 7500.0;
   SceneFile file;

@@ -6,10 +6,12 @@
 #include <fstream>
 #include <set>
 
+#include "tests/files/pour_box_document.h"
 #include "workflow/test_paths.h"
 
 using namespace demcal::workflow;
 using demcal::testing::RepoRoot;
+using demcal::testing::PourBoxDocument;
 using nlohmann::json;
 
 namespace {
@@ -17,8 +19,6 @@ namespace {
 std::string Example(const std::string& relative) {
   return (RepoRoot() / "examples" / relative).string();
 }
-
-json PourBox() { return json::parse(std::ifstream(Example("pour_box.json"))); }
 
 // Parses `document` and returns the error ("" if it parsed).
 std::string ErrorOf(const json& document) {
@@ -63,7 +63,7 @@ TEST_CASE("the pour_box example parses into the scene it describes", "[unit]") {
 }
 
 TEST_CASE("shear moduli become Young's moduli and plane normals are normalised", "[unit]") {
-  json d = PourBox();
+  json d = PourBoxDocument();
   d["materials"][0].erase("youngs_modulus_Pa");
   d["materials"][0]["shear_modulus_Pa"] = 2e6;
   d["walls"] = json::parse(R"([{"type": "plane", "point_m": [0, 0, 0], "normal": [0, 0, 2],
@@ -80,7 +80,7 @@ TEST_CASE("shear moduli become Young's moduli and plane normals are normalised",
 
 TEST_CASE("cylinder, cone and mesh walls are read with motion and load point", "[unit]") {
   namespace core = demcal::core;
-  json d = PourBox();
+  json d = PourBoxDocument();
   d["walls"] = json::parse(R"([
     {"type": "cylinder", "name": "silo", "material": "steel", "axis_point_m": [0.02, 0.02, 0],
      "axis": [0, 0, 3], "radius_m": 0.015, "axial_max_m": 0.1, "velocity_m_s": [0, 0, 0.01],
@@ -124,7 +124,7 @@ TEST_CASE("cylinder, cone and mesh walls are read with motion and load point", "
 
 TEST_CASE("bad cylinder, cone and mesh walls are rejected naming the field", "[unit]") {
   auto error_of = [](const char* walls) {
-    json d = PourBox();
+    json d = PourBoxDocument();
     d["walls"] = json::parse(walls);
     SceneFile file;
     std::string error;
@@ -158,7 +158,7 @@ TEST_CASE("bad cylinder, cone and mesh walls are rejected naming the field", "[u
 }
 
 TEST_CASE("periodic axes are read per axis and checked against gravity by the core", "[unit]") {
-  json d = PourBox();
+  json d = PourBoxDocument();
   d["walls"] = json::array();
   d["walls"].push_back(json::parse(
       R"({"type": "plane", "point_m": [0, 0, 0], "normal": [0, 0, 1], "material": "steel"})"));
@@ -177,7 +177,7 @@ TEST_CASE("periodic axes are read per axis and checked against gravity by the co
 }
 
 TEST_CASE("explicit particles and diameter tables are read", "[unit]") {
-  json d = PourBox();
+  json d = PourBoxDocument();
   d["species"].push_back(json::parse(R"({"name": "mix", "material": "glass",
       "diameter_table": [{"diameter_m": 0.001, "number_fraction": 0.25},
                          {"diameter_m": 0.002, "number_fraction": 0.75}]})"));
@@ -193,7 +193,7 @@ TEST_CASE("explicit particles and diameter tables are read", "[unit]") {
 }
 
 TEST_CASE("clump shapes are read as explicit spheres or from an ellipsoid", "[unit]") {
-  json d = PourBox();
+  json d = PourBoxDocument();
   d["species"][0]["clump"] = json::parse(
       R"({"spheres": [{"centre": [-0.5, 0, 0], "radius": 0.6}, {"centre": [0.5, 0, 0], "radius": 0.6}]})");
   d["species"].push_back(json::parse(R"({"name": "rods", "material": "glass", "diameter_m": 0.002,
@@ -209,7 +209,7 @@ TEST_CASE("clump shapes are read as explicit spheres or from an ellipsoid", "[un
   CHECK(file.scene.species[1].clump_shape.size() == 4);
   CHECK(file.scene.particles[0].orientation.w == 1.0);  // normalised
 
-  json plain = PourBox();
+  json plain = PourBoxDocument();
   plain["particles"] = json::parse(R"([{"species": "beads", "position_m": [0.02, 0.02, 0.1],
       "orientation": [1, 0, 0, 0]}])");
   CHECK_THAT(ErrorOf(plain), Catch::Contains("'particles[0].orientation' applies only to clump "
@@ -225,7 +225,7 @@ TEST_CASE("clump shapes are read as explicit spheres or from an ellipsoid", "[un
 }
 
 TEST_CASE("factories are read with box or cylinder regions and mass fractions", "[unit]") {
-  json d = PourBox();
+  json d = PourBoxDocument();
   d["species"].push_back(
       json::parse(R"({"name": "fines", "material": "glass", "diameter_m": 0.0015})"));
   d["factories"] = json::parse(R"([
@@ -316,7 +316,7 @@ TEST_CASE("each kind of bad input gives an error naming the file and the field",
   };
   for (const Case& c : cases) {
     INFO(c.what);
-    json d = PourBox();
+    json d = PourBoxDocument();
     d[json::json_pointer(c.pointer)] = c.value;
     const std::string error = ErrorOf(d);
     CHECK_THAT(error, Catch::StartsWith("scene.json: "));
@@ -327,7 +327,7 @@ TEST_CASE("each kind of bad input gives an error naming the file and the field",
 TEST_CASE("missing fields, conflicting alternatives and zero normals are rejected by name",
           "[unit]") {
   auto without = [](const char* pointer) {
-    json d = PourBox();
+    json d = PourBoxDocument();
     const json::json_pointer p(pointer);
     d[p.parent_pointer()].erase(p.back());
     return ErrorOf(d);
@@ -346,19 +346,19 @@ TEST_CASE("missing fields, conflicting alternatives and zero normals are rejecte
              Catch::Contains("'species[0].diameter_m' is missing: give exactly one of"));
   CHECK_THAT(without("/fills"), Catch::Contains("the scene places no particles"));
 
-  json both = PourBox();
+  json both = PourBoxDocument();
   both["materials"][0]["shear_modulus_Pa"] = 1e6;
   CHECK_THAT(ErrorOf(both), Catch::Contains("'materials[0].shear_modulus_Pa' cannot be given "
                                             "together with 'youngs_modulus_Pa'"));
-  json zero = PourBox();
+  json zero = PourBoxDocument();
   zero["walls"].push_back(json::parse(
       R"({"type": "plane", "point_m": [0, 0, 0], "normal": [0, 0, 0], "material": "steel"})"));
   CHECK_THAT(ErrorOf(zero), Catch::Contains("field 'walls[1].normal' must be a non-zero vector"));
-  json twice = PourBox();
+  json twice = PourBoxDocument();
   twice["interactions"]["pairs"].push_back(
       json::parse(R"({"materials": ["steel", "glass"], "restitution": 0.9})"));
   CHECK_THAT(ErrorOf(twice), Catch::Contains("'interactions.pairs[1].materials' repeats the pair"));
-  json same_name = PourBox();
+  json same_name = PourBoxDocument();
   same_name["materials"][1]["name"] = "glass";
   CHECK_THAT(ErrorOf(same_name), Catch::Contains("'materials[1].name' = 'glass' is used twice"));
 }
