@@ -14,6 +14,11 @@ namespace demcal::core {
 
 struct Scene;
 
+// The path of element i of a list field: "walls[2]".
+inline std::string IndexedField(const std::string& name, size_t i) {
+  return name + "[" + std::to_string(i) + "]";
+}
+
 // Collects the first violation as "field = value is outside allowed range".
 class FieldChecker {
  public:

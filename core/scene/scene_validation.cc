@@ -1,6 +1,6 @@
 // Scene::IsValid: every field of a scene checked against its physical range, then the
-// cross-field limits (walls inside the domain and not across a periodic axis, particles not
-// inside one another, factories that fit, a run that fits a step counter).
+// cross-field limits (walls inside the domain and not across a periodic axis: wall_validation.h;
+// particles not inside one another, factories that fit, a run that fits a step counter).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -12,21 +12,19 @@
 #include "core/limits/physical_limits.h"
 #include "core/scene/scene.h"
 #include "core/scene/scene_overlaps.h"
-#include "core/walls/triangle_mesh.h"
-#include "core/walls/wall_extent.h"
+#include "core/scene/wall_validation.h"
 
 namespace demcal::core {
 namespace {
 
 using Checker = FieldChecker;
 
-std::string Indexed(const std::string& name, size_t i) { return name + "[" + std::to_string(i) + "]"; }
 
 void CheckMaterials(const Scene& s, Checker& c) {
   if (s.materials.empty()) c.Fail("field 'materials' must list at least one material");
   for (size_t i = 0; i < s.materials.size(); ++i) {
     const Material& m = s.materials[i];
-    const std::string f = Indexed("materials", i);
+    const std::string f = IndexedField("materials", i);
     c.Within(f + ".youngs_modulus_Pa", m.youngs_modulus_Pa, limits::kYoungsModulus, "Pa");
     c.Within(f + ".poisson_ratio", m.poisson_ratio, limits::kPoissonRatio);
     // A wall material needs no density (0); a particle material's is checked with its species.
@@ -38,7 +36,7 @@ void CheckMaterials(const Scene& s, Checker& c) {
 void CheckSpecies(const Scene& s, Checker& c) {
   for (size_t i = 0; i < s.species.size(); ++i) {
     const Species& sp = s.species[i];
-    const std::string f = Indexed("species", i);
+    const std::string f = IndexedField("species", i);
     if (sp.material < 0 || sp.material >= static_cast<int>(s.materials.size()))
       c.Fail("field '" + f + ".material' names no defined material");
     else
@@ -106,119 +104,13 @@ void CheckPairs(const Scene& s, Checker& c) {
   }
 }
 
-// A surface's IsValid message "cylinder: radius_m must be ..." becomes
-// "field 'walls[2].radius_m' must be ... (cylinder 'silo')".
-void CheckWall(const Scene& s, size_t i, Checker& c) {
-  const Wall& w = s.walls[i];
-  const std::string f = Indexed("walls", i);
-  if (w.material < 0 || w.material >= static_cast<int>(s.materials.size()))
-    c.Fail("field '" + f + ".material' names no defined material");
-  std::string message;
-  const bool shape_ok = std::visit(
-      [&](const auto& shape) {
-        using S = std::decay_t<decltype(shape)>;
-        if constexpr (std::is_same_v<S, MeshRef>) {
-          if (shape.mesh && IsFinite(shape.offset_m)) return true;
-          message = shape.mesh ? "mesh: offset_m is not finite"
-                               : "mesh: mesh holds no triangle mesh (read the STL file with "
-                                 "ReadMeshWall before validating the scene)";
-          return false;
-        } else {
-          return shape.IsValid(&message);
-        }
-      },
-      w.shape);
-  if (!shape_ok) {
-    const size_t colon = message.find(": ");
-    const size_t space = message.find(' ', colon + 2);
-    if (colon == std::string::npos || space == std::string::npos) {
-      c.Fail("field '" + f + "' (" + ShapeName(w.shape) + "): " + message);
-    } else {
-      c.Fail("field '" + f + "." + message.substr(colon + 2, space - colon - 2) + "'" +
-             message.substr(space) + " (" + ShapeName(w.shape) + " '" + w.name + "')");
-    }
-  }
-  // Finite is not enough for the round walls' sizes either (limits::kWallRadius, kCoordinate);
-  // an unbounded cylinder keeps its infinite axial ends.
-  if (const auto* cyl = std::get_if<CylinderSurface>(&w.shape); cyl && c.ok()) {
-    c.Within(f + ".radius_m", cyl->radius_m, limits::kWallRadius, "m");
-    if (std::isfinite(cyl->axial_min_m))
-      c.Within(f + ".axial_min_m", cyl->axial_min_m, limits::kCoordinate, "m");
-    if (std::isfinite(cyl->axial_max_m))
-      c.Within(f + ".axial_max_m", cyl->axial_max_m, limits::kCoordinate, "m");
-  }
-  if (const auto* cone = std::get_if<ConeFrustumSurface>(&w.shape); cone && c.ok()) {
-    c.Within(f + ".radius0_m", cone->radius0_m, limits::kWallRadius, "m");
-    c.Within(f + ".radius1_m", cone->radius1_m, limits::kWallRadius, "m");
-    c.Within(f + ".height0_m", cone->height0_m, limits::kCoordinate, "m");
-    c.Within(f + ".height1_m", cone->height1_m, limits::kCoordinate, "m");
-  }
-  if (!c.ok()) return;
-  const char* axes = "xyz";
-  // docs/scene_format.md: no wall across a periodic axis (particles would wrap through it); a
-  // wall a particle radius inside the periodic box, or unchanged along the axis, is fine.
-  // (A periodic axis along gravity is reported below, as the more basic mistake.)
-  for (int a = 0; a < 3 && c.ok(); ++a) {
-    if (!s.periodic[a] || s.gravity_m_s2[a] != 0 || InvariantAlongAxis(w, a)) continue;
-    const AxisInterval x = WallExtent(w, a, s.time.duration_s);
-    const double margin = 0.5 * s.MaxDiameter();
-    if (x.lo_m >= s.domain_min_m[a] + margin && x.hi_m <= s.domain_max_m[a] - margin) continue;
-    std::ostringstream os;
-    os << "field '" << f << "' (" << ShapeName(w.shape) << " '" << w.name
-       << "') crosses the periodic axis " << axes[a] << ": it ";
-    if (std::isinf(x.lo_m) || std::isinf(x.hi_m))
-      os << "is unbounded along " << axes[a];
-    else
-      os << "reaches [" << x.lo_m << ", " << x.hi_m << "] m along " << axes[a];
-    os << ", the periodic domain is [" << s.domain_min_m[a]
-       << ", " << s.domain_max_m[a] << "] m and a wall must stay a particle radius (" << margin
-       << " m) inside it or be unchanged along the axis (a plane parallel to it, an infinite "
-       << "cylinder along it); drop the wall (a box: its " << axes[a] << " faces) or periodic."
-       << axes[a];
-    c.Fail(os.str());
-  }
-  if (const auto* ref = std::get_if<MeshRef>(&w.shape);
-      ref && ref->mesh && ref->mesh->NumVertices() > 0 && c.ok()) {
-    // A mesh that never meets the domain is a unit or offset mistake (mm read as m).
-    Vec3 lo = ref->mesh->Vertex(0) + ref->offset_m, hi = lo;
-    for (size_t v = 0; v < ref->mesh->NumVertices(); ++v)
-      for (int a = 0; a < 3; ++a) {
-        const double x = ref->mesh->Vertex(static_cast<int32_t>(v))[a] + ref->offset_m[a];
-        lo[a] = std::min(lo[a], x);
-        hi[a] = std::max(hi[a], x);
-      }
-    const double travel =
-        Norm(w.velocity_m_s) *
-        (std::isinf(w.motion_end_s) ? s.time.duration_s : w.motion_end_s - w.motion_start_s);
-    for (int a = 0; a < 3; ++a)
-      if (hi[a] + travel < s.domain_min_m[a] || lo[a] - travel > s.domain_max_m[a]) {
-        std::ostringstream os;
-        os << "field '" << f << "' (mesh '" << w.name << "' from " << ref->source
-           << ") lies entirely outside the domain along " << axes[a] << ": the mesh spans ["
-           << lo[a] << ", " << hi[a] << "] m, the domain [" << s.domain_min_m[a] << ", "
-           << s.domain_max_m[a] << "] m; check the STL's units (scale) and offset_m";
-        c.Fail(os.str());
-        break;
-      }
-  }
-  c.Magnitude(f + ".velocity_m_s", w.velocity_m_s, limits::kSpeed, "m/s");
-  const char* origin = std::holds_alternative<MeshRef>(w.shape)        ? ".offset_m"
-                       : std::holds_alternative<PlaneSurface>(w.shape) ? ".point_m"
-                                                                       : ".axis_point_m";
-  c.Point(f + origin, ShapeOrigin(w.shape));
-  c.Point(f + ".load_point_m", w.load_point_m);
-  c.Range(f + ".motion_start_s", w.motion_start_s, 0, 1e9, false, false, "s");
-  if (!std::isinf(w.motion_end_s) || w.motion_end_s < 0)
-    c.Range(f + ".motion_end_s", w.motion_end_s, w.motion_start_s, 1e9, false, false, "s");
-}
-
 void CheckGeometry(const Scene& s, Checker& c) {
   c.Point("domain.min_m", s.domain_min_m);
   c.Point("domain.max_m", s.domain_max_m);
   for (int a = 0; a < 3; ++a)
     if (!(s.domain_max_m[a] > s.domain_min_m[a]))
       c.Fail("field 'domain.max_m' must exceed 'domain.min_m' on every axis");
-  for (size_t i = 0; i < s.walls.size(); ++i) CheckWall(s, i, c);
+  for (size_t i = 0; i < s.walls.size(); ++i) CheckSceneWall(s, i, c);
   c.Magnitude("gravity_m_s2", s.gravity_m_s2, limits::kGravity, "m/s2");
   const char* axis_names[3] = {"x", "y", "z"};
   for (int a = 0; a < 3 && c.ok(); ++a) {
@@ -243,7 +135,7 @@ void CheckParticles(const Scene& s, Checker& c) {
   const int ns = static_cast<int>(s.species.size());
   for (size_t i = 0; i < s.particles.size(); ++i) {
     const ParticleSpec& p = s.particles[i];
-    const std::string f = Indexed("particles", i);
+    const std::string f = IndexedField("particles", i);
     if (p.species < 0 || p.species >= ns) c.Fail("field '" + f + ".species' names no defined species");
     if (p.diameter_m != 0) c.Within(f + ".diameter_m", p.diameter_m, limits::kDiameter, "m");
     for (int a = 0; a < 3; ++a)
@@ -262,7 +154,7 @@ void CheckParticles(const Scene& s, Checker& c) {
   }
   for (size_t i = 0; i < s.fills.size(); ++i) {
     const FillSpec& fl = s.fills[i];
-    const std::string f = Indexed("fills", i);
+    const std::string f = IndexedField("fills", i);
     if (fl.species < 0 || fl.species >= ns) c.Fail("field '" + f + ".species' names no defined species");
     c.Range(f + ".count", static_cast<double>(fl.count), 0, 1e8, true, false);
     c.Magnitude(f + ".velocity_m_s", fl.velocity_m_s, limits::kSpeed, "m/s");
@@ -279,7 +171,7 @@ void CheckFactories(const Scene& s, Checker& c) {
   const int ns = static_cast<int>(s.species.size());
   for (size_t i = 0; i < s.factories.size(); ++i) {
     const FactorySpec& f = s.factories[i];
-    const std::string name = Indexed("factories", i);
+    const std::string name = IndexedField("factories", i);
     if (f.species.empty() || f.species.size() != f.mass_fractions.size()) {
       c.Fail("field '" + name + ".species' must list at least one species with a mass fraction each");
       continue;
@@ -372,12 +264,12 @@ bool Scene::IsValid(std::string* error) const {
   if (c.ok()) CheckFactories(*this, c);
   for (size_t i = 0; i < sinks.size() && c.ok(); ++i) {
     const std::string problem = SinkProblem(sinks[i]);
-    if (!problem.empty()) c.Fail("field '" + Indexed("sinks", i) + problem);
+    if (!problem.empty()) c.Fail("field '" + IndexedField("sinks", i) + problem);
     if (sinks[i].shape == SinkSpec::Shape::kPlane) {
-      c.Point(Indexed("sinks", i) + ".point_m", sinks[i].point_m);
+      c.Point(IndexedField("sinks", i) + ".point_m", sinks[i].point_m);
     } else {
-      c.Point(Indexed("sinks", i) + ".min_m", sinks[i].min_m);
-      c.Point(Indexed("sinks", i) + ".max_m", sinks[i].max_m);
+      c.Point(IndexedField("sinks", i) + ".min_m", sinks[i].min_m);
+      c.Point(IndexedField("sinks", i) + ".max_m", sinks[i].max_m);
     }
   }
   RollingModel model;
