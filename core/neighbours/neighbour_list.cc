@@ -217,9 +217,13 @@ std::vector<uint32_t> NeighbourList::CellOrder(const Settings& s, const std::vec
   // frozen base spans wide, nearly empty planes (the fixed base is not swept) and packs densely
   // only where it lands; a rule by cells cost its pours 6–9 % (docs/performance.md).
   constexpr int64_t kMaxPlaneSpheres = 4500;
+  std::vector<int> cell(x.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, x.size()), [&](const auto& range) {
+    for (size_t i = range.begin(); i != range.end(); ++i) cell[i] = grid.CellOf(x[i]);
+  });
   std::vector<int64_t> per_plane(grid.nz, 0);
   for (size_t i = 0; i < x.size(); ++i)
-    if (swept.empty() || swept[i]) ++per_plane[grid.CellOf(x[i]) / (grid.nx * grid.ny)];
+    if (swept.empty() || swept[i]) ++per_plane[cell[i] / (grid.nx * grid.ny)];
   const int n[3] = {grid.nx, grid.ny, grid.nz};
   int axes[3] = {2, 1, 0};  // slowest first
   double spheres = 0, weighted = 0;
@@ -230,7 +234,7 @@ std::vector<uint32_t> NeighbourList::CellOrder(const Settings& s, const std::vec
   std::vector<std::pair<int64_t, uint32_t>> keyed(x.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, x.size()), [&](const auto& range) {
     for (size_t i = range.begin(); i != range.end(); ++i) {
-      const int c = grid.CellOf(x[i]);
+      const int c = cell[i];
       const int at[3] = {c % grid.nx, c / grid.nx % grid.ny, c / grid.nx / grid.ny};
       const int64_t key =
           (int64_t{at[axes[0]]} * n[axes[1]] + at[axes[1]]) * n[axes[2]] + at[axes[2]];

@@ -8,6 +8,7 @@
 #include "diagnose/loop/candidate_step.h"
 #include "diagnose/loop/fit_state.h"
 #include "diagnose/ranking/discrepancy_floor.h"
+#include "diagnose/ranking/ranking.h"
 #include "diagnose/ranking/revaluation.h"
 #include "objectives/common/input_limits.h"
 
@@ -124,8 +125,7 @@ std::string Signed(const Diagnosis& d, const ModelPoint& point,
 // Whether candidate c is another law of a mechanism already named.
 bool MechanismNamed(const Diagnosis& d, const std::vector<CandidateEffect>& candidates, int c) {
   for (int n : d.named)
-    if (!candidates[c].mechanism.empty() && candidates[n].mechanism == candidates[c].mechanism)
-      return true;
+    if (SameMechanism(candidates[n].mechanism, candidates[c].mechanism)) return true;
   return false;
 }
 

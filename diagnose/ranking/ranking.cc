@@ -7,9 +7,7 @@
 
 namespace demcal::diagnose {
 
-bool SameMechanism(const RankingEntry& a, const RankingEntry& b) {
-  return !a.mechanism.empty() && a.mechanism == b.mechanism;
-}
+bool SameMechanism(const std::string& a, const std::string& b) { return !a.empty() && a == b; }
 
 Ranking RankCandidates(const std::vector<RankingEntry>& entries) {
   Ranking r;

@@ -57,8 +57,11 @@ struct Ranking {
   std::string message;
 };
 
-// Both entries declare the same mechanism (two laws of it).
-bool SameMechanism(const RankingEntry& a, const RankingEntry& b);
+// Two effects are laws of one mechanism when both declare it ("" declares none: its own).
+bool SameMechanism(const std::string& a, const std::string& b);
+inline bool SameMechanism(const RankingEntry& a, const RankingEntry& b) {
+  return SameMechanism(a.mechanism, b.mechanism);
+}
 
 Ranking RankCandidates(const std::vector<RankingEntry>& entries);
 
