@@ -47,6 +47,8 @@ DEMCAL_HOT_INLINE bool PairGeometry(const Particles& p, size_t i, uint32_t j, bo
   StoreVec3(g.normal, normal);
   g.radius_i_m = ri;
   g.radius_j_m = rj;
+  g.rolling_lever_i_m = ri;
+  g.rolling_lever_j_m = rj;
   g.mass_i_kg = mi;
   g.mass_j_kg = mj;
   g.effective_mass_kg = mi * mj / (mi + mj);
@@ -64,6 +66,7 @@ DEMCAL_HOT_INLINE bool ContactForces::EvaluatePair(const Particles& p, const Int
   const ResolvedPair& pair = table.Get(p.material[i], p.material[j]);
   const bool touching =
       PairGeometry<Model>(p, i, j, pair_active_[k], pair, periodic_.Any() ? &periodic_ : nullptr, g);
+  if (touching && !body_centre_m_.empty()) SetClumpLevers(p, body_centre_m_, i, j, g);
   return ResolveContact(k, touching, g, pair, model, dt, out);
 }
 
@@ -145,6 +148,8 @@ void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
       if (j >= end && j < moving) continue;
       const ResolvedPair& pair = table.Get(p.material[i], p.material[j]);
       in_contact[m] = PairGeometry<Model>(p, i, j, pair_active_[k], pair, box, geometry[m]);
+      if (in_contact[m] && !body_centre_m_.empty())
+        SetClumpLevers(p, body_centre_m_, i, j, geometry[m]);
     }
     // Pass 3: the contributions in entry order (the serial sweep's summation order).
     for (uint32_t m = 0; m < n; ++m) {

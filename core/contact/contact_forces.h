@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "core/contact/clump_levers.h"
 #include "core/contact/contact_state.h"
 #include "core/contact/normal_model.h"
 #include "core/contact/rolling_model.h"
@@ -49,6 +50,13 @@ class ContactForces {
   // summed (J): the energy initial overlaps will release, for the blow-up check's budget.
   double PairElasticEnergy(const Particles& p, const NeighbourList& list,
                            const InteractionTable& table) const;
+
+  // The clumps' centres of mass (Clumps::position_m), for the rolling levers of their members
+  // (core/contact/clump_levers.h); set before each Compute, empty for a scene without clumps.
+  void SetBodyCentres(BodyCentres centre_m) {
+    body_centre_m_ = centre_m;
+    walls_.SetBodyCentres(centre_m);
+  }
 
   // Periodic axes for pair separations (minimum image); default: none.
   void SetPeriodic(const PeriodicBox& box) { periodic_ = box; }
@@ -114,6 +122,7 @@ class ContactForces {
   std::vector<ContactHistory> spare_history_;
   std::vector<uint8_t> spare_active_;
   PeriodicBox periodic_;
+  BodyCentres body_centre_m_;
   SweepChunks chunks_;
   bool plan_stale_ = true;                    // chunks_ predates the list or the thread count
   const NeighbourList* planned_list_ = nullptr;

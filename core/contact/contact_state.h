@@ -26,6 +26,10 @@ struct ContactGeometry {
   double overlap_m = 0;           // δ_n = R_i + R_j − |x_i − x_j| (> 0 pressed; < 0 only for JKR)
   double radius_i_m = 0;          // lever arm of i (its radius)
   double radius_j_m = 0;          // lever arm of j; 0 for a wall
+  // EDEM's rolling lever R_i: the distance from body i's centre of mass to the contact point.
+  // A free sphere's radius; for a clump member, from the clump's centre (core/contact/clump_levers.h).
+  double rolling_lever_i_m = 0;
+  double rolling_lever_j_m = 0;   // 0 for a wall
   double effective_radius_m = 0;  // R*
   double effective_mass_kg = 0;   // m*
   double mass_i_kg = 0;

@@ -263,6 +263,7 @@ void Simulation::AddWallWork(double time_s) {
 }
 
 void Simulation::ComputeForces(double time_s) {
+  forces_.SetBodyCentres(system_.clumps.position_m);  // may have moved since the last step
   forces_.Compute(system_.spheres, list_, walls_, time_s, table_, normal_, rolling_,
                   scene_.gravity_m_s2, dt_);
 }

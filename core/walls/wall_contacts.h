@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "core/contact/clump_levers.h"
 #include "core/contact/contact_state.h"
 #include "core/math/heap_bytes.h"
 #include "core/materials/interaction_table.h"
@@ -42,6 +43,9 @@ class WallContacts {
 
   // Per-step wall velocities (index = wall); call before Sum() in every force pass.
   void SetVelocities(const std::vector<Wall>& walls, double time_s);
+
+  // The clumps' centres of mass, for the rolling levers of their members (clump_levers.h).
+  void SetBodyCentres(BodyCentres centre_m) { body_centre_m_ = centre_m; }
 
   // Adds to fi, ti the wall forces and torques on particle i.
   template <class Model>
@@ -155,6 +159,7 @@ class WallContacts {
   std::vector<int32_t> mesh_near_;
   std::vector<Load> load_;  // valid where active_
   std::vector<Vec3> velocity_;  // per wall, this pass
+  BodyCentres body_centre_m_;   // the clumps' centres (SetBodyCentres)
 };
 
 // The geometry of a sphere–wall contact: the wall is infinitely heavy, has no radius and moves
@@ -167,6 +172,7 @@ inline ContactGeometry WallGeometry(const Particles& p, size_t i, const Vec3& no
   g.overlap_m = overlap;
   g.radius_i_m = ri;
   g.radius_j_m = 0;
+  g.rolling_lever_i_m = ri;
   g.effective_radius_m = ri;
   g.mass_i_kg = g.effective_mass_kg = p.mass_kg[i];
   g.mass_j_kg = 0;
@@ -193,8 +199,9 @@ DEMCAL_HOT_INLINE void WallContacts::SumOne(const Particles& p, uint32_t i, uint
     if (active_[e]) history_[e] = ContactHistory{}, active_[e] = 0;
     return;
   }
-  const ContactResult r =
-      model.Evaluate(WallGeometry(p, i, normal, wall_velocity, overlap), pair, dt, history_[e]);
+  ContactGeometry g = WallGeometry(p, i, normal, wall_velocity, overlap);
+  if (!body_centre_m_.empty()) SetClumpLevers(p, body_centre_m_, i, -1, g);
+  const ContactResult r = model.Evaluate(g, pair, dt, history_[e]);
   active_[e] = 1;
   fi += r.force_i;
   ti += r.torque_i;
@@ -230,8 +237,9 @@ void WallContacts::SumMesh(const Particles& p, uint32_t i, uint32_t e, const Mes
       if (old.slot[s].key == key) found = static_cast<int>(s);
     if (!Model::InContact(overlap, found >= 0, radius, pair)) continue;
     ContactHistory h = found >= 0 ? old.slot[found].history : ContactHistory{};
-    const ContactResult r =
-        model.Evaluate(WallGeometry(p, i, c.normal, wall_velocity, overlap), pair, dt, h);
+    ContactGeometry g = WallGeometry(p, i, c.normal, wall_velocity, overlap);
+    if (!body_centre_m_.empty()) SetClumpLevers(p, body_centre_m_, i, -1, g);
+    const ContactResult r = model.Evaluate(g, pair, dt, h);
     if (now.count < kMaxMeshContacts) now.slot[now.count++] = {key, h};
     ++evaluated;
     fi += r.force_i;

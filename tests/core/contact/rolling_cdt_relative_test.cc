@@ -18,6 +18,8 @@ ContactGeometry Pair(const Vec3& omega_i, const Vec3& omega_j) {
   g.normal = {0, 0, 1};
   g.radius_i_m = 1e-3;
   g.radius_j_m = 3e-3;
+  g.rolling_lever_i_m = 1e-3;
+  g.rolling_lever_j_m = 3e-3;
   g.effective_radius_m = 0.75e-3;
   g.omega_i = omega_i;
   g.omega_j = omega_j;

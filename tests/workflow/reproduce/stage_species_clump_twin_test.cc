@@ -1,7 +1,7 @@
 // Stage 1's shape calibration (paper section 2.4, Fig. 3) on a twin: the "measured" angle is
 // demcal's own heap of 3-sphere EP clumps at Table 1's rolling friction (held), and the stage,
-// judging counts 1 and 3 at that friction, must pick 3 or name the counts it cannot tell apart
-// (3 among them). Its Fig. 3 table has a row per count with the angle, its noise and the cost,
+// judging counts 1 and 3 at that friction, must pick 3, name the counts it cannot tell apart
+// (3 among them), or say that 3 agrees only inconclusively and use it. Its Fig. 3 table has a row per count with the angle, its noise and the cost,
 // and the calibrated experiment copy carries the chosen shape.
 #include <catch2/catch.hpp>
 #include <fstream>
@@ -35,20 +35,32 @@ TEST_CASE("shape calibration twin: the count the data were made at, or the count
     CHECK(row["angle_sem_deg"].is_number());
     CHECK(row["cost"].is_number());
   }
-  // Count 3 reproduces its own angle (common random numbers: the same seeds made the data).
-  CHECK(ep["clump_table"][1]["within_noise"].get<bool>());
+  // Count 3 reproduces its own angle (common random numbers: the same seeds made the data), so
+  // it agrees with the data: within noise, or inconclusively where its heaps scatter more than
+  // the 1° the twin's measurement claims (clumps with EDEM's rolling lever avalanche in larger
+  // steps); count 1 (≈ 9° lower) is excluded unless the note says it is not told apart.
+  const nlohmann::json& one = ep["clump_table"][0];
+  const nlohmann::json& three = ep["clump_table"][1];
+  CHECK((three["within_noise"].get<bool>() || three["agrees"].get<bool>()));
   const int chosen = ep["clump_count"].get<int>();
+  const int used = ep["clump_count_used"].get<int>();
   const std::string note = ep["clump_note"].get<std::string>();
-  INFO(note << "; angles " << ep["clump_table"][0]["angle_deg"] << " (n = 1), " << truth
-            << " (n = 3)");
-  if (chosen != 3) {  // a smaller count may only be chosen when the data cannot exclude it
-    CHECK(chosen == 1);
+  INFO(note << "; angles " << one["angle_deg"] << " (n = 1), " << three["angle_deg"] << " ± "
+            << three["angle_sem_deg"] << " (n = 3; made: " << truth << ")");
+  if (chosen == 3) {
+    CHECK(three["within_noise"].get<bool>());
+  } else if (chosen == 1) {  // a smaller count only when the data cannot exclude it
     CHECK(note.find("not told apart") != std::string::npos);
+  } else {  // no count within noise: the note names 3 as agreeing, and 3 is the nearest used
+    CHECK(chosen <= 0);
+    CHECK(note.find("count(s) 3 agree but only inconclusively") != std::string::npos);
+    CHECK_FALSE(one["agrees"].get<bool>());
+    CHECK(used == 3);
   }
-  // The calibrated copy for the later stages carries the chosen grain.
+  // The calibrated copy for the later stages carries the grain used.
   nlohmann::json copy;
   std::ifstream(ep["calibrated_experiment"].get<std::string>()) >> copy;
-  if (chosen == 3) CHECK(copy["species"][0]["clump"]["ellipsoid"]["sphere_count"] == 3);
+  if (used == 3) CHECK(copy["species"][0]["clump"]["ellipsoid"]["sphere_count"] == 3);
   else CHECK_FALSE(copy["species"][0].contains("clump"));
 }
 
