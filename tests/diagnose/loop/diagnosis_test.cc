@@ -153,7 +153,8 @@ TEST_CASE("diagnosis says no missing effect when none is hidden", "[unit]") {
     const Diagnosis d = Run({}, seed);
     CHECK(d.termination == DiagnosisTermination::kNoMissingEffect);
     CHECK(d.named.empty());
-    CHECK(d.steps.empty());  // no signature was simulated
+    CHECK(d.screened);            // no gap on a settled base inside its range: one screening step
+    CHECK(d.steps.size() == 1);
     CHECK(d.message.find("no missing effect found") != std::string::npos);
     CHECK(d.base_at_bound.empty());  // μ 0.5 lies inside the range [0.2, 1]
   }
