@@ -274,7 +274,8 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
   }
   if (progress) progress("calibrating the base model");
   const BaseFit settled =
-      SettleBase(model, observations, options.discrepancy_floor, options.significance, progress);
+      SettleBase(model, observations, options.discrepancy_floor, options.significance, progress,
+                 options.screen);
   d.base = settled.base;
   d.base_budget_scale = settled.budget_scale;
   d.base_identifiability = settled.identifiability;
