@@ -88,10 +88,10 @@ std::string TieText(const Diagnosis& d, const std::vector<CandidateEffect>& cand
     const EffectParameter& p = candidates[e.candidate].parameters[0];
     return e.key + " (" + (e.values.empty() ? "" : EffectDirection(p, e.values[0])) + ")";
   };
-  s << one(a) << " or " << one(b) << " explain the gap about equally (delta BIC "
-    << a.evidence.delta_bic << " and " << b.evidence.delta_bic << "; BIC gap "
-    << std::fabs(BicGap(a.evidence, b.evidence)) << " under the common floor, within "
-    << IndistinctWithin(a.evidence, b.evidence) << ")";
+  s << one(a) << " or " << one(b) << " explain the " << (d.screened ? "misfit" : "gap")
+    << " about equally (delta BIC " << a.evidence.delta_bic << " and " << b.evidence.delta_bic
+    << "; BIC gap " << std::fabs(BicGap(a.evidence, b.evidence))
+    << " under the common floor, within " << IndistinctWithin(a.evidence, b.evidence) << ")";
   return s.str();
 }
 
@@ -139,15 +139,12 @@ std::string ScreenText(const Diagnosis& d, const DiagnoseOptions& options) {
   const int best = DecidingEntry(step.ranking, step.entries);
   std::ostringstream s;
   s.precision(3);
-  if (best < 0) {
-    s << "screened without a gap: no candidate's own (directed) test came near significance "
-         "at significance/K = "
-      << per_candidate << ", none refitted by simulation";
-    return s.str();
-  }
+  if (best < 0) return "screened without a gap: no candidate";
   const RankingEntry& e = step.entries[best];
   s << (step.ranking.winner >= 0 ? "found by its own directed test" : "screened without a gap")
-    << " (" << e.key << ": likelihood-ratio p " << e.evidence.lr_p_value
+    << " (" << (step.ranking.winner >= 0 ? "" : "best candidate ") << e.key
+    << (e.simulated ? "" : ", linearised refit: none was significant enough to simulate")
+    << ": likelihood-ratio p " << e.evidence.lr_p_value
     << (e.evidence.significant ? " below" : ", not below") << " significance/K = " << per_candidate
     << ") while the omnibus gap test did not flag (chi-square p " << d.gap_before.p_value << ")";
   if (step.ranking.control_first)

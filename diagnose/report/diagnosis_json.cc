@@ -174,6 +174,8 @@ Json ScreenJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
           {"best_candidate", best < 0 ? Json(nullptr) : Json(step.entries[best].key)},
           {"best_lr_p_value",
            best < 0 ? Json(nullptr) : Number(step.entries[best].evidence.lr_p_value)},
+          {"best_refit", best < 0 ? Json(nullptr)
+                         : Json(step.entries[best].simulated ? "simulated" : "linearised")},
           {"best_significant", best >= 0 && step.entries[best].evidence.significant}};
 }
 
