@@ -179,6 +179,10 @@ void Finish(const std::vector<Observation>& observations, const FitState& fit,
     m << "no missing effect found: the base model fits within noise (" << d->gap_before.summary
       << ")";
     if (d->screened && !d->steps.empty()) m << "; " << ScreenText(*d, options);
+    if (options.screen && !d->screened && !d->base.settled && d->base_at_bound.empty())
+      m << "; not screened (the candidates' own tests need a settled base): the base calibration "
+           "did not settle within "
+        << kMaxBaseBudgetScale << "x the study's budget; raise max_evaluations to screen";
     if (!d->bound_note.empty()) {
       m << "; but the base fit ends on a bound: " << d->bound_note;
     } else if (!d->base_at_bound.empty()) {
