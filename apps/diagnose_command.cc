@@ -39,6 +39,9 @@ Command AddDiagnoseCommand(CLI::App& parent) {
   app->add_option("--extra-refits", o->diagnose.extra_refits,
                   "re-centred refit points per refitted candidate beyond two, while each lowers its chi2 by >= 1 (default 4)")
       ->check(CliRange<int>(limits::kDiagnoseExtraRefits));
+  app->add_flag_callback(
+      "--no-screen", [o] { o->diagnose.screen = false; },
+      "without a gap, stop at 'no missing effect' instead of screening the candidates' own tests");
   app->add_option("--max-evaluations", o->max_evaluations, "base calibration budget (default: the study's)")
       ->check(CliRange<int>(limits::kMaxEvaluations));
   app->add_option("--threads", o->threads, "runs side by side on this many cores (0: all)")

@@ -33,6 +33,18 @@ NoisyChi2 Chi2(const std::vector<Observation>& observations, const Prediction& p
   return {r.squaredNorm(), Chi2NoiseSd(r, u, Eigen::VectorXd::Zero(r.size()), 0)};
 }
 
+// On a bound: the unit coordinate at 0 or 1 up to rounding (optimisers clamp to the bound
+// exactly; 1e-9 only absorbs the unit map's arithmetic, it is not a tolerance on the fit).
+bool AtBound(double u) { return u <= 1e-9 || u >= 1 - 1e-9; }
+
+bool WithinNoise(const std::vector<Observation>& observations, const BaseCalibration& base,
+                 double floor_factor, double significance) {
+  return base.prediction.ok &&
+         !TestGap(WithPrediction(observations, base.prediction, floor_factor),
+                  static_cast<int>(base.base_unit.size()), {significance})
+              .gap_detected;
+}
+
 }  // namespace
 
 double StagnationMargin(double noise_sd_before, double noise_sd_after) {
@@ -41,18 +53,20 @@ double StagnationMargin(double noise_sd_before, double noise_sd_after) {
 
 BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observations,
                    double floor_factor, double significance,
-                   const std::function<void(const std::string&)>& progress) {
+                   const std::function<void(const std::string&)>& progress,
+                   bool settle_within_noise) {
   BaseFit b;
   NoisyChi2 previous;
   for (b.budget_scale = 1;; b.budget_scale *= 2) {
     b.base = model.CalibrateBase(b.budget_scale);
     if (!b.base.ok || b.base.settled) break;
     // Within noise already: more budget could only lower χ² further, and "no missing effect"
-    // stands; the extension is for a gap an unsettled fit might have made itself.
-    const std::vector<Observation> here =
-        WithPrediction(observations, b.base.prediction, floor_factor);
-    if (b.base.prediction.ok &&
-        !TestGap(here, static_cast<int>(b.base.base_unit.size()), {significance}).gap_detected) {
+    // stands; the extension is for a gap an unsettled fit might have made itself, and for the
+    // screen's candidate tests, which need the base at its own optimum (a base on a bound gets
+    // the bound probe instead, as before).
+    const bool extend = settle_within_noise && std::none_of(b.base.base_unit.begin(),
+                                                            b.base.base_unit.end(), AtBound);
+    if (!extend && WithinNoise(observations, b.base, floor_factor, significance)) {
       b.within_noise = true;
       break;
     }
@@ -75,6 +89,8 @@ BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observat
                std::to_string(b.base.max_evaluations) +
                " evaluations): again with twice the budget");
   }
+  if (b.base.ok && !b.base.settled && !b.within_noise)
+    b.within_noise = WithinNoise(observations, b.base, floor_factor, significance);
   std::ostringstream s;
   s << "base calibration " << b.base.termination << " with " << b.base.max_evaluations
     << " evaluations"
@@ -95,12 +111,10 @@ BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observat
   for (int i = 0; i < n && i < static_cast<int>(b.base.jacobian.size()); ++i)
     for (int j = 0; j < p && j < static_cast<int>(b.base.jacobian[i].size()); ++j)
       J(i, j) = b.base.jacobian[i][j] / at[i].Sigma();
-  // On a bound: the unit coordinate at 0 or 1 up to rounding (optimisers clamp to the bound
-  // exactly; 1e-9 only absorbs the unit map's arithmetic, it is not a tolerance on the fit).
   const std::vector<std::string> names = model.BaseParameterNames();
   for (int j = 0; j < p; ++j) {
     const double u = b.base.base_unit[j];
-    if (u > 1e-9 && u < 1 - 1e-9) continue;
+    if (!AtBound(u)) continue;
     const std::string name = j < static_cast<int>(names.size()) ? names[j]
                                                                 : "parameter " + std::to_string(j);
     b.at_bound.push_back(name + " at its " + (u <= 1e-9 ? "lower" : "upper") + " bound");

@@ -7,7 +7,10 @@
 // twice the budget lowered the best fit's χ² by less than StagnationMargin (below: a noisy DEM
 // objective may never meet the optimiser's tolerance, yet more evaluations no longer move the
 // fit by more than its own noise). A base within noise (no gap at the significance) is
-// not extended: more budget could only lower its χ², and "no missing effect" stands. A fit that
+// not extended: more budget could only lower its χ², and "no missing effect" stands — unless
+// settle_within_noise (the screen without a gap, diagnosis.h step 2): a candidate's refit also
+// refits the base parameters, so an unsettled base's own slack would count as evidence for
+// every candidate; the base is then extended as with a gap. A fit that
 // has not settled then
 // is reported as such and no effect is ranked on it: an unsettled base leaves a gap the
 // calibration itself would have closed, and any effect "explains" it.
@@ -68,6 +71,7 @@ struct BaseFit {
 
 BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observations,
                    double floor_factor, double significance,
-                   const std::function<void(const std::string&)>& progress);
+                   const std::function<void(const std::string&)>& progress,
+                   bool settle_within_noise = false);
 
 }  // namespace demcal::diagnose

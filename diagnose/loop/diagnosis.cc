@@ -1,5 +1,6 @@
 #include "diagnose/loop/diagnosis.h"
 
+#include <algorithm>
 #include <chrono>
 #include <sstream>
 
@@ -88,10 +89,10 @@ std::string TieText(const Diagnosis& d, const std::vector<CandidateEffect>& cand
     const EffectParameter& p = candidates[e.candidate].parameters[0];
     return e.key + " (" + (e.values.empty() ? "" : EffectDirection(p, e.values[0])) + ")";
   };
-  s << one(a) << " or " << one(b) << " explain the gap about equally (delta BIC "
-    << a.evidence.delta_bic << " and " << b.evidence.delta_bic << "; BIC gap "
-    << std::fabs(BicGap(a.evidence, b.evidence)) << " under the common floor, within "
-    << IndistinctWithin(a.evidence, b.evidence) << ")";
+  s << one(a) << " or " << one(b) << " explain the " << (d.screened ? "misfit" : "gap")
+    << " about equally (delta BIC " << a.evidence.delta_bic << " and " << b.evidence.delta_bic
+    << "; BIC gap " << std::fabs(BicGap(a.evidence, b.evidence))
+    << " under the common floor, within " << IndistinctWithin(a.evidence, b.evidence) << ")";
   return s.str();
 }
 
@@ -129,6 +130,29 @@ bool MechanismNamed(const Diagnosis& d, const std::vector<CandidateEffect>& cand
   return false;
 }
 
+// The screen's sentence (diagnosis.h step 2): the directed test of the step's winner, or of its
+// best simulated candidate when none won, beside the omnibus gap test that did not flag.
+std::string ScreenText(const Diagnosis& d, const DiagnoseOptions& options) {
+  const DiagnosisStep& step = d.steps.front();
+  const double per_candidate =
+      options.significance / static_cast<double>(std::max<size_t>(1, step.entries.size()));
+  const int best = DecidingEntry(step.ranking, step.entries);
+  std::ostringstream s;
+  s.precision(3);
+  if (best < 0) return "screened without a gap: no candidate";
+  const RankingEntry& e = step.entries[best];
+  s << (step.ranking.winner >= 0 ? "found by its own directed test" : "screened without a gap")
+    << " (" << (step.ranking.winner >= 0 ? "" : "best candidate ") << e.key
+    << (e.simulated ? "" : ", linearised refit: none was significant enough to simulate")
+    << ": likelihood-ratio p " << e.evidence.lr_p_value
+    << (e.evidence.significant ? " below" : ", not below") << " significance/K = " << per_candidate
+    << ") while the omnibus gap test did not flag (chi-square p " << d.gap_before.p_value << ")";
+  if (step.ranking.control_first)
+    s << "; a control (a copy of a fitted parameter) ranks first or level with the best effect, "
+         "so none is named";
+  return s.str();
+}
+
 // `after_fit` is what the "after" figures describe: the fit with the named effects, or, for a
 // model-form answer that re-values a modelled parameter, that re-valued fit (the base model's
 // own mechanism at the value the data ask for), so χ²/dof after says how well the answer fits.
@@ -154,6 +178,11 @@ void Finish(const std::vector<Observation>& observations, const FitState& fit,
   } else if (d->termination == DiagnosisTermination::kNoMissingEffect) {
     m << "no missing effect found: the base model fits within noise (" << d->gap_before.summary
       << ")";
+    if (d->screened && !d->steps.empty()) m << "; " << ScreenText(*d, options);
+    if (options.screen && !d->screened && !d->base.settled && d->base_at_bound.empty())
+      m << "; not screened (the candidates' own tests need a settled base): the base calibration "
+           "did not settle within "
+        << kMaxBaseBudgetScale << "x the study's budget; raise max_evaluations to screen";
     if (!d->bound_note.empty()) {
       m << "; but the base fit ends on a bound: " << d->bound_note;
     } else if (!d->base_at_bound.empty()) {
@@ -200,6 +229,8 @@ void Finish(const std::vector<Observation>& observations, const FitState& fit,
       << ", and no effect of the library explains more than that floor "
       << "allows (gap not explained by the library: " << d->gap_before.summary << ")";
   }
+  if (d->screened && !d->steps.empty() && d->termination != DiagnosisTermination::kNoMissingEffect)
+    m << "; " << ScreenText(*d, options);
   if (!d->bound_note.empty() && d->termination != DiagnosisTermination::kNoMissingEffect &&
       d->bound.verdict != BoundVerdict::kNotToldApart)
     m << "; the base fit ended on a bound: " << d->bound_note;
@@ -244,7 +275,8 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
   }
   if (progress) progress("calibrating the base model");
   const BaseFit settled =
-      SettleBase(model, observations, options.discrepancy_floor, options.significance, progress);
+      SettleBase(model, observations, options.discrepancy_floor, options.significance, progress,
+                 options.screen);
   d.base = settled.base;
   d.base_budget_scale = settled.budget_scale;
   d.base_identifiability = settled.identifiability;
@@ -274,7 +306,11 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
   // let it back inside (bound_step.h): one step, whose verdict may replace "no missing effect".
   const bool bound_probe = !gap && !settled.bounds.empty() &&
                            d.termination == DiagnosisTermination::kNoMissingEffect;
-  while ((gap || (bound_probe && d.steps.empty())) &&
+  // A settled base within noise and inside its range is screened (diagnosis.h step 2): one step,
+  // whose answer changes only on a candidate significant by its own test at α/K.
+  d.screened = options.screen && !gap && settled.bounds.empty() && d.base.settled &&
+               d.termination == DiagnosisTermination::kNoMissingEffect;
+  while ((gap || ((bound_probe || d.screened) && d.steps.empty())) &&
          static_cast<int>(d.named.size()) < options.max_effects) {
     std::vector<int> remaining;
     for (int c = 0; c < static_cast<int>(candidates.size()); ++c)
@@ -310,9 +346,12 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
       // Without a gap only an effect that rules the bound out goes on to be named.
       if (!gap && b.judgement.verdict != BoundVerdict::kEffect) break;
     }
+    // Without a gap (the screen) a step with nothing to name leaves "no missing effect".
+    const DiagnosisTermination nothing = d.screened && first
+                                             ? DiagnosisTermination::kNoMissingEffect
+                                             : DiagnosisTermination::kModelFormOffset;
     if (s.step.ranking.control_first) {
-      d.termination = d.named.empty() ? DiagnosisTermination::kModelFormOffset
-                                      : DiagnosisTermination::kGapRemains;
+      d.termination = d.named.empty() ? nothing : DiagnosisTermination::kGapRemains;
       d.control_note = s.step.ranking.message;
       break;
     }
@@ -334,8 +373,7 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
       break;
     }
     if (!s.has_winner) {
-      d.termination = d.named.empty() ? DiagnosisTermination::kModelFormOffset
-                                      : DiagnosisTermination::kGapRemains;
+      d.termination = d.named.empty() ? nothing : DiagnosisTermination::kGapRemains;
       break;
     }
     d.named.push_back(s.step.entries[s.step.ranking.winner].candidate);

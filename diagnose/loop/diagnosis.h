@@ -4,7 +4,13 @@
 //     at most kMaxBaseBudgetScale × the study's budget; unsettled: nothing is ranked); the
 //     identifiability of its parameters; standardised residuals per observation
 //     (observation.h) and the gap test (gap_significance.h).
-//  2. No gap: stop, "no missing effect found".
+//  2. No gap: "no missing effect found" — after one screening step (steps 3-4 once, when
+//     options.screen and the base settled inside its range): the omnibus χ² spreads its power
+//     over n − p directions, a candidate's own test is one directed degree of freedom. Only a
+//     candidate significant by its own test at α/K can change the answer (the same rules as
+//     with a gap: named, not told apart, or a re-valuation, "model-form offset"); a control
+//     first, or nothing significant, leaves "no missing effect" (docs/diagnose/ranking.md,
+//     "The screen without a gap").
 //  3. Else, per candidate effect not yet added: its signature — one simulated point, the
 //     current fit with the effect at its probe value (same seeds) — and a linearised
 //     (Gauss–Newton) refit of base + effect from the sensitivities alone (linear_refit.h).
@@ -61,6 +67,7 @@ struct DiagnoseOptions {
   int dem_refits = 2;    // candidates refitted by simulation per iteration
   int max_effects = 2;   // effects added at most
   int extra_refits = 4;  // re-centred refit points per refitted candidate beyond two
+  bool screen = true;    // no gap on a settled base inside its range: one candidate step anyway
   bool IsValid(std::string* error) const;
 };
 
@@ -101,6 +108,9 @@ struct Diagnosis {
   double bound_effect_chi2_per_dof = 0;
   std::vector<Observation> before;  // at the base calibration
   GapReport gap_before;
+  // The gap test found no gap and one screening step was run (step 2): every answer other than
+  // "no missing effect" then rests on a candidate's own test, and the message says so.
+  bool screened = false;
   // The discrepancy floor estimated from the residuals (discrepancy_floor.h), in single-run
   // scatters beyond the fixed one: at the base fit and at the final fit.
   double floor_before = 0, floor_after = 0;

@@ -72,4 +72,11 @@ Ranking RankCandidates(const std::vector<RankingEntry>& entries) {
   return r;
 }
 
+int DecidingEntry(const Ranking& r, const std::vector<RankingEntry>& entries) {
+  if (r.winner >= 0) return r.winner;
+  for (int i : r.order)
+    if (entries[i].simulated) return i;
+  return r.order.empty() ? -1 : r.order.front();
+}
+
 }  // namespace demcal::diagnose

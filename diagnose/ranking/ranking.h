@@ -65,4 +65,9 @@ inline bool SameMechanism(const RankingEntry& a, const RankingEntry& b) {
 
 Ranking RankCandidates(const std::vector<RankingEntry>& entries);
 
+// The entry whose own test a step's answer rests on: the winner, else the best simulated entry,
+// else the best linearised one (−1: no entries). The screen without a gap reports its p
+// (diagnosis.h step 2).
+int DecidingEntry(const Ranking& r, const std::vector<RankingEntry>& entries);
+
 }  // namespace demcal::diagnose

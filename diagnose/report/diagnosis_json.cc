@@ -161,6 +161,24 @@ Json BoundJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
           {"note", d.bound_note}};
 }
 
+// The screen without a gap (diagnosis.h step 2): the omnibus test's p beside the directed test
+// of the step's winner, or of its best simulated candidate; null when no screen ran.
+Json ScreenJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
+  if (!d.screened || d.steps.empty()) return nullptr;
+  const DiagnosisStep& step = d.steps.front();
+  const int best = DecidingEntry(step.ranking, step.entries);
+  const double per_candidate =
+      info.options.significance / static_cast<double>(std::max<size_t>(1, step.entries.size()));
+  return {{"omnibus_chi2_p_value", Number(d.gap_before.p_value)},
+          {"significance_per_candidate", Number(per_candidate)},
+          {"best_candidate", best < 0 ? Json(nullptr) : Json(step.entries[best].key)},
+          {"best_lr_p_value",
+           best < 0 ? Json(nullptr) : Number(step.entries[best].evidence.lr_p_value)},
+          {"best_refit", best < 0 ? Json(nullptr)
+                         : Json(step.entries[best].simulated ? "simulated" : "linearised")},
+          {"best_significant", best >= 0 && step.entries[best].evidence.significant}};
+}
+
 }  // namespace
 
 Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
@@ -170,6 +188,7 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
   j["message"] = d.message;
   j["gap_detected"] = d.gap_before.gap_detected;
   j["chi2_per_dof_before"] = Number(d.gap_before.chi2_per_dof);
+  j["screen"] = ScreenJson(info, d);
   j["named_effect"] = d.named.empty() ? Json(nullptr) : Json(info.candidates[d.named.front()].key);
   Json named = Json::array(), signed_effects = Json::array();
   for (int c : d.named) named.push_back(info.candidates[c].key);
@@ -273,6 +292,7 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
                      {"refits_per_step", info.options.dem_refits},
                      {"max_effects", info.options.max_effects},
                      {"extra_refits", info.options.extra_refits},
+                     {"screen_without_gap", info.options.screen},
                      {"subject_species", info.context.species},
                      {"subject_material", info.context.material},
                      {"wall_materials", info.context.wall_materials},

@@ -84,12 +84,34 @@ TEST_CASE("an unsettled base calibration gets more budget, and nothing is ranked
   CHECK(d.steps.empty());
   CHECK(d.named.empty());
   CHECK(d.message.find("no effect ranked") != std::string::npos);
-  // An unsettled base already within noise is not extended: "no missing effect" stands.
+  // An unsettled base already within noise is not extended without the screen: "no missing
+  // effect" stands. The screen extends it as a gap would (its candidate tests need the base at
+  // its own optimum), unless it sits on a bound (μ 1.0 is the upper bound: the bound probe).
+  DiagnoseOptions no_screen;
+  no_screen.screen = false;
   AnalyticForwardModel within;
   within.settle_at_scale = 1000;
   obs = testing::MakeObservations(&within, 1.0, {}, 1);  // the truth where the search stopped
-  d = Diagnose(within, obs, testing::Candidates(), DiagnoseOptions{});
+  d = Diagnose(within, obs, testing::Candidates(), no_screen);
   CHECK(within.base_scales == std::vector<int>{1});
+  CHECK(d.termination == DiagnosisTermination::kNoMissingEffect);
+  AnalyticForwardModel within_screened;
+  within_screened.settle_at_scale = 1000;
+  obs = testing::MakeObservations(&within_screened, 1.0, {}, 1);
+  d = Diagnose(within_screened, obs, testing::Candidates(), DiagnoseOptions{});
+  CHECK(within_screened.base_scales == std::vector<int>{1});  // u = 1: on its upper bound
+  AnalyticForwardModel inside;
+  inside.settle_at_scale = 1000;
+  inside.stall_shift = 0.5;  // every round stops at u = 0.5, μ 0.6: the truth, inside the range
+  obs = testing::MakeObservations(&inside, 0.6, {}, 1);
+  d = Diagnose(inside, obs, testing::Candidates(), no_screen);
+  CHECK(inside.base_scales == std::vector<int>{1});
+  CHECK_FALSE(d.screened);
+  inside.base_scales.clear();
+  d = Diagnose(inside, obs, testing::Candidates(), DiagnoseOptions{});
+  CHECK(inside.base_scales == std::vector<int>{1, 2});  // settled: twice the budget, no drop
+  CHECK(d.base.settled);
+  CHECK(d.screened);
   CHECK(d.termination == DiagnosisTermination::kNoMissingEffect);
   // A search that gains nothing from twice the budget has settled where it is (stagnation).
   AnalyticForwardModel stalled;
@@ -153,7 +175,8 @@ TEST_CASE("diagnosis says no missing effect when none is hidden", "[unit]") {
     const Diagnosis d = Run({}, seed);
     CHECK(d.termination == DiagnosisTermination::kNoMissingEffect);
     CHECK(d.named.empty());
-    CHECK(d.steps.empty());  // no signature was simulated
+    CHECK(d.screened);            // no gap on a settled base inside its range: one screening step
+    CHECK(d.steps.size() == 1);
     CHECK(d.message.find("no missing effect found") != std::string::npos);
     CHECK(d.base_at_bound.empty());  // μ 0.5 lies inside the range [0.2, 1]
   }

@@ -82,6 +82,31 @@ TEST_CASE("diagnosis outputs carry the sign, the floor, the base and the tie", "
   CHECK(j["termination"] == "model_form_offset");
   CHECK(j["control_guard"].is_string());
   CHECK(j["steps"][0]["control_first"] == true);
+  CHECK(j["screen"].is_null());  // a gap: no screen
+}
+
+TEST_CASE("diagnosis.json gives the screen's directed p beside the omnibus p", "[unit]") {
+  // Shape at 0.15, below what the gap test flags in most datasets (screen_test.cc): the first
+  // dataset without a gap in which the screen names it.
+  ScratchDir dir("diagnosis_outputs_screen");
+  for (uint64_t seed = 1; seed <= 20; ++seed) {
+    testing::AnalyticForwardModel model;
+    model.seed = 100000 + seed;
+    const std::vector<Observation> obs = testing::MakeObservations(&model, 0.5, {{2, 0.15}}, seed);
+    const Diagnosis d = Diagnose(model, obs, testing::Candidates(), DiagnoseOptions{});
+    if (d.gap_before.gap_detected || d.named.empty()) continue;
+    const nlohmann::json j = Written(dir, "screen", testing::Candidates(), d);
+    CHECK(j["termination"] == "effect_found");
+    CHECK(j["screen"]["best_candidate"] == "shape");
+    CHECK(j["screen"]["best_refit"] == "simulated");
+    CHECK(j["screen"]["best_significant"] == true);
+    CHECK(j["screen"]["best_lr_p_value"].get<double>() <
+          j["screen"]["significance_per_candidate"].get<double>());
+    CHECK(j["screen"]["omnibus_chi2_p_value"].get<double>() >= 0.005);  // α/2: no gap
+    CHECK(j["provenance"]["screen_without_gap"] == true);
+    return;
+  }
+  FAIL("no dataset without a gap named shape");
 }
 
 }  // namespace demcal::diagnose
