@@ -5,7 +5,8 @@
 // which for the end sphere of a chain is several member radii. The contact point lies on the
 // normal at depth r − δ/2 inside each sphere (the middle of the overlap). A free sphere keeps its
 // radius rather than r − δ/2 (δ/2r ≈ 1e-3 at the stiffnesses used), so sphere scenes are
-// unchanged to the last bit.
+// unchanged to the last bit. Only a law that reads the levers (ContactModel::kReadsRollingLever,
+// `cdt`) has them set; the others keep their sources' radii.
 //
 // Thread-safety: pure functions.
 #include <cstdint>

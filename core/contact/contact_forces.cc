@@ -66,7 +66,8 @@ DEMCAL_HOT_INLINE bool ContactForces::EvaluatePair(const Particles& p, const Int
   const ResolvedPair& pair = table.Get(p.material[i], p.material[j]);
   const bool touching =
       PairGeometry<Model>(p, i, j, pair_active_[k], pair, periodic_.Any() ? &periodic_ : nullptr, g);
-  if (touching && !body_centre_m_.empty()) SetClumpLevers(p, body_centre_m_, i, j, g);
+  if constexpr (Model::kReadsRollingLever)
+    if (touching && !body_centre_m_.empty()) SetClumpLevers(p, body_centre_m_, i, j, g);
   return ResolveContact(k, touching, g, pair, model, dt, out);
 }
 
@@ -148,8 +149,9 @@ void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
       if (j >= end && j < moving) continue;
       const ResolvedPair& pair = table.Get(p.material[i], p.material[j]);
       in_contact[m] = PairGeometry<Model>(p, i, j, pair_active_[k], pair, box, geometry[m]);
-      if (in_contact[m] && !body_centre_m_.empty())
-        SetClumpLevers(p, body_centre_m_, i, j, geometry[m]);
+      if constexpr (Model::kReadsRollingLever)
+        if (in_contact[m] && !body_centre_m_.empty())
+          SetClumpLevers(p, body_centre_m_, i, j, geometry[m]);
     }
     // Pass 3: the contributions in entry order (the serial sweep's summation order).
     for (uint32_t m = 0; m < n; ++m) {

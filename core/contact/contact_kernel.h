@@ -15,6 +15,10 @@ namespace demcal::core {
 template <class NormalLaw, class RollingModelT>
 struct ContactModel {
   using Normal = NormalLaw;
+  // Whether the rolling law reads ContactGeometry's rolling levers; only then are clump members'
+  // levers computed (SetClumpLevers), so the other laws' clump scenes skip that work.
+  static constexpr bool kReadsRollingLever =
+      requires { requires RollingModelT::kReadsRollingLever; };
   Normal normal;
   RollingModelT rolling;
 

@@ -13,6 +13,7 @@ namespace demcal::core {
 
 struct RollingCdt {
   static constexpr const char* kName = "cdt";
+  static constexpr bool kReadsRollingLever = true;  // ContactGeometry::rolling_lever_{i,j}_m
   DEMCAL_HOT_INLINE void Apply(const ContactGeometry& g, const ResolvedPair& p, const NormalForce& n, double,
              ContactHistory&, ContactResult& r) const {
     const double magnitude = p.rolling_friction * n.rolling_load_N;

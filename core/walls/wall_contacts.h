@@ -200,7 +200,8 @@ DEMCAL_HOT_INLINE void WallContacts::SumOne(const Particles& p, uint32_t i, uint
     return;
   }
   ContactGeometry g = WallGeometry(p, i, normal, wall_velocity, overlap);
-  if (!body_centre_m_.empty()) SetClumpLevers(p, body_centre_m_, i, -1, g);
+  if constexpr (Model::kReadsRollingLever)
+    if (!body_centre_m_.empty()) SetClumpLevers(p, body_centre_m_, i, -1, g);
   const ContactResult r = model.Evaluate(g, pair, dt, history_[e]);
   active_[e] = 1;
   fi += r.force_i;
@@ -238,7 +239,8 @@ void WallContacts::SumMesh(const Particles& p, uint32_t i, uint32_t e, const Mes
     if (!Model::InContact(overlap, found >= 0, radius, pair)) continue;
     ContactHistory h = found >= 0 ? old.slot[found].history : ContactHistory{};
     ContactGeometry g = WallGeometry(p, i, c.normal, wall_velocity, overlap);
-    if (!body_centre_m_.empty()) SetClumpLevers(p, body_centre_m_, i, -1, g);
+    if constexpr (Model::kReadsRollingLever)
+      if (!body_centre_m_.empty()) SetClumpLevers(p, body_centre_m_, i, -1, g);
     const ContactResult r = model.Evaluate(g, pair, dt, h);
     if (now.count < kMaxMeshContacts) now.slot[now.count++] = {key, h};
     ++evaluated;

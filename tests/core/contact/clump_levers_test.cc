@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "core/contact/clump_levers.h"
-#include "core/contact/rolling_cdt.h"
+#include "core/contact/contact_kernel.h"
+#include "core/contact/hertz_mindlin.h"
+#include "core/contact/rolling_model.h"
 
 using namespace demcal::core;
 
@@ -87,4 +89,13 @@ TEST_CASE("clump levers: free spheres keep their radius exactly", "[unit][contac
   SetClumpLevers(p, std::vector<Vec3>{{0, 0, 0}}, 0, 1, g);
   CHECK(g.rolling_lever_i_m == kR);
   CHECK(g.rolling_lever_j_m == kR);
+}
+
+TEST_CASE("clump levers: computed only for a rolling law that reads them", "[unit][contact][clump]") {
+  // cdt's torque uses the levers; the others use the radii (cdt_relative's R*, epsd's R_eff), so
+  // their clump scenes skip SetClumpLevers at compile time.
+  STATIC_REQUIRE(ContactModel<HertzMindlinNormal, RollingCdt>::kReadsRollingLever);
+  STATIC_REQUIRE_FALSE(ContactModel<HertzMindlinNormal, RollingCdtRelative>::kReadsRollingLever);
+  STATIC_REQUIRE_FALSE(ContactModel<HertzMindlinNormal, RollingEpsd>::kReadsRollingLever);
+  STATIC_REQUIRE_FALSE(ContactModel<HertzMindlinNormal, RollingNone>::kReadsRollingLever);
 }
