@@ -47,8 +47,7 @@ DEMCAL_HOT_INLINE bool PairGeometry(const Particles& p, size_t i, uint32_t j, bo
   StoreVec3(g.normal, normal);
   g.radius_i_m = ri;
   g.radius_j_m = rj;
-  g.rolling_lever_i_m = ri;
-  g.rolling_lever_j_m = rj;
+  if constexpr (Model::kReadsRollingLever) g.rolling_lever_i_m = ri, g.rolling_lever_j_m = rj;
   g.mass_i_kg = mi;
   g.mass_j_kg = mj;
   g.effective_mass_kg = mi * mj / (mi + mj);
