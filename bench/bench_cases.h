@@ -47,6 +47,7 @@ struct PourOptions {
   double stream_height_m = 0.06;    // top of the stream region above the base
   bool keep_fixed_pairs = false;    // the old treatment: fixed spheres swept like moving ones
   double refresh_fraction = 0.25;   // Simulation::Options::neighbour_refresh_fraction
+  int balance_probe_chunks = 0;     // Simulation::Options::balance_probe_chunks
   uint64_t seed = 1;
 };
 

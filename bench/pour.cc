@@ -20,6 +20,10 @@ CLI::App* AddPourCommand(CLI::App& app, PourCommand* command) {
   c->add_option("--liggghts-inputs", command->liggghts_inputs,
                 "write DIR/initial.data and DIR/case.vars of this case for LIGGGHTS and exit");
   c->add_option("--threads", o->threads, "worker threads");
+  c->add_option("--balance-probe", o->balance_probe_chunks,
+                "the sweep in N chunks run one after another on one thread: the balance N "
+                "threads would see (Simulation::Options::balance_probe_chunks)")
+      ->check(CLI::NonNegativeNumber);
   c->add_option("--steps", o->steps, "timed steps from the start of the pour");
   c->add_option("--base-radius", o->base_radius_m, "radius of the frozen base disc, m");
   c->add_option("--rate", o->mass_rate_kg_s, "mass rate of the stream, kg/s");
@@ -37,7 +41,8 @@ int RunPour(const PourCommand& command) {
   const core::Scene scene = PourScene(o);
   core::Simulation sim(scene, {.threads = o.threads,
                                .exclude_fixed_pairs = !o.keep_fixed_pairs,
-                               .neighbour_refresh_fraction = o.refresh_fraction});
+                               .neighbour_refresh_fraction = o.refresh_fraction,
+                               .balance_probe_chunks = o.balance_probe_chunks});
   std::string error;
   if (!sim.Initialize(&error)) {
     std::cerr << "error: " << error << "\n";
@@ -84,6 +89,7 @@ int RunPour(const PourCommand& command) {
               static_cast<double>(spheres - base) * run.steps / run.wall_time_s);
   std::printf("state_digest: %a\n", StateDigest(sim.particles()));
   std::printf("phases: %s\n", run.phases.Report().c_str());
+  std::printf("sweep balance: %s\n", run.sweep_balance.Report().c_str());
   return 0;
 }
 

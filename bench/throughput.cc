@@ -49,6 +49,7 @@ void PrintResults(const Simulation& sim, const RunSummary& timed, int threads, i
   std::printf("sphere_steps_per_s: %.0f\n", static_cast<double>(p.Size()) * steps / timed.wall_time_s);
   std::printf("particle_steps_per_s: %.0f\n", bodies * steps / timed.wall_time_s);
   std::printf("phases: %s\n", timed.phases.Report().c_str());
+  std::printf("sweep balance: %s\n", timed.sweep_balance.Report().c_str());
 }
 
 }  // namespace
@@ -58,10 +59,14 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   auto* tp = app.add_subcommand("throughput", "time the dense-bed case");
   BedOptions c;
-  int threads = 1;
+  int threads = 1, balance_probe = 0;
   int64_t steps = 10000, warmup = 200, settle_steps = 16000;
   std::string bed, save_bed, liggghts_inputs;
   tp->add_option("--threads", threads, "worker threads");
+  tp->add_option("--balance-probe", balance_probe,
+                 "timed steps with the sweep in N chunks run one after another on one thread: "
+                 "the balance N threads would see (Simulation::Options::balance_probe_chunks)")
+      ->check(CLI::NonNegativeNumber);
   tp->add_option("--steps", steps, "timed steps");
   tp->add_option("--warmup-steps", warmup, "untimed steps before timing");
   tp->add_option("--settle-steps", settle_steps, "pour-and-settle steps when no bed is given");
@@ -133,6 +138,7 @@ int main(int argc, char** argv) {
   }
   if (!liggghts_inputs.empty()) return write_liggghts_inputs();
   sim.SetThreads(threads);
+  sim.SetBalanceProbe(balance_probe);
   sim.Run(warmup * sim.timestep_s());
   const RunSummary timed = sim.Run(steps * sim.timestep_s());
   if (!timed.ok()) {

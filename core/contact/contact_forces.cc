@@ -6,7 +6,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
-#include <chrono>
+#include <ctime>
 #include <cmath>
 #include <numeric>
 
@@ -18,6 +18,14 @@ namespace {
 // out scheduler noise, and the imbalance worth re-planning for (a re-plan costs about one pass).
 constexpr int kRebalancePasses = 100;
 constexpr double kRebalanceTolerance = 0.03;
+
+// The calling thread's CPU time, s. A chunk is timed in it rather than on the wall clock so that
+// neither its balance figures nor Rebalance follow other processes' load.
+double ThreadCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
 }  // namespace
 
 DEMCAL_HOT_INLINE void StoreVec3(Vec3& to, const Vec3& v) { to.x = v.x, to.y = v.y, to.z = v.z; }
@@ -177,7 +185,8 @@ void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
 void ContactForces::PlanChunks(const NeighbourList& list) {
   // One chunk per worker: the fewest cross pairs. Chunks of fewer than ~256 particles would
   // cost more in cross pairs than they gain.
-  const size_t workers = tbb::this_task_arena::max_concurrency();
+  const size_t workers = balance_probe_chunks_ > 0 ? balance_probe_chunks_
+                                                  : tbb::this_task_arena::max_concurrency();
   const size_t chunks = std::min<size_t>(workers, list.FirstFixed() / 256 + 1);
   if (!plan_stale_ && planned_list_ == &list && chunks_.Count() == chunks) {
     chunks_.Rebalance(list, kRebalancePasses, kRebalanceTolerance);
@@ -221,11 +230,26 @@ void ContactForces::Compute(Particles& p, const NeighbourList& list,
       return;
     }
     chunks_.ResetClaims();
-    tbb::parallel_for(size_t{0}, chunks, [&](size_t c) {
-      const auto start = std::chrono::steady_clock::now();
+    chunk_cpu_s_.resize(chunks);
+    auto sweep = [&](size_t c) {
+      const double start = ThreadCpuSeconds();
       SumChunk(p, list, walls, table, model, gravity, dt, c);
-      chunks_.AddTime(c, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    });
+      chunk_cpu_s_[c] = ThreadCpuSeconds() - start;
+    };
+    if (balance_probe_chunks_ > 0) {
+      for (size_t c = chunks; c-- > 0;) sweep(c);
+    } else {
+      tbb::parallel_for(size_t{0}, chunks, sweep);
+    }
+    double slowest = 0;
+    for (size_t c = 0; c < chunks; ++c) {
+      chunks_.AddTime(c, chunk_cpu_s_[c]);
+      balance_.chunk_cpu_s += chunk_cpu_s_[c];
+      slowest = std::max(slowest, chunk_cpu_s_[c]);
+    }
+    balance_.capacity_cpu_s += static_cast<double>(chunks) * slowest;
+    balance_.chunks = static_cast<int64_t>(chunks);
+    ++balance_.passes;
   };
   // The one dispatch point of the contact laws: one instantiation of the loop per combination.
   std::visit(

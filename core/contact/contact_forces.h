@@ -11,6 +11,7 @@
 //
 // Fixed spheres (slots from NeighbourList::FirstFixed() on) are not swept: their force, torque
 // and wall contacts are not computed, and a moving–fixed pair adds to the moving sphere only.
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,7 @@
 #include "core/materials/interaction_table.h"
 #include "core/neighbours/neighbour_list.h"
 #include "core/bodies/particles.h"
+#include "core/neighbours/sweep_balance.h"
 #include "core/neighbours/sweep_chunks.h"
 #include "core/walls/wall_contacts.h"
 #include "core/walls/walls.h"
@@ -58,11 +60,18 @@ class ContactForces {
     walls_.SetBodyCentres(centre_m);
   }
 
+  // Simulation::Options::balance_probe_chunks: `chunks` > 0 sweeps in that many chunks, one after
+  // another on the calling thread, last first; 0 (default): one chunk per worker thread.
+  void SetBalanceProbe(int chunks) { balance_probe_chunks_ = std::max(0, chunks), plan_stale_ = true; }
+
   // Periodic axes for pair separations (minimum image); default: none.
   void SetPeriodic(const PeriodicBox& box) { periodic_ = box; }
 
   // The pair histories and results, the wall candidates and the sweep's scratch.
   HeapBytes Heap() const;
+
+  // How evenly the chunks of the parallel sweep shared the work, since construction.
+  const SweepBalance& sweep_balance() const { return balance_; }
 
   // Number of particle–particle and particle–wall contacts with positive overlap last step.
   size_t ActiveContacts() const;
@@ -124,6 +133,9 @@ class ContactForces {
   PeriodicBox periodic_;
   BodyCentres body_centre_m_;
   SweepChunks chunks_;
+  std::vector<double> chunk_cpu_s_;           // per chunk, this pass (thread CPU time)
+  SweepBalance balance_;
+  int balance_probe_chunks_ = 0;
   bool plan_stale_ = true;                    // chunks_ predates the list or the thread count
   const NeighbourList* planned_list_ = nullptr;
   WallContacts walls_;

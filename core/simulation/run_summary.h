@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <string>
 
+#include "core/neighbours/sweep_balance.h"
+
 namespace demcal::core {
 
 enum class Termination {
@@ -44,6 +46,7 @@ struct RunSummary {
   double final_kinetic_energy_J = 0;
   uint64_t neighbour_rebuilds = 0;  // during this Run() call
   PhaseTimes phases;                // during this Run() call
+  SweepBalance sweep_balance;       // during this Run() call
 
   bool ok() const { return termination == Termination::kOk; }
   std::string BriefReport() const;

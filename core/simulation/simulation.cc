@@ -53,6 +53,11 @@ void Simulation::SetThreads(int threads) {
   arena_ = std::make_unique<tbb::task_arena>(ArenaConcurrency(threads));
 }
 
+void Simulation::SetBalanceProbe(int chunks) {
+  options_.balance_probe_chunks = chunks;
+  forces_.SetBalanceProbe(chunks);
+}
+
 bool Simulation::Initialize(std::string* error) {
   if (!scene_.IsValid(error)) return false;
   table_ = InteractionTable(scene_.materials, scene_.pair_parameters);
@@ -73,6 +78,7 @@ bool Simulation::Initialize(std::string* error) {
   list_settings_ = {scene_.domain_min_m, scene_.domain_max_m, NeighbourSkin(scene_),
                     0.5 * scene_.MaxDiameter(), box};
   forces_.SetPeriodic(box);
+  forces_.SetBalanceProbe(options_.balance_probe_chunks);
   walls_ = scene_.walls;
   walls_move_ = false;
   for (const Wall& w : walls_) walls_move_ = walls_move_ || w.Moves();
@@ -322,6 +328,7 @@ RunSummary Simulation::Run(double duration_s, const Observer& observer) {
   };
   const int64_t n_steps = std::max<int64_t>(0, std::llround(duration_s / dt_));
   const PhaseTimes phases_before = phases_;
+  const SweepBalance balance_before = forces_.sweep_balance();
   s.termination = Termination::kOk;
   s.message = "completed";
   arena_->execute([&] {
@@ -363,6 +370,8 @@ RunSummary Simulation::Run(double duration_s, const Observer& observer) {
   s.neighbour_rebuilds = list_.Builds() + spare_list_.Builds() - builds_before;
   s.phases = phases_;
   s.phases -= phases_before;
+  s.sweep_balance = forces_.sweep_balance();
+  s.sweep_balance -= balance_before;
   return s;
 }
 

@@ -50,6 +50,12 @@ class Simulation {
     // build instead of an incremental one: the cadence bounds that cost. A grain that crossed a
     // sink is fast, so rebuilds come every few steps: 50 steps at Δt ~ 2e-5 s is a ~1 ms lag.
     int sink_every_steps = 50;
+    // A measurement of the force sweep's balance at this many threads on any machine (0: off):
+    // the sweep runs in that many chunks one after another on one thread, the last first, so
+    // each chunk evaluates exactly its own cross pairs, as when every chunk has its own core;
+    // RunSummary::sweep_balance then gives the balance those threads would see. Results are
+    // the same as with any thread count.
+    int balance_probe_chunks = 0;
   };
   // Called during Run() after every step whose step count (steps(), counted from the start of
   // the simulation, so a restarted run keeps the cadence) is a multiple of `every_steps`;
@@ -85,6 +91,8 @@ class Simulation {
   void SetGravity(const Vec3& gravity_m_s2) { scene_.gravity_m_s2 = gravity_m_s2; }
   // Changes the worker count for subsequent Run() calls (0: all cores).
   void SetThreads(int threads);
+  // Options::balance_probe_chunks from now on (0: off).
+  void SetBalanceProbe(int chunks);
   RunSummary Run(double duration_s);
   RunSummary Run(double duration_s, const Observer& observer);
 

@@ -29,6 +29,33 @@ Scene PouredBox() {
   return s;
 }
 
+// 1,200 spheres, enough for several sweep chunks, overlapping from the first step: many pairs
+// cross chunk boundaries, and a chunk's cross pairs may be evaluated by another chunk's thread.
+Scene JostlingPacking() {
+  Scene s = PouredBox();
+  s.fills.clear();
+  Rng rng(3);
+  const double d = 0.004, pitch = 0.97 * d;
+  for (int z = 0; z < 12; ++z)
+    for (int y = 0; y < 10; ++y)
+      for (int x = 0; x < 10; ++x) {
+        const Vec3 at{0.0025 + pitch * x, 0.0025 + pitch * y, 0.0025 + pitch * z};
+        const Vec3 v{rng.Uniform() - 0.5, rng.Uniform() - 0.5, rng.Uniform() - 0.5};
+        s.particles.push_back({0, at, 0.2 * v, 50.0 * v, d, {}});
+      }
+  return s;
+}
+
+bool SameState(const Particles& a, const Particles& b) {
+  if (a.Size() != b.Size()) return false;
+  for (size_t i = 0; i < a.Size(); ++i)
+    if (!(a.id[i] == b.id[i] && a.position_m[i] == b.position_m[i] &&
+          a.velocity_m_s[i] == b.velocity_m_s[i] &&
+          a.angular_velocity_rad_s[i] == b.angular_velocity_rad_s[i]))
+      return false;
+  return true;
+}
+
 }  // namespace
 
 TEST_CASE("a poured packing is bit-identical with 1 and 2 threads", "[unit][physics]") {
@@ -65,19 +92,7 @@ TEST_CASE("a poured packing is bit-identical with 1 and 2 threads", "[unit][phys
 }
 
 TEST_CASE("a dense, jostling packing is bit-identical with 1 and 3 threads", "[unit][physics]") {
-  // Enough spheres for three sweep chunks, overlapping from the first step: many pairs cross
-  // chunk boundaries, and a chunk's cross pairs may be evaluated by another chunk's thread.
-  Scene s = PouredBox();
-  s.fills.clear();
-  Rng rng(3);
-  const double d = 0.004, pitch = 0.97 * d;
-  for (int z = 0; z < 12; ++z)
-    for (int y = 0; y < 10; ++y)
-      for (int x = 0; x < 10; ++x) {
-        const Vec3 at{0.0025 + pitch * x, 0.0025 + pitch * y, 0.0025 + pitch * z};
-        const Vec3 v{rng.Uniform() - 0.5, rng.Uniform() - 0.5, rng.Uniform() - 0.5};
-        s.particles.push_back({0, at, 0.2 * v, 50.0 * v, d, {}});
-      }
+  const Scene s = JostlingPacking();
   Particles result[2];
   int run_index = 0;
   for (const int threads : {1, 3}) {
@@ -92,12 +107,31 @@ TEST_CASE("a dense, jostling packing is bit-identical with 1 and 3 threads", "[u
     CHECK(sim.ActiveContacts() > 300);  // still a touching packing
     result[run_index++] = sim.particles();
   }
-  size_t differing = 0;
-  for (size_t i = 0; i < result[0].Size(); ++i)
-    differing += !(result[0].id[i] == result[1].id[i] &&
-                   result[0].position_m[i] == result[1].position_m[i] &&
-                   result[0].velocity_m_s[i] == result[1].velocity_m_s[i] &&
-                   result[0].angular_velocity_rad_s[i] == result[1].angular_velocity_rad_s[i]);
   CHECK(result[0].Size() == 1200);
-  CHECK(differing == 0);
+  CHECK(SameState(result[0], result[1]));
+}
+
+TEST_CASE("the balance probe sweeps N chunks on one thread with the same result", "[unit][physics]") {
+  // Simulation::Options::balance_probe_chunks: chunks run one after another, the last first, so
+  // each evaluates its own cross pairs; the result is that of any thread count, and the balance
+  // lies in (0, 1] (1 only for perfectly even chunks).
+  const Scene s = JostlingPacking();
+  Particles result[2];
+  RunSummary runs[2];
+  for (const int probe : {0, 4}) {
+    Simulation sim(s, {.threads = 1, .balance_probe_chunks = probe});
+    std::string err;
+    REQUIRE(sim.Initialize(&err));
+    runs[probe > 0] = sim.Run(0.02);
+    REQUIRE(runs[probe > 0].ok());
+    result[probe > 0] = sim.particles();
+  }
+  CHECK(SameState(result[0], result[1]));
+  CHECK(runs[0].sweep_balance.passes == 0);
+  const SweepBalance& b = runs[1].sweep_balance;
+  CHECK(b.passes == runs[1].steps);
+  CHECK(b.chunks == 4);
+  CHECK(b.chunk_cpu_s > 0);
+  CHECK(b.Efficiency() > 0);
+  CHECK(b.Efficiency() <= 1.0);
 }
