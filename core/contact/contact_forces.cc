@@ -249,6 +249,8 @@ void ContactForces::Compute(Particles& p, const NeighbourList& list,
     }
     balance_.capacity_cpu_s += static_cast<double>(chunks) * slowest;
     balance_.chunks = static_cast<int64_t>(chunks);
+    balance_.cross_pairs += static_cast<double>(chunks_.CrossPairCount());
+    balance_.listed_pairs += static_cast<double>(list.PairCount());
     ++balance_.passes;
   };
   // The one dispatch point of the contact laws: one instantiation of the loop per combination.

@@ -50,6 +50,7 @@ class SweepChunks {
   size_t Count() const { return boundary_.size() - 1; }
   uint32_t Begin(size_t c) const { return boundary_[c]; }
   uint32_t End(size_t c) const { return boundary_[c + 1]; }
+  size_t CrossPairCount() const { return incoming_.size(); }
   std::span<const CrossPair> Incoming(size_t c) const {
     return {incoming_.data() + incoming_start_[c], incoming_.data() + incoming_start_[c + 1]};
   }

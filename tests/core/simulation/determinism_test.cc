@@ -134,4 +134,6 @@ TEST_CASE("the balance probe sweeps N chunks on one thread with the same result"
   CHECK(b.chunk_cpu_s > 0);
   CHECK(b.Efficiency() > 0);
   CHECK(b.Efficiency() <= 1.0);
+  CHECK(b.CrossPairShare() > 0);  // 4 slabs of a 12-layer packing share boundary pairs
+  CHECK(b.CrossPairShare() < 0.5);
 }
