@@ -7,6 +7,7 @@
 #include "diagnose/loop/base_fit.h"
 #include "diagnose/loop/bound_step.h"
 #include "diagnose/loop/candidate_step.h"
+#include "diagnose/loop/diagnosis_message.h"
 #include "diagnose/loop/fit_state.h"
 #include "diagnose/ranking/discrepancy_floor.h"
 #include "diagnose/ranking/ranking.h"
@@ -71,56 +72,10 @@ double EstimatedFloor(const std::vector<Observation>& at, int fitted) {
                        static_cast<int>(at.size()) - fitted);
 }
 
-std::string FloorText(double phi) {
-  std::ostringstream s;
-  s.precision(3);
-  s << phi;
-  return s.str();
-}
-
-// "jkr_adhesion or particle_shape (delta BIC -12.1 and -11.4, within 6)" from the last step.
-std::string TieText(const Diagnosis& d, const std::vector<CandidateEffect>& candidates) {
-  std::ostringstream s;
-  s.precision(3);
-  const DiagnosisStep& step = d.steps.back();
-  const RankingEntry& a = step.entries[step.ranking.winner];
-  const RankingEntry& b = step.entries[step.ranking.tied];
-  auto one = [&candidates](const RankingEntry& e) {
-    const EffectParameter& p = candidates[e.candidate].parameters[0];
-    return e.key + " (" + (e.values.empty() ? "" : EffectDirection(p, e.values[0])) + ")";
-  };
-  s << one(a) << " or " << one(b) << " explain the " << (d.screened ? "misfit" : "gap")
-    << " about equally (delta BIC " << a.evidence.delta_bic << " and " << b.evidence.delta_bic
-    << "; BIC gap " << std::fabs(BicGap(a.evidence, b.evidence))
-    << " under the common floor, within " << IndistinctWithin(a.evidence, b.evidence) << ")";
-  return s.str();
-}
-
 std::string Names(const std::vector<int>& named, const std::vector<CandidateEffect>& candidates) {
   std::string s;
   for (int c : named) s += (s.empty() ? "" : " + ") + candidates[c].key;
   return s;
-}
-
-// "rolling_resistance (less rolling resistance than assumed, delta_mu_r = -0.06)" per added
-// effect; an effect whose law was not told apart from another of its mechanism is preceded by
-// "adhesion, law not told apart: sjkr_cohesion or jkr_adhesion; the better fit: ".
-std::string Signed(const Diagnosis& d, const ModelPoint& point,
-                   const std::vector<CandidateEffect>& candidates) {
-  std::ostringstream s;
-  s.precision(3);
-  for (const ActiveEffect& a : point.effects) {
-    const CandidateEffect& c = candidates[a.candidate];
-    const EffectParameter& p = c.parameters[0];
-    s << (s.tellp() > 0 ? " + " : "");
-    for (size_t k = 0; k < d.named.size() && k < d.named_law_alternative.size(); ++k)
-      if (d.named[k] == a.candidate && d.named_law_alternative[k] >= 0)
-        s << c.mechanism << ", law not told apart: " << c.key << " or "
-          << candidates[d.named_law_alternative[k]].key << "; the better fit: ";
-    s << c.key << " (" << EffectDirection(p, a.values[0]) << ", " << p.name << " = "
-      << a.values[0] << (p.unit.empty() ? "" : " " + p.unit) << ")";
-  }
-  return s.str();
 }
 
 // Whether candidate c is another law of a mechanism already named.
@@ -128,29 +83,6 @@ bool MechanismNamed(const Diagnosis& d, const std::vector<CandidateEffect>& cand
   for (int n : d.named)
     if (SameMechanism(candidates[n].mechanism, candidates[c].mechanism)) return true;
   return false;
-}
-
-// The screen's sentence (diagnosis.h step 2): the directed test of the step's winner, or of its
-// best simulated candidate when none won, beside the omnibus gap test that did not flag.
-std::string ScreenText(const Diagnosis& d, const DiagnoseOptions& options) {
-  const DiagnosisStep& step = d.steps.front();
-  const double per_candidate =
-      options.significance / static_cast<double>(std::max<size_t>(1, step.entries.size()));
-  const int best = DecidingEntry(step.ranking, step.entries);
-  std::ostringstream s;
-  s.precision(3);
-  if (best < 0) return "screened without a gap: no candidate";
-  const RankingEntry& e = step.entries[best];
-  s << (step.ranking.winner >= 0 ? "found by its own directed test" : "screened without a gap")
-    << " (" << (step.ranking.winner >= 0 ? "" : "best candidate ") << e.key
-    << (e.simulated ? "" : ", linearised refit: none was significant enough to simulate")
-    << ": likelihood-ratio p " << e.evidence.lr_p_value
-    << (e.evidence.significant ? " below" : ", not below") << " significance/K = " << per_candidate
-    << ") while the omnibus gap test did not flag (chi-square p " << d.gap_before.p_value << ")";
-  if (step.ranking.control_first)
-    s << "; a control (a copy of a fitted parameter) ranks first or level with the best effect, "
-         "so none is named";
-  return s.str();
 }
 
 // `after_fit` is what the "after" figures describe: the fit with the named effects, or, for a
@@ -164,77 +96,7 @@ void Finish(const std::vector<Observation>& observations, const FitState& fit,
   d->after = WithPrediction(observations, after_fit.prediction, options.discrepancy_floor);
   d->gap_after = TestGap(d->after, after_fit.Fitted(), {options.significance});
   d->floor_after = EstimatedFloor(d->after, after_fit.Fitted());
-  std::ostringstream m;
-  if (!d->base_identifiability.Identifiable() && !d->base_identifiability.singular_values.empty()) {
-    m << "the data do not determine the base parameters (";
-    for (const calibrate::UndeterminedDirection& u : d->base_identifiability.undetermined)
-      m << u.description;
-    m << "); ";
-  }
-  if (d->termination == DiagnosisTermination::kBaseUnsettled) {
-    m << "no effect ranked: " << d->base_summary
-      << "; raise the study's max_evaluations (or --max-evaluations) until it settles ("
-      << d->gap_before.summary << ")";
-  } else if (d->termination == DiagnosisTermination::kNoMissingEffect) {
-    m << "no missing effect found: the base model fits within noise (" << d->gap_before.summary
-      << ")";
-    if (d->screened && !d->steps.empty()) m << "; " << ScreenText(*d, options);
-    if (options.screen && !d->screened && !d->base.settled && d->base_at_bound.empty())
-      m << "; not screened (the candidates' own tests need a settled base): the base calibration "
-           "did not settle within "
-        << kMaxBaseBudgetScale << "x the study's budget; raise max_evaluations to screen";
-    if (!d->bound_note.empty()) {
-      m << "; but the base fit ends on a bound: " << d->bound_note;
-    } else if (!d->base_at_bound.empty()) {
-      m << "; but the base fit ends on a bound (";
-      for (size_t k = 0; k < d->base_at_bound.size(); ++k)
-        m << (k ? ", " : "") << d->base_at_bound[k];
-      m << "): the data may ask for a value beyond the study's range, and an effect that moves "
-           "the observables as that parameter does would be absorbed there; widen the range to "
-           "see where the fit goes";
-    }
-  } else if (d->termination == DiagnosisTermination::kEffectFound) {
-    m << "missing effect: " << Signed(*d, fit.point, candidates) << "; after adding it "
-      << d->gap_after.summary;
-  } else if (d->termination == DiagnosisTermination::kNotToldApart &&
-             d->bound.verdict == BoundVerdict::kNotToldApart) {
-    m << "not told apart: " << d->bound_note << "; " << d->separating.description;
-  } else if (d->termination == DiagnosisTermination::kNotToldApart) {
-    m << "not told apart: " << TieText(*d, candidates) << "; " << d->separating.description;
-  } else if (d->termination == DiagnosisTermination::kGapRemains) {
-    m << "added " << Signed(*d, fit.point, candidates) << " but a gap remains ("
-      << d->gap_after.summary << "), not explained by the library";
-    if (!d->not_told_apart.empty())
-      m << "; next, not told apart: " << TieText(*d, candidates) << "; "
-        << d->separating.description;
-    if (!d->control_note.empty()) m << "; " << d->control_note;
-    if (!d->revaluation_note.empty())
-      m << "; next, a re-valued modelled parameter (model form, not named): "
-        << d->revaluation_note;
-  } else if (!d->revaluation_note.empty()) {
-    m << "model-form offset: the data re-value a parameter the base model already has ("
-      << d->revaluation_note
-      << "), by no more than its assumed value; an offset in that mechanism's law (another "
-         "engine's, a real powder's) fits the same, so no missing effect is named; calibrate "
-         "that parameter in the base to measure it (base: "
-      << d->gap_before.summary << "; re-valued: " << d->gap_after.summary << ")";
-  } else if (!d->control_note.empty()) {
-    m << "model-form offset / no missing effect: " << d->control_note << " (discrepancy floor "
-      << FloorText(d->floor_before) << " single-run scatter(s) beyond the fixed "
-      << options.discrepancy_floor << "; " << d->gap_before.summary << ")";
-  } else {
-    m << "model-form offset: the base model misses the data by a discrepancy floor of "
-      << FloorText(d->floor_before) << " single-run scatter(s) beyond the fixed "
-      << options.discrepancy_floor
-      << ", and no effect of the library explains more than that floor "
-      << "allows (gap not explained by the library: " << d->gap_before.summary << ")";
-  }
-  if (d->screened && !d->steps.empty() && d->termination != DiagnosisTermination::kNoMissingEffect)
-    m << "; " << ScreenText(*d, options);
-  if (!d->bound_note.empty() && d->termination != DiagnosisTermination::kNoMissingEffect &&
-      d->bound.verdict != BoundVerdict::kNotToldApart)
-    m << "; the base fit ended on a bound: " << d->bound_note;
-  d->message = m.str();
+  d->message = DiagnosisMessage(*d, options, candidates);
 }
 
 // The re-valuation rule (revaluation.h): true, with d->revalued and its note filled, when the
