@@ -5,8 +5,10 @@
 #include <cmath>
 #include <sstream>
 
+#include "calibrate/jacobian_svd.h"
 #include "diagnose/gap/gap_significance.h"
 #include "diagnose/loop/fit_state.h"
+#include "diagnose/loop/base_noise.h"
 #include "diagnose/ranking/evidence.h"
 
 namespace demcal::diagnose {
@@ -18,19 +20,10 @@ bool SettledTermination(const std::string& termination) {
 
 namespace {
 
-// The fit's χ² and its standard deviation due to the simulation noise of the prediction's means
-// (Chi2NoiseSd, evidence.h, with the fixed floor only: φ = 0).
-struct NoisyChi2 {
-  double chi2 = INFINITY, noise_sd = 0;
-};
-
 NoisyChi2 Chi2(const std::vector<Observation>& observations, const Prediction& p,
                double floor_factor) {
   if (!p.ok) return {};
-  const std::vector<Observation> at = WithPrediction(observations, p, floor_factor);
-  Eigen::VectorXd r(at.size()), u(at.size());
-  for (size_t i = 0; i < at.size(); ++i) r(i) = at[i].Residual(), u(i) = at[i].sem / at[i].Sigma();
-  return {r.squaredNorm(), Chi2NoiseSd(r, u, Eigen::VectorXd::Zero(r.size()), 0)};
+  return BaseChi2(WithPrediction(observations, p, floor_factor));
 }
 
 // On a bound: the unit coordinate at 0 or 1 up to rounding (optimisers clamp to the bound
@@ -107,10 +100,17 @@ BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observat
   const std::vector<Observation> at = WithPrediction(observations, b.base.prediction, floor_factor);
   const int n = static_cast<int>(observations.size()),
             p = static_cast<int>(b.base.base_unit.size());
-  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n, p);
+  // Standardised as the residuals are (by each row's σ), with the sensitivities' own standard
+  // errors: a singular value within their size is not resolved above the noise
+  // (JacobianNoiseFloor), the calibration's own rule for a J estimated from noisy runs.
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n, p), J_sigma = Eigen::MatrixXd::Zero(n, p);
   for (int i = 0; i < n && i < static_cast<int>(b.base.jacobian.size()); ++i)
-    for (int j = 0; j < p && j < static_cast<int>(b.base.jacobian[i].size()); ++j)
+    for (int j = 0; j < p && j < static_cast<int>(b.base.jacobian[i].size()); ++j) {
       J(i, j) = b.base.jacobian[i][j] / at[i].Sigma();
+      if (i < static_cast<int>(b.base.jacobian_sigma.size()) &&
+          j < static_cast<int>(b.base.jacobian_sigma[i].size()))
+        J_sigma(i, j) = b.base.jacobian_sigma[i][j] / at[i].Sigma();
+    }
   const std::vector<std::string> names = model.BaseParameterNames();
   for (int j = 0; j < p; ++j) {
     const double u = b.base.base_unit[j];
@@ -122,8 +122,9 @@ BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observat
   }
   for (const std::string& a : b.at_bound) s << "; " << a;
   if (p > 0) {
-    b.identifiability = calibrate::AnalyseIdentifiability(J, model.BaseParameterNames(),
-                                                          model.BaseSiPerUnit(b.base.base_unit));
+    b.identifiability = calibrate::AnalyseIdentifiability(
+        J, model.BaseParameterNames(), model.BaseSiPerUnit(b.base.base_unit),
+        calibrate::JacobianNoiseFloor(J_sigma));
     if (!b.identifiability.Identifiable()) {
       s << "; the data do not determine the base parameters:";
       for (const calibrate::UndeterminedDirection& u : b.identifiability.undetermined)
