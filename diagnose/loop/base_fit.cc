@@ -26,6 +26,14 @@ NoisyChi2 Chi2(const std::vector<Observation>& observations, const Prediction& p
   return BaseChi2(WithPrediction(observations, p, floor_factor));
 }
 
+// χ² figures in the summary: 3 significant digits.
+std::string Rounded(double x) {
+  std::ostringstream o;
+  o.precision(3);
+  o << x;
+  return o.str();
+}
+
 // On a bound: the unit coordinate at 0 or 1 up to rounding (optimisers clamp to the bound
 // exactly; 1e-9 only absorbs the unit map's arithmetic, it is not a tolerance on the fit).
 bool AtBound(double u) { return u <= 1e-9 || u >= 1 - 1e-9; }
@@ -69,6 +77,7 @@ BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observat
     // optimiser's own tolerance.
     const NoisyChi2 now = Chi2(observations, b.base.prediction, floor_factor);
     b.chi2_rounds.push_back(now.chi2);
+    b.chi2_noise_sd_rounds.push_back(now.noise_sd);
     if (std::isfinite(previous.chi2) &&
         previous.chi2 - now.chi2 < StagnationMargin(previous.noise_sd, now.noise_sd)) {
       b.base.settled = b.stagnated = true;
@@ -79,8 +88,9 @@ BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observat
     if (b.budget_scale >= kMaxBaseBudgetScale) break;
     if (progress)
       progress("the base calibration ended on its budget (" + b.base.termination + ", " +
-               std::to_string(b.base.max_evaluations) +
-               " evaluations): again with twice the budget");
+               std::to_string(b.base.max_evaluations) + " evaluations, best chi2 " +
+               Rounded(now.chi2) + ", simulation noise sd " + Rounded(now.noise_sd) +
+               "): again with twice the budget");
   }
   if (b.base.ok && !b.base.settled && !b.within_noise)
     b.within_noise = WithinNoise(observations, b.base, floor_factor, significance);
@@ -94,9 +104,17 @@ BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observat
       << " (" << (b.stagnation_margin > 1 ? "the simulation noise of the two fits' chi2"
                                           : "one standard deviation of a fitted parameter")
       << ")";
-  if (!b.base.settled)
-    s << ": not settled by the calibration's own criterion"
-      << (b.within_noise ? ", but within noise there (more budget could only lower chi2)" : "");
+  if (!b.base.settled) {
+    s << ": not settled by the calibration's own criterion";
+    const size_t r = b.chi2_rounds.size();
+    if (r >= 2)  // the last doubling's drop against the stagnation margin: real progress
+      s << "; twice the budget still lowered chi2 by "
+        << Rounded(b.chi2_rounds[r - 2] - b.chi2_rounds[r - 1]) << " (" << Rounded(b.chi2_rounds[r - 2])
+        << " to " << Rounded(b.chi2_rounds[r - 1]) << "), more than its simulation noise allows ("
+        << Rounded(StagnationMargin(b.chi2_noise_sd_rounds[r - 2], b.chi2_noise_sd_rounds[r - 1]))
+        << ")";
+    if (b.within_noise) s << ", but within noise there (more budget could only lower chi2)";
+  }
   const std::vector<Observation> at = WithPrediction(observations, b.base.prediction, floor_factor);
   const int n = static_cast<int>(observations.size()),
             p = static_cast<int>(b.base.base_unit.size());

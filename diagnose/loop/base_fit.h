@@ -61,6 +61,7 @@ struct BaseFit {
                               // stagnation_margin (StagnationMargin)
   double stagnation_margin = 0;
   std::vector<double> chi2_rounds;  // the best fit's χ² of every unsettled round, in order
+  std::vector<double> chi2_noise_sd_rounds;  // and its simulation noise sd (BaseChi2)
   calibrate::IdentifiabilityReport identifiability;
   // Base parameters whose fit ended on a bound of the study's range: "mu_s_BP_BP at its lower
   // bound". The data may ask for a value beyond the range, and an effect that moves the
