@@ -39,6 +39,9 @@ inline double EffectChange(int e, int kind, double w, double v) {
       return v * std::vector<double>{10, 1e-3, -1e-3}[kind];  // control: like mu
     case 5:
       return v * std::vector<double>{29, 3.9e-3, -1.1e-4}[kind];  // roughness: nearly rolling's
+    case 6:  // decoy: shape's signature plus a little adhesion's, saturating at its probe 0.1
+      return std::min(v, 0.1) *
+             (std::vector<double>{10, 6e-3, -5e-4}[kind] + 0.02 * w * std::vector<double>{40, 2e-3, -2e-4}[kind]);
   }
   return 0;
 }
