@@ -189,14 +189,19 @@ StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>
     RefineRefits(model, f, fit, candidates, options.extra_refits, batch);
     // A simulated refit that is not significant fell short of its linear promise (a response
     // that saturates or turns, a signature far from where the refit lands): its slot goes to the
-    // next candidate of the linear ranking, until dem_refits simulated refits are significant or
-    // the linear ranking is used up. Each simulated refit is held to α/K as before (K the step's
+    // next candidate of the linear ranking, until dem_refits simulated refits are significant,
+    // the linear ranking is used up, or 2·dem_refits have been simulated (a cost bound, as
+    // dem_refits itself). Each simulated refit is held to α/K as before (K the step's
     // candidates), so simulating more of the K keeps the union bound.
-    int held = 0;
+    int held = 0, handed = 0;
     for (const Work* w : shortlist) held += SimulatedSignificant(f, *w, candidates);
+    for (const Work* w : linear)
+      handed += std::find(shortlist.begin(), shortlist.end(), w) != shortlist.end();
     batch.clear();
     for (Work* w : linear) {
-      if (held + static_cast<int>(batch.size()) >= options.dem_refits) break;
+      if (held + static_cast<int>(batch.size()) >= options.dem_refits ||
+          handed + static_cast<int>(batch.size()) >= 2 * options.dem_refits)
+        break;
       if (std::find(shortlist.begin(), shortlist.end(), w) == shortlist.end()) batch.push_back(w);
     }
     shortlist.insert(shortlist.end(), batch.begin(), batch.end());

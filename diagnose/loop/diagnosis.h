@@ -21,7 +21,7 @@
 //     from there) while each lowers that candidate's best χ² by at least 1 (at most extra_refits):
 //     candidates are compared at their converged refits. A simulated refit that is not
 //     significant passes its slot to the next linearised candidate (until dem_refits are
-//     significant or the linear shortlist is used up). Ranking by evidence (ranking.h): ΔBIC
+//     significant, the linear shortlist is used up, or 2·dem_refits were simulated). Ranking by evidence (ranking.h): ΔBIC
 //     and likelihood ratio of the simulated refits, with the signature match beside them.
 //     The evidence carries the discrepancy floor estimated from the data (evidence.h) at α/K.
 //  5. The winner is added (its refitted point becomes the current fit, its signature a fitted
