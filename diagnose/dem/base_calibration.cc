@@ -13,10 +13,12 @@
 namespace demcal::diagnose {
 namespace {
 
-// d mean / d unit per target (observable units), from the evaluated candidates near the best.
+// d mean / d unit per target (observable units), from the evaluated candidates near the best,
+// with the standard errors of those sensitivities.
 bool Sensitivities(const calibrate::CalibrationSummary& s,
                    const std::vector<calibrate::Target>& targets,
-                   std::vector<std::vector<double>>* jacobian, std::string* message) {
+                   std::vector<std::vector<double>>* jacobian,
+                   std::vector<std::vector<double>>* jacobian_sigma, std::string* message) {
   std::vector<calibrate::Sample> samples;
   for (const calibrate::Candidate& c : s.candidates) {
     if (!c.result.ok()) continue;
@@ -32,9 +34,12 @@ bool Sensitivities(const calibrate::CalibrationSummary& s,
   *message = surface.message;
   if (!surface.ok) return false;
   jacobian->assign(targets.size(), std::vector<double>(surface.jacobian.cols()));
+  jacobian_sigma->assign(targets.size(), std::vector<double>(surface.jacobian.cols()));
   for (size_t k = 0; k < targets.size(); ++k)
-    for (Eigen::Index j = 0; j < surface.jacobian.cols(); ++j)
+    for (Eigen::Index j = 0; j < surface.jacobian.cols(); ++j) {
       (*jacobian)[k][j] = surface.jacobian(k, j) * targets[k].uncertainty;
+      (*jacobian_sigma)[k][j] = surface.jacobian_sigma(k, j) * targets[k].uncertainty;
+    }
   return true;
 }
 
@@ -85,9 +90,10 @@ BaseCalibration StudyModel::CalibrateBase(int budget_scale) {
   base.base_unit = best.unit;
   base.prediction = Predict(best.result);
   std::string why;
-  if (!Sensitivities(summary, targets, &base.jacobian, &why)) {
+  if (!Sensitivities(summary, targets, &base.jacobian, &base.jacobian_sigma, &why)) {
     base.message += "; no sensitivities (" + why + "): the refits move only the effects";
     base.jacobian.assign(targets.size(), std::vector<double>(study_.space.Size(), 0.0));
+    base.jacobian_sigma.clear();
   }
   base.ok = base.prediction.ok;
   return base;

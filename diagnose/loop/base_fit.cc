@@ -5,8 +5,10 @@
 #include <cmath>
 #include <sstream>
 
+#include "calibrate/jacobian_svd.h"
 #include "diagnose/gap/gap_significance.h"
 #include "diagnose/loop/fit_state.h"
+#include "diagnose/loop/base_noise.h"
 #include "diagnose/ranking/evidence.h"
 
 namespace demcal::diagnose {
@@ -18,19 +20,18 @@ bool SettledTermination(const std::string& termination) {
 
 namespace {
 
-// The fit's χ² and its standard deviation due to the simulation noise of the prediction's means
-// (Chi2NoiseSd, evidence.h, with the fixed floor only: φ = 0).
-struct NoisyChi2 {
-  double chi2 = INFINITY, noise_sd = 0;
-};
-
 NoisyChi2 Chi2(const std::vector<Observation>& observations, const Prediction& p,
                double floor_factor) {
   if (!p.ok) return {};
-  const std::vector<Observation> at = WithPrediction(observations, p, floor_factor);
-  Eigen::VectorXd r(at.size()), u(at.size());
-  for (size_t i = 0; i < at.size(); ++i) r(i) = at[i].Residual(), u(i) = at[i].sem / at[i].Sigma();
-  return {r.squaredNorm(), Chi2NoiseSd(r, u, Eigen::VectorXd::Zero(r.size()), 0)};
+  return BaseChi2(WithPrediction(observations, p, floor_factor));
+}
+
+// χ² figures in the summary: 3 significant digits.
+std::string Rounded(double x) {
+  std::ostringstream o;
+  o.precision(3);
+  o << x;
+  return o.str();
 }
 
 // On a bound: the unit coordinate at 0 or 1 up to rounding (optimisers clamp to the bound
@@ -76,6 +77,7 @@ BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observat
     // optimiser's own tolerance.
     const NoisyChi2 now = Chi2(observations, b.base.prediction, floor_factor);
     b.chi2_rounds.push_back(now.chi2);
+    b.chi2_noise_sd_rounds.push_back(now.noise_sd);
     if (std::isfinite(previous.chi2) &&
         previous.chi2 - now.chi2 < StagnationMargin(previous.noise_sd, now.noise_sd)) {
       b.base.settled = b.stagnated = true;
@@ -86,8 +88,9 @@ BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observat
     if (b.budget_scale >= kMaxBaseBudgetScale) break;
     if (progress)
       progress("the base calibration ended on its budget (" + b.base.termination + ", " +
-               std::to_string(b.base.max_evaluations) +
-               " evaluations): again with twice the budget");
+               std::to_string(b.base.max_evaluations) + " evaluations, best chi2 " +
+               Rounded(now.chi2) + ", simulation noise sd " + Rounded(now.noise_sd) +
+               "): again with twice the budget");
   }
   if (b.base.ok && !b.base.settled && !b.within_noise)
     b.within_noise = WithinNoise(observations, b.base, floor_factor, significance);
@@ -101,16 +104,31 @@ BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observat
       << " (" << (b.stagnation_margin > 1 ? "the simulation noise of the two fits' chi2"
                                           : "one standard deviation of a fitted parameter")
       << ")";
-  if (!b.base.settled)
-    s << ": not settled by the calibration's own criterion"
-      << (b.within_noise ? ", but within noise there (more budget could only lower chi2)" : "");
+  if (!b.base.settled) {
+    s << ": not settled by the calibration's own criterion";
+    const size_t r = b.chi2_rounds.size();
+    if (r >= 2)  // the last doubling's drop against the stagnation margin: real progress
+      s << "; twice the budget still lowered chi2 by "
+        << Rounded(b.chi2_rounds[r - 2] - b.chi2_rounds[r - 1]) << " (" << Rounded(b.chi2_rounds[r - 2])
+        << " to " << Rounded(b.chi2_rounds[r - 1]) << "), more than its simulation noise allows ("
+        << Rounded(StagnationMargin(b.chi2_noise_sd_rounds[r - 2], b.chi2_noise_sd_rounds[r - 1]))
+        << ")";
+    if (b.within_noise) s << ", but within noise there (more budget could only lower chi2)";
+  }
   const std::vector<Observation> at = WithPrediction(observations, b.base.prediction, floor_factor);
   const int n = static_cast<int>(observations.size()),
             p = static_cast<int>(b.base.base_unit.size());
-  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n, p);
+  // Standardised as the residuals are (by each row's σ), with the sensitivities' own standard
+  // errors: a singular value within their size is not resolved above the noise
+  // (JacobianNoiseFloor), the calibration's own rule for a J estimated from noisy runs.
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n, p), J_sigma = Eigen::MatrixXd::Zero(n, p);
   for (int i = 0; i < n && i < static_cast<int>(b.base.jacobian.size()); ++i)
-    for (int j = 0; j < p && j < static_cast<int>(b.base.jacobian[i].size()); ++j)
+    for (int j = 0; j < p && j < static_cast<int>(b.base.jacobian[i].size()); ++j) {
       J(i, j) = b.base.jacobian[i][j] / at[i].Sigma();
+      if (i < static_cast<int>(b.base.jacobian_sigma.size()) &&
+          j < static_cast<int>(b.base.jacobian_sigma[i].size()))
+        J_sigma(i, j) = b.base.jacobian_sigma[i][j] / at[i].Sigma();
+    }
   const std::vector<std::string> names = model.BaseParameterNames();
   for (int j = 0; j < p; ++j) {
     const double u = b.base.base_unit[j];
@@ -122,8 +140,9 @@ BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observat
   }
   for (const std::string& a : b.at_bound) s << "; " << a;
   if (p > 0) {
-    b.identifiability = calibrate::AnalyseIdentifiability(J, model.BaseParameterNames(),
-                                                          model.BaseSiPerUnit(b.base.base_unit));
+    b.identifiability = calibrate::AnalyseIdentifiability(
+        J, model.BaseParameterNames(), model.BaseSiPerUnit(b.base.base_unit),
+        calibrate::JacobianNoiseFloor(J_sigma));
     if (!b.identifiability.Identifiable()) {
       s << "; the data do not determine the base parameters:";
       for (const calibrate::UndeterminedDirection& u : b.identifiability.undetermined)

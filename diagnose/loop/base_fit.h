@@ -39,7 +39,8 @@ inline constexpr int kMaxBaseBudgetScale = 4;
 // Stagnation: the drop of the best fit's χ² from one budget to twice it that still counts as no
 // progress, max(1, kNoiseSds·√(sd_before² + sd_after²)). 1 is one standard deviation of a
 // fitted parameter (the profile-likelihood unit). sd is each fit's χ² noise from its simulated
-// means' standard errors (Chi2NoiseSd, evidence.h): on an objective whose simulation noise moves
+// means' standard errors (BaseChi2, base_noise.h: rows that read one simulated mean added
+// together, as one shared error moves them together): on an objective whose simulation noise moves
 // χ² by more than 1, the best of twice as many noisy candidates is lower by the luck of its
 // draws alone (the minimum of more draws), so a drop within two standard deviations of the
 // difference is not evidence that the search still moves — the same kNoiseSds the ranking uses
@@ -60,6 +61,7 @@ struct BaseFit {
                               // stagnation_margin (StagnationMargin)
   double stagnation_margin = 0;
   std::vector<double> chi2_rounds;  // the best fit's χ² of every unsettled round, in order
+  std::vector<double> chi2_noise_sd_rounds;  // and its simulation noise sd (BaseChi2)
   calibrate::IdentifiabilityReport identifiability;
   // Base parameters whose fit ended on a bound of the study's range: "mu_s_BP_BP at its lower
   // bound". The data may ask for a value beyond the range, and an effect that moves the

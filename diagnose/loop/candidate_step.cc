@@ -44,6 +44,26 @@ void RetakeSignatures(ForwardModel& model, const std::vector<CandidateEffect>& c
     if (got[k]) taken_at[at[k]] = points[k].effects.back().values[0];
 }
 
+// The candidates of a refit batch with their linearised χ², for the progress log.
+std::string Listed(const std::vector<Work*>& batch, const std::vector<CandidateEffect>& candidates) {
+  std::ostringstream s;
+  s.precision(4);
+  for (size_t i = 0; i < batch.size(); ++i)
+    s << (i ? ", " : "") << candidates[batch[i]->candidate].key << " (linearised chi2 "
+      << batch[i]->refit.chi2 << ")";
+  return s.str();
+}
+
+// Whether a candidate's simulated refit is significant by the ranking's own test (Record, Fill:
+// the evidence with the discrepancy floor at α/K).
+bool SimulatedSignificant(const Frame& f, const Work& w,
+                          const std::vector<CandidateEffect>& candidates) {
+  if (!w.simulated) return false;
+  const Eigen::VectorXd r = StandardisedResiduals(*f.observations, w.best_prediction.mean, f.sigma);
+  const int k = static_cast<int>(candidates[w.candidate].parameters.size());
+  return EvidenceWithFloor(f.r0, r, f.q, k, f.fitted, f.per_candidate).significant;
+}
+
 // A base on a bound (bound_alternative.h): the controls that copy a bound parameter stand for it
 // beyond its range and are refitted by simulation too (free, so they may step beyond it),
 // significant or not — a base within noise on its bound has no significant candidate.
@@ -151,22 +171,40 @@ StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>
     work.push_back(w);
   }
   // The shortlist: significant by the linear prediction, best linear ΔBIC first.
-  std::vector<Work*> shortlist;
+  std::vector<Work*> linear;
   for (Work& w : work)
     if (EvidenceOf(f.chi2_base, w.refit.chi2, 1, f.n(), f.significance).significant)
-      shortlist.push_back(&w);
-  std::sort(shortlist.begin(), shortlist.end(),
+      linear.push_back(&w);
+  std::sort(linear.begin(), linear.end(),
             [](const Work* a, const Work* b) { return a->refit.chi2 < b->refit.chi2; });
-  if (static_cast<int>(shortlist.size()) > options.dem_refits) shortlist.resize(options.dem_refits);
+  std::vector<Work*> shortlist(
+      linear.begin(), linear.begin() + std::min<size_t>(linear.size(), options.dem_refits));
   if (!bounds.empty()) ForceBoundControls(candidates, bounds, work, &shortlist);
   start = Clock::now();
   const int sims1 = model.SimulationsRun();
-  if (!shortlist.empty()) {
-    if (progress)
-      progress("refitting " + std::to_string(shortlist.size()) + " candidates by simulation");
-    SimulateRefits(model, f, fit, candidates, shortlist);  // the Gauss–Newton point
-    SimulateRefits(model, f, fit, candidates, shortlist);  // after the secant correction
-    RefineRefits(model, f, fit, candidates, options.extra_refits, shortlist);
+  for (std::vector<Work*> batch = shortlist; !batch.empty();) {
+    if (progress) progress("refitting by simulation: " + Listed(batch, candidates));
+    SimulateRefits(model, f, fit, candidates, batch);  // the Gauss–Newton point
+    SimulateRefits(model, f, fit, candidates, batch);  // after the secant correction
+    RefineRefits(model, f, fit, candidates, options.extra_refits, batch);
+    // A simulated refit that is not significant fell short of its linear promise (a response
+    // that saturates or turns, a signature far from where the refit lands): its slot goes to the
+    // next candidate of the linear ranking, until dem_refits simulated refits are significant,
+    // the linear ranking is used up, or 2·dem_refits have been simulated (a cost bound, as
+    // dem_refits itself). Each simulated refit is held to α/K as before (K the step's
+    // candidates), so simulating more of the K keeps the union bound.
+    int held = 0, handed = 0;
+    for (const Work* w : shortlist) held += SimulatedSignificant(f, *w, candidates);
+    for (const Work* w : linear)
+      handed += std::find(shortlist.begin(), shortlist.end(), w) != shortlist.end();
+    batch.clear();
+    for (Work* w : linear) {
+      if (held + static_cast<int>(batch.size()) >= options.dem_refits ||
+          handed + static_cast<int>(batch.size()) >= 2 * options.dem_refits)
+        break;
+      if (std::find(shortlist.begin(), shortlist.end(), w) == shortlist.end()) batch.push_back(w);
+    }
+    shortlist.insert(shortlist.end(), batch.begin(), batch.end());
   }
   if (!bounds.empty()) {
     if (progress) progress("refitting the effects with the bound parameters held inside");

@@ -19,7 +19,9 @@
 //     secant through it, a second Gauss–Newton point simulated, then re-centred points (the
 //     sensitivities re-estimated at the candidate's best point, one damped Gauss–Newton step
 //     from there) while each lowers that candidate's best χ² by at least 1 (at most extra_refits):
-//     candidates are compared at their converged refits. Ranking by evidence (ranking.h): ΔBIC
+//     candidates are compared at their converged refits. A simulated refit that is not
+//     significant passes its slot to the next linearised candidate (until dem_refits are
+//     significant, the linear shortlist is used up, or 2·dem_refits were simulated). Ranking by evidence (ranking.h): ΔBIC
 //     and likelihood ratio of the simulated refits, with the signature match beside them.
 //     The evidence carries the discrepancy floor estimated from the data (evidence.h) at α/K.
 //  5. The winner is added (its refitted point becomes the current fit, its signature a fitted

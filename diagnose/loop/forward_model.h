@@ -55,6 +55,10 @@ struct BaseCalibration {
   std::vector<double> base_unit;
   Prediction prediction;
   std::vector<std::vector<double>> jacobian;  // [observation][parameter]
+  // The standard errors of jacobian's entries, same shape (empty: not known; zero where a finite
+  // difference on common random numbers carries no noise). Identifiability counts a singular
+  // value within their size as unresolved (calibrate/jacobian_svd.h, JacobianNoiseFloor).
+  std::vector<std::vector<double>> jacobian_sigma;
   std::string termination;                    // the calibration's
   // Settled by the calibration's own criterion: within_noise, converged or out_of_range
   // (calibrate/termination.h); a calibration that stopped on its budget did not.

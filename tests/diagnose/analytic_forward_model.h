@@ -39,6 +39,9 @@ inline double EffectChange(int e, int kind, double w, double v) {
       return v * std::vector<double>{10, 1e-3, -1e-3}[kind];  // control: like mu
     case 5:
       return v * std::vector<double>{29, 3.9e-3, -1.1e-4}[kind];  // roughness: nearly rolling's
+    case 6:  // decoy: shape's signature plus a little adhesion's, saturating at its probe 0.1
+      return std::min(v, 0.1) *
+             (std::vector<double>{10, 6e-3, -5e-4}[kind] + 0.02 * w * std::vector<double>{40, 2e-3, -2e-4}[kind]);
   }
   return 0;
 }
@@ -87,6 +90,7 @@ class AnalyticForwardModel final : public ForwardModel {
   }
   double curvature = 0;
   double angle_saturation = 0;
+  bool shared_scenes = false;
   // An effect no candidate has: grows with the square of the coating, only in the flow.
   static double Foreign(int i, double v) {
     return Kind(i) == 2 ? v * Coating(i) * Coating(i) * 1e-4 : 0;
@@ -103,9 +107,12 @@ class AnalyticForwardModel final : public ForwardModel {
       Prediction pr{true, "ok"};
       for (int i = 0; i < Count(); ++i) {
         const double s = kScatter[Kind(i)];
+        // shared_scenes: one simulated heap per kind read by every coating row (the noise draw
+        // of the kind, not of the row), as a DEM base whose coating changes nothing runs once.
         pr.mean.push_back(
             Exact(i, 0.2 + 0.8 * p.base_unit[0], effects, curvature, angle_saturation) +
-            s / std::sqrt(replicates) * calibrate::testing::Normal(seed, i));
+            s / std::sqrt(replicates) *
+                calibrate::testing::Normal(seed, shared_scenes ? Kind(i) : i));
         pr.sem.push_back(s / std::sqrt(replicates));
         pr.spread.push_back(s);
       }
@@ -131,6 +138,9 @@ class AnalyticForwardModel final : public ForwardModel {
   // twice the budget finds a lower χ² by the luck of more draws alone.
   int stall_draws = 0;
   bool blind_base = false;
+  // > 0: each base sensitivity is reported with a standard error this multiple of its size (a
+  // sensitivity estimated from noisy runs that does not resolve it).
+  double sensitivity_noise = 0;
   std::vector<int> base_scales;  // the budget scales CalibrateBase was called with
   BaseCalibration CalibrateBase(int budget_scale) override {
     base_scales.push_back(budget_scale);
@@ -155,8 +165,10 @@ class AnalyticForwardModel final : public ForwardModel {
       if (k == 0 || LeastSquares(p) < LeastSquares(b.prediction)) b.prediction = p;
     }
     const Prediction up = Evaluate({{{best_u + base_step}, {}}})[0];
-    for (int i = 0; i < Count(); ++i)
+    for (int i = 0; i < Count(); ++i) {
       b.jacobian.push_back({blind_base ? 0.0 : (up.mean[i] - b.prediction.mean[i]) / base_step});
+      if (sensitivity_noise > 0) b.jacobian_sigma.push_back({sensitivity_noise * std::fabs(b.jacobian[i][0])});
+    }
     b.termination = settles ? "converged" : "budget";
     b.settled = settles;
     b.max_evaluations = 10 * budget_scale;
