@@ -2,32 +2,41 @@
 """Is the ternary heap's excess angle an artefact of the 16 mm slab at size x5?
 
 Writes variant experiment files from examples/segregation_paper.json and runs each as one quick
-heap per seed (`demcal experiment segregation FILE --quick --replicates 1 --seed S --threads 1`,
-under `nice -n 5`, JOBS at a time, default 2), the seeds paired across arms (one seed pours one
-feed). Arms (spheres: the main job's calibrated self-pair rolling friction BP 0.34, TAED 0.19,
+heap per seed (`demcal experiment segregation FILE --quick --replicates 1 --threads 1`, the seed
+in FILE's "seed", under `nice -n 5`, JOBS at a time, default 2), the seeds paired across arms
+(one seed pours one feed). Results and reading: docs/experiments/segregation_angle.md. Arms (spheres: the main job's calibrated self-pair rolling friction BP 0.34, TAED 0.19,
 EP 0.25, dissimilar pairs as in the file; clumps: the current calibrated shapes, BP a = 3.044
 n = 4, TAED 2.856 n = 5, EP 2.280 n = 3, Table 1's rolling friction as in the file):
   sphere_base     the file as it is (16 mm slab, Perspex front/back)
   sphere_smooth   front/back walls frictionless: the box (faces, floor under the glued base) is a
                   copy of Perspex whose pairs with every species have sliding and rolling
-                  friction 0; the funnel stays Perspex (`funnel_material`) so its flow is unchanged
+                  friction 0; the funnel stays Perspex (`funnel_material`; the faces still cut
+                  the funnel, so its flow changes a little)
   sphere_deep     the slab 2x deeper (32 mm) with feed mass and rate 2x, so the heap's cross-section
                   and height stay the same; a fixed 19 mm orifice for about 2x the flow
                   (Beverloo, open width x 2^0.4)
   sphere_bp       BP alone (feed 100 % BP, 30.85 g) in the file's box: the species in the mixture's
-                  box, against its own repose box (examples/aor_bp.json)
+                  box, against its own repose box (examples/aor_bp.json); its funnel drains so
+                  slowly that the heap did not settle in the file's 6 s (aor_bp_sphere_big instead)
   clump_base, clump_smooth   the same for the clumps
+  clump_orifice16     the clumps through a 16 mm orifice, the widest circle the 16 mm slab holds
+                      (the file's rule gives 15.5 mm at x5): does the funnel empty near 2.22 s?
 and, for the comparison with the species' own repose box (examples/aor_bp.json at --quick, size x5,
 4 heaps per seed; its quick step is 0.25 of the Rayleigh time, the heap file's 0.2):
   aor_bp_sphere, aor_bp_sphere_dt02   BP spheres at mu_r 0.34, step 0.25 / 0.2 of t_R
   aor_bp_clump, aor_bp_clump_dt02     BP clumps (4 spheres, a = 3.044), step 0.25 / 0.2 of t_R
+  aor_bp_sphere_smooth, aor_bp_clump_smooth  the *_dt02 arms with frictionless front/back walls
+  aor_bp_sphere_big   the repose box grown to the heap's size: 30.85 g of BP spheres (mu_r 0.34,
+                      step 0.2 of t_R) poured at 18.5 g/s from 0.1 m over a 40 mm feed into a
+                      0.2 m wide box, no funnel (1 heap per seed)
+  aor_bp_sphere_big_smooth  the same with frictionless front/back walls
+  aor_bp_clump_big    the same grown box with the BP clumps (Table 1's mu_r 0.10)
 Resumable: a run whose result.json exists is skipped. Writes OUT/runs.csv (one row per run) and
 OUT/arms.csv (mean +- sem per arm) from every finished run; `--summary-only` just rewrites them.
 
   python3 bench/mixture_angle_confinement.py build/apps/demcal OUT [--arms a,b] [--seeds 2018,2019]
 """
 import argparse
-import copy
 import csv
 import json
 import math
@@ -42,7 +51,10 @@ EXAMPLE = os.path.join(REPO, "examples", "segregation_paper.json")
 SPHERE_MU_R = {"BP": 0.34, "TAED": 0.19, "EP": 0.25}  # docs/reproduce.md, stage 1 at size x3
 CLUMPS = {"BP": (3.044, 4), "TAED": (2.856, 5), "EP": (2.280, 3)}  # docs/reproduce.md, Fig. 3
 ARMS = ["sphere_base", "sphere_smooth", "sphere_deep", "sphere_bp", "clump_base", "clump_smooth",
-        "aor_bp_sphere", "aor_bp_sphere_dt02", "aor_bp_clump", "aor_bp_clump_dt02"]
+        "clump_orifice16",
+        "aor_bp_sphere", "aor_bp_sphere_dt02", "aor_bp_clump", "aor_bp_clump_dt02",
+        "aor_bp_sphere_smooth", "aor_bp_sphere_big", "aor_bp_sphere_big_smooth",
+        "aor_bp_clump_big", "aor_bp_clump_smooth"]
 AOR_EXAMPLE = os.path.join(REPO, "examples", "aor_bp.json")
 AOR_REPLICATES = 4
 
@@ -55,9 +67,9 @@ def set_pair(exp, a, b, key, value):
     raise KeyError(f"no pair {a}-{b}")
 
 
-def smooth_walls(exp):
-    # A frictionless twin of the wall material for the box; the funnel keeps the real one.
-    wall = exp["segregation"]["wall_material"]
+def smooth_walls(exp, section):
+    # A frictionless twin of the wall material for the box; a funnel keeps the real one.
+    wall = section["wall_material"]
     twin = wall + "_frictionless"
     exp["materials"].append(dict(next(m for m in exp["materials"] if m["name"] == wall), name=twin))
     for p in list(exp["interactions"]["pairs"]):
@@ -66,8 +78,9 @@ def smooth_walls(exp):
             exp["interactions"]["pairs"].append(
                 {"materials": [other, twin], "sliding_friction": 0.0, "rolling_friction": 0.0,
                  "restitution": p["restitution"]})
-    exp["segregation"]["wall_material"] = twin
-    exp["segregation"]["funnel_material"] = wall
+    section["wall_material"] = twin
+    if "funnel" in section:
+        section["funnel_material"] = wall
 
 
 def aor_variant(arm):
@@ -78,8 +91,17 @@ def aor_variant(arm):
     else:
         a, n = CLUMPS["BP"]
         exp["species"][0]["clump"] = {"ellipsoid": {"semi_axes": [a, 1, 1], "sphere_count": n}}
-    if arm.endswith("dt02"):
+    if arm.endswith("dt02") or "big" in arm or arm.endswith("smooth"):
         exp["quick_fidelity"]["rayleigh_fraction"] = 0.2
+    if "big" in arm:
+        seg = json.load(open(EXAMPLE))["segregation"]
+        a = exp["aor"]
+        a["feed"]["mass_kg"] = seg["feed"]["mass_kg"]
+        for k in ("width_m", "pour_height_m", "feed_width_m"):
+            a[k] = seg[k]
+        a["settle"]["max_time_s"] = seg["settle"]["max_time_s"]
+    if arm.endswith("smooth"):
+        smooth_walls(exp, exp["aor"])
     return exp
 
 
@@ -97,7 +119,12 @@ def variant(arm):
             a, n = CLUMPS[s["name"]]
             s["clump"] = {"ellipsoid": {"semi_axes": [a, 1, 1], "sphere_count": n}}
     if arm.endswith("smooth"):
-        smooth_walls(exp)
+        smooth_walls(exp, seg)
+    if arm == "clump_orifice16":
+        f = seg["funnel"]
+        f.pop("effective_orifice_diameter_m")
+        f.pop("beverloo_k")
+        f["orifice_diameter_m"] = 0.016
     if arm == "sphere_deep":
         seg["depth_m"] = 2 * seg["depth_m"]
         seg["feed"]["mass_kg"] = 2 * seg["feed"]["mass_kg"]
@@ -129,9 +156,11 @@ def run_one(demcal, out, arm, seed):
     os.makedirs(d, exist_ok=True)
     aor = arm.startswith("aor")
     cmd = ["nice", "-n", "5", "/usr/bin/time", "-v", "-o", os.path.join(d, "time.txt"), demcal,
-           "experiment", "aor" if aor else "segregation", os.path.join(out, "files", arm + ".json"),
-           "--out", d, "--quick", "--replicates", str(AOR_REPLICATES if aor else 1),
-           "--seed", str(seed), "--threads", "1"]
+           "experiment", "aor" if aor else "segregation",
+           os.path.join(out, "files", f"{arm}_s{seed}.json"),
+           "--out", d, "--quick",
+           "--replicates", str(AOR_REPLICATES if aor and "big" not in arm else 1),
+           "--threads", "1"]
     with open(os.path.join(d, "log.txt"), "w") as log:
         subprocess.run(cmd, stdout=log, stderr=subprocess.STDOUT)
 
@@ -143,13 +172,13 @@ def rows_of(out, arm, seed):
     except (OSError, ValueError):
         return []
     cpu = cpu_s(os.path.join(d, "time.txt")) / len(res["runs"])  # per heap
-    return [row(arm, r, cpu) for r in res["runs"]]
+    return [row(arm, seed, r, cpu) for r in res["runs"]]
 
 
-def row(arm, r, cpu):
+def row(arm, seed, r, cpu):
     g = lambda k: r.get(k, float("nan"))
     angle = g("angle_deg") if arm.startswith("aor") else g("mixture_angle_deg")
-    return {"arm": arm, "seed": g("seed"), "status": g("status"),
+    return {"arm": arm, "seed": seed, "replicate": g("replicate"), "status": g("status"),
             "mixture_angle_deg": angle, "flank_spread_deg": g("flank_spread_deg"),
             "discharge_time_s": g("discharge_time_s"), "funnel_regime": g("funnel_regime"),
             "funnel_mass_flow_kg_s": g("funnel_mass_flow_kg_s"),
@@ -205,7 +234,9 @@ def main():
     if not a.summary_only:
         os.makedirs(os.path.join(out, "files"), exist_ok=True)
         for arm in arms:
-            json.dump(variant(arm), open(os.path.join(out, "files", arm + ".json"), "w"), indent=1)
+            for seed in seeds:
+                exp = dict(variant(arm), seed=seed)
+                json.dump(exp, open(os.path.join(out, "files", f"{arm}_s{seed}.json"), "w"), indent=1)
         # Seed-major order: every arm gets its first seed before any arm gets its second.
         jobs = [(arm, s) for s in seeds for arm in arms]
         with ThreadPoolExecutor(int(os.environ.get("JOBS", "2"))) as pool:
