@@ -31,7 +31,7 @@ and, for the comparison with the species' own repose box (examples/aor_bp.json a
                       0.2 m wide box, no funnel (1 heap per seed)
   aor_bp_sphere_big_smooth  the same with frictionless front/back walls
   aor_bp_clump_big    the same grown box with the BP clumps (Table 1's mu_r 0.10)
-Resumable: a run whose result.json exists is skipped. Writes OUT/runs.csv (one row per run) and
+Resumable: a run whose result.json exists is skipped. Writes OUT/runs.csv (one row per heap; angle_deg: the mixture angle, or the repose-box heap's angle) and
 OUT/arms.csv (mean +- sem per arm) from every finished run; `--summary-only` just rewrites them.
 
   python3 bench/mixture_angle_confinement.py build/apps/demcal OUT [--arms a,b] [--seeds 2018,2019]
@@ -179,7 +179,7 @@ def row(arm, seed, r, cpu):
     g = lambda k: r.get(k, float("nan"))
     angle = g("angle_deg") if arm.startswith("aor") else g("mixture_angle_deg")
     return {"arm": arm, "seed": seed, "replicate": g("replicate"), "status": g("status"),
-            "mixture_angle_deg": angle, "flank_spread_deg": g("flank_spread_deg"),
+            "angle_deg": angle, "flank_spread_deg": g("flank_spread_deg"),
             "discharge_time_s": g("discharge_time_s"), "funnel_regime": g("funnel_regime"),
             "funnel_mass_flow_kg_s": g("funnel_mass_flow_kg_s"),
             "funnel_orifice_diameter_m": g("funnel_orifice_diameter_m"),
@@ -205,7 +205,7 @@ def summarise(out, arms, seeds):
         w = csv.DictWriter(f, fieldnames=list(rows[0]))
         w.writeheader()
         w.writerows(rows)
-    keys = ["mixture_angle_deg", "discharge_time_s", "funnel_mass_flow_kg_s", "heap_height_m",
+    keys = ["angle_deg", "discharge_time_s", "funnel_mass_flow_kg_s", "heap_height_m",
             "cpu_s"]
     with open(os.path.join(out, "arms.csv"), "w", newline="") as f:
         w = csv.writer(f)
