@@ -52,7 +52,7 @@ double OrificeM(const core::Scene& model, const SegregationSettings& s) {
 
 core::Wall Funnel(const core::Scene& model, const SegregationSettings& s) {
   const FunnelSettings& f = s.funnel;
-  return core::Wall("funnel", s.wall_material,
+  return core::Wall("funnel", s.FunnelMaterial(),
                     core::ConeFrustumSurface{.axis_point_m = {0.5 * s.width_m, 0.5 * s.depth_m, 0},
                                              .height0_m = s.pour_height_m,
                                              .radius0_m = 0.5 * OrificeM(model, s),
@@ -104,6 +104,8 @@ std::string CheckRun(const core::Scene& model, const SegregationSettings& s) {
   std::ostringstream os;
   if (s.wall_material < 0 || s.wall_material >= static_cast<int>(model.materials.size()))
     os << "segregation.wall_material names no defined material";
+  else if (s.FunnelMaterial() >= static_cast<int>(model.materials.size()))
+    os << "segregation.funnel_material names no defined material";
   else if (!(s.settle.max_time_s > s.feed.EndS()))
     os << "segregation.settle.max_time_s = " << s.settle.max_time_s
        << " s must exceed the pour time " << s.feed.EndS() << " s";

@@ -61,6 +61,10 @@ struct SegregationSettings {
   double feed_width_m = 0.04;  // feed region x extent
   FunnelSettings funnel;
   int wall_material = 0;  // box faces, floor and funnel (Perspex in the paper)
+  // The funnel's own material, -1: wall_material. A separate one lets the slab's wall friction
+  // change without changing the flow through the funnel.
+  int funnel_material = -1;
+  int FunnelMaterial() const { return funnel_material >= 0 ? funnel_material : wall_material; }
   bool glued_base = true;
   SettleCriteria settle;           // feed_end_s is set from the feed
   ReposeAngleOptions angle;        // base_z_m is set from the base

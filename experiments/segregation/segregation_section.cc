@@ -99,6 +99,8 @@ void ParseFields(JsonFields& f, const core::Scene& model, SegregationSettings* s
   f.Number("feed_width_m", &s->feed_width_m, kOptional, Range::LeftOpen(0, 10, "m"));
   if (const json* funnel = f.Value("funnel", kOptional)) ParseFunnel(*funnel, &s->funnel, status);
   s->wall_material = ReadMaterial(f, "wall_material", model, status);
+  if (f.Has("funnel_material"))
+    s->funnel_material = ReadMaterial(f, "funnel_material", model, status);
   f.Bool("glued_base", &s->glued_base, kOptional);
   if (const json* settle = f.Object("settle", kOptional))
     ParseSettle(*settle, "segregation.settle", &s->settle, status);
@@ -119,7 +121,7 @@ bool ParseSegregationSection(const json& section, const std::string& source,
   JsonFields f(
       section, "segregation",
       {"feed", "width_m", "depth_m", "pour_height_m", "feed_width_m", "funnel", "wall_material",
-       "glued_base", "settle", "bins", "segregation_index", "tracking", "max_wall_time_s"},
+       "funnel_material", "glued_base", "settle", "bins", "segregation_index", "tracking", "max_wall_time_s"},
       &status);
   ParseFields(f, model, &s, &status);
   return FinishSection(status, source, model, s, settings, error);

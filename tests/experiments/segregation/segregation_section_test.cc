@@ -95,6 +95,22 @@ TEST_CASE("segregation section errors name the field", "[unit]") {
              Catch::Contains("segregation.wall_material"));
   CHECK_THAT(ErrorAfter([](nlohmann::json& s) { s["wal_material"] = "perspex"; }),
              Catch::Contains("wal_material"));
+  CHECK_THAT(ErrorAfter([](nlohmann::json& s) { s["funnel_material"] = "glass"; }),
+             Catch::Contains("segregation.funnel_material"));
+}
+
+TEST_CASE("segregation funnel_material: absent, the funnel is of the wall material", "[unit]") {
+  ExperimentFile file = Example();
+  objectives::ApplyFidelity(file.fidelity, &file.model);
+  nlohmann::json section = file.section;
+  objectives::SegregationSettings s;
+  std::string error;
+  REQUIRE(ParseSegregationSection(section, "s.json", file.model, &s, &error));
+  CHECK(s.FunnelMaterial() == s.wall_material);
+  section["funnel_material"] = "EP";
+  REQUIRE(ParseSegregationSection(section, "s.json", file.model, &s, &error));
+  CHECK(s.FunnelMaterial() == file.model.MaterialIndex("EP"));
+  CHECK(s.wall_material == file.model.MaterialIndex("perspex"));
 }
 
 TEST_CASE("segregation funnel: false pours from the feeder", "[unit]") {
