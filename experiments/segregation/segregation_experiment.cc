@@ -264,8 +264,10 @@ SegregationRun RunSegregation(const core::Scene& model, const SegregationSetting
   FunnelClock clock(settings.pour_height_m, criteria.feed_end_s);
   GranuleRecorder recorder(RecorderOptions(model, settings), seed);
   OutflowRecorder outflow(model.species.size(), settings.pour_height_m);
+  double feed_inserted_s = -1;  // the first check at which the feed had inserted its mass
   out.settle = RunUntilSettled(sim, criteria, [&](double t, double end) {
     if (hooks.progress) hooks.progress(t, end);
+    if (feed_inserted_s < 0 && FeedInserted(sim, settings.feed)) feed_inserted_s = t;
     clock.Observe(sim);
     recorder.Observe(sim);
     if (settings.funnel.enabled) outflow.Sample(sim);
@@ -277,7 +279,9 @@ SegregationRun RunSegregation(const core::Scene& model, const SegregationSetting
   out.first_out_s = clock.first_out_s();
   out.empty_s = clock.empty_s();
   out.discharge_time_s = clock.DischargeTimeS();
-  out.feed_duration_s = settings.feed.DurationS();
+  // A feed whose factory fell behind (large clumps) pours longer than mass / rate: the funnel's
+  // regime compares its discharge with the pour it actually got.
+  out.feed_duration_s = FeedTookS(settings.feed, feed_inserted_s, criteria.check_interval_s);
   out.funnel_feed_limited = settings.funnel.enabled && clock.emptied() &&
                             FeedLimited(out.discharge_time_s, out.feed_duration_s,
                                         settings.funnel.height_m, Norm(model.gravity_m_s2));

@@ -93,7 +93,8 @@ struct SegregationRun {
   bool funnel_emptied = false;
   double discharge_time_s = 0;  // see the file comment; 0 when the funnel did not empty
   double first_out_s = 0, empty_s = 0;
-  double feed_duration_s = 0;        // the pour's length (feed mass / rate)
+  double feed_duration_s = 0;        // the pour's length (FeedTookS: mass / rate, or longer when
+                                     // the feed's factory could not insert that fast)
   bool funnel_feed_limited = false;  // FeedLimited (funnel_clock.h): the time measures the feed
   // FunnelRegime (funnel_clock.h): "orifice_limited", "feed_limited", "not_emptied" or "no_funnel".
   std::string funnel_regime = "no_funnel";

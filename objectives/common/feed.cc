@@ -49,6 +49,18 @@ double FeedEntrySpeed(const core::Scene& model, const Feed& feed,
   return h / t_max - 0.5 * g_m_s2 * t_max;
 }
 
+bool FeedInserted(const core::Simulation& sim, const Feed& feed) {
+  for (const core::FactoryReport& r : sim.FactoryReports())
+    if (r.name == "feed") return r.inserted_mass_kg >= feed.mass_kg;
+  return true;
+}
+
+double FeedTookS(const Feed& feed, double inserted_at_s, double check_interval_s) {
+  if (inserted_at_s < 0 || inserted_at_s <= feed.EndS() + check_interval_s)
+    return feed.DurationS();
+  return inserted_at_s - feed.start_s;
+}
+
 core::FactorySpec MakeFeedFactory(const core::Scene& model, const Feed& feed,
                                   const core::InsertionRegion& region) {
   core::FactorySpec spec;

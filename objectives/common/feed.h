@@ -6,6 +6,7 @@
 
 #include "core/insertion/factory.h"
 #include "core/scene/scene.h"
+#include "core/simulation/simulation.h"
 
 namespace demcal::objectives {
 
@@ -33,6 +34,16 @@ struct Feed {
 // random insertion finds room: the stream leaves the feeder like a loose rain.
 core::FactorySpec MakeFeedFactory(const core::Scene& model, const Feed& feed,
                                   const core::InsertionRegion& region);
+
+// Whether the feed's factory (MakeFeedFactory, named "feed") has inserted the feed's whole mass;
+// true when the scene has no such factory.
+bool FeedInserted(const core::Simulation& sim, const Feed& feed);
+
+// How long the feed took to insert its mass: its nominal mass / rate, or, when its factory could
+// not insert as fast (large clumps in a small region: it inserts what fits and owes the rest),
+// `inserted_at_s` − start. `inserted_at_s`: the first check of the run at which FeedInserted
+// held (< 0: never); a feed inserted within `check_interval_s` of its nominal end kept up.
+double FeedTookS(const Feed& feed, double inserted_at_s, double check_interval_s);
 
 // Downward speed (m/s, >= 0) for which a batch (the region's fall-through time) of the feed
 // occupies at most `solid_fraction` of the region under gravity g.
