@@ -92,39 +92,48 @@ DEMCAL_HOT_INLINE bool ContactForces::ResolveContact(uint32_t k, bool in_contact
   return true;
 }
 
+// Chunk c's start: its particles' sums begun with gravity and then the contributions of the cross
+// pairs from earlier rows (its incoming set), in entry order, as a serial sweep adds them. Each
+// cross pair is evaluated here, once; its result on i is kept in the pair's slot for the sweep
+// of i's chunk to read back.
+template <class Model>
+void ContactForces::StartChunk(Particles& p, const NeighbourList& list,
+                               const InteractionTable& table, const Model& model,
+                               const Vec3& gravity, double dt, size_t c) {
+  for (uint32_t i = chunks_.Begin(c); i < chunks_.End(c); ++i) {
+    p.force_N[i] = p.body[i] < 0 ? gravity * p.mass_kg[i] : Vec3{};  // clumps get gravity whole
+    p.torque_N_m[i] = Vec3{};
+  }
+  for (const SweepChunks::CrossPair& x : chunks_.Incoming(c)) {
+    const uint32_t j = list.Partner(x.entry);
+    ContactResult r;
+    if (!EvaluatePair(p, table, model, dt, x.row, x.entry, j, r)) continue;
+    StoreVec3(cross_result_[x.slot].force_i, r.force_i);
+    StoreVec3(cross_result_[x.slot].torque_i, r.torque_i);
+    p.force_N[j] -= r.force_i;
+    p.torque_N_m[j] += r.torque_j;
+  }
+}
+
 // Chunk c owns particle slots [Begin(c), End(c)) and sums, per particle and in the order a
-// serial sweep would, the contributions from earlier rows first, then its own row, then walls,
-// so results are bit-identical for any number of chunks. Cross pairs are evaluated into
-// pair_result_ on demand (SweepChunks::Ensure) just before they are first read.
+// serial sweep would, the contributions from earlier rows first (StartChunk), then its own row,
+// then walls, so results are bit-identical for any number of chunks.
 template <class Model>
 void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
                              const std::vector<Wall>& walls, const InteractionTable& table,
                              const Model& model, const Vec3& gravity, double dt, size_t c) {
-  auto evaluate_cross = [&](uint32_t i, uint32_t k) {
-    EvaluatePair(p, table, model, dt, i, k, list.Partner(k), pair_result_[k]);
-  };
+  auto start = [&](size_t d) { StartChunk(p, list, table, model, gravity, dt, d); };
   const uint32_t begin = chunks_.Begin(c), end = chunks_.End(c);
   const uint32_t moving = list.FirstFixed();  // partners from here on are fixed spheres
-  const uint32_t first_own_entry = list.RowBegin(begin);
-  if (c > 0) chunks_.Ensure(c, evaluate_cross);
-  for (uint32_t i = begin; i < end; ++i) {
-    Vec3 f = p.body[i] < 0 ? gravity * p.mass_kg[i] : Vec3{};  // clumps get gravity whole
-    Vec3 t;
-    for (uint32_t r = list.ReverseBegin(i); r < list.ReverseEnd(i); ++r) {
-      const uint32_t k = list.ReverseEntry(r);
-      if (k >= first_own_entry) break;  // entries are ascending; the rest come from own rows
-      if (!pair_active_[k]) continue;
-      f -= pair_result_[k].force_i;
-      t += pair_result_[k].torque_j;
-    }
-    p.force_N[i] = f;
-    p.torque_N_m[i] = t;
-  }
+  if (c == 0) start(0);  // no other chunk reads chunk 0's particles
+  else chunks_.Ensure(c, start);
   size_t ready = c;  // chunks up to `ready` have their incoming cross pairs evaluated
   RowScratch& scratch = row_scratch_[c];
   uint32_t* const touching = scratch.touching.data();
   ContactGeometry* const geometry = scratch.geometry.data();
   uint8_t* const in_contact = scratch.in_contact.data();
+  uint32_t* const cross_slot = scratch.cross_slot.data();
+  uint32_t slot = chunks_.OutgoingBegin(c);  // the next cross pair's, in the order met here
   const PeriodicBox* box = periodic_.Any() ? &periodic_ : nullptr;
   for (uint32_t i = begin; i < end; ++i) {
     Vec3& fi = p.force_N[i];
@@ -139,7 +148,8 @@ void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
       const uint32_t j = list.Partner(k);
       touching[n] = k;
       if (j >= end && j < moving) {  // a cross pair, evaluated by SweepChunks::Ensure
-        while (j >= chunks_.End(ready)) chunks_.Ensure(++ready, evaluate_cross);
+        while (j >= chunks_.End(ready)) chunks_.Ensure(++ready, start);
+        cross_slot[n] = slot++;
         n += pair_active_[k];
         continue;
       }
@@ -165,8 +175,8 @@ void ContactForces::SumChunk(Particles& p, const NeighbourList& list,
       const uint32_t k = touching[m];
       const uint32_t j = list.Partner(k);
       if (j >= end && j < moving) {
-        fi += pair_result_[k].force_i;
-        ti += pair_result_[k].torque_i;
+        fi += cross_result_[cross_slot[m]].force_i;
+        ti += cross_result_[cross_slot[m]].torque_i;
         continue;
       }
       ContactResult r{};
@@ -206,6 +216,7 @@ void ContactForces::PlanChunks(const NeighbourList& list) {
     s.touching.resize(longest_row + 1);
     s.geometry.resize(longest_row + 1);
     s.in_contact.resize(longest_row + 1);
+    s.cross_slot.resize(longest_row + 1);
   }
   plan_stale_ = false;
   planned_list_ = &list;
@@ -219,8 +230,8 @@ void ContactForces::Compute(Particles& p, const NeighbourList& list,
     pair_history_.resize(list.PairCount());
     pair_active_.resize(list.PairCount(), 0);
   }
-  pair_result_.resize(list.PairCount());
   PlanChunks(list);
+  cross_result_.resize(chunks_.CrossPairCount());
   const size_t chunks = chunks_.Count();
   if (mesh_scratch_.size() < chunks) mesh_scratch_.resize(chunks);
   walls_.SetVelocities(walls, time_s);
@@ -354,10 +365,10 @@ double ContactForces::PairElasticEnergy(const Particles& p, const NeighbourList&
 
 HeapBytes ContactForces::Heap() const {
   HeapBytes b = walls_.Heap();
-  b.per_pair +=
-      VectorBytes(pair_history_, pair_result_, pair_active_, spare_history_, spare_active_);
+  b.per_pair += VectorBytes(pair_history_, pair_active_, spare_history_, spare_active_);
   for (const RowScratch& s : row_scratch_)
-    b.other += VectorBytes(s.touching, s.geometry, s.in_contact);
+    b.other += VectorBytes(s.touching, s.geometry, s.in_contact, s.cross_slot);
+  b.other += VectorBytes(cross_result_);
   b.other += chunks_.HeapBytes();
   return b;
 }

@@ -104,6 +104,9 @@ class ContactForces {
   bool ResolveContact(uint32_t k, bool in_contact, const ContactGeometry& g,
                       const ResolvedPair& pair, const Model& model, double dt, ContactResult& out);
   template <class Model>
+  void StartChunk(Particles& p, const NeighbourList& list, const InteractionTable& table,
+                  const Model& model, const Vec3& gravity, double dt, size_t chunk);
+  template <class Model>
   void SumChunk(Particles& p, const NeighbourList& list, const std::vector<Wall>& walls,
                 const InteractionTable& table, const Model& model, const Vec3& gravity,
                 double dt, size_t chunk);
@@ -124,7 +127,11 @@ class ContactForces {
                  std::vector<uint8_t>& active) const;
 
   std::vector<ContactHistory> pair_history_;  // aligned with NeighbourList entries
-  std::vector<ContactResult> pair_result_;    // cross pairs only, aligned with entries
+  struct CrossResult {  // a cross pair's contribution to its row's particle i
+    Vec3 force_i;
+    Vec3 torque_i;
+  };
+  std::vector<CrossResult> cross_result_;     // by SweepChunks slot
   std::vector<uint8_t> pair_active_;
   // The previous list's arrays, kept as RemapPairs' destination: a pour rebuilds every ~12 steps,
   // and fresh pair-sized arrays each time cost an allocation and a clearing pass.
@@ -144,6 +151,7 @@ class ContactForces {
     std::vector<uint32_t> touching;        // the row's entries that may contribute
     std::vector<ContactGeometry> geometry; // their geometry (own pairs)
     std::vector<uint8_t> in_contact;       // whether each is in contact
+    std::vector<uint32_t> cross_slot;      // each cross pair's SweepChunks slot
   };
   std::vector<RowScratch> row_scratch_;
 };

@@ -64,6 +64,7 @@ void SweepChunks::SplitRows(const NeighbourList& list, const std::vector<double>
 void SweepChunks::CollectCrossPairs(const NeighbourList& list) {
   const size_t count = Count();
   incoming_start_.assign(count + 1, 0);
+  outgoing_start_.assign(count + 1, 0);
   incoming_.clear();
   // Rows are swept in order, so each chunk's set comes out in ascending entry order; counted
   // first so the sets can be laid out contiguously.
@@ -79,16 +80,26 @@ void SweepChunks::CollectCrossPairs(const NeighbourList& list) {
           if (j < End(c)) continue;
           if (j >= first_fixed) break;  // fixed partners (ascending, last): not cross pairs
           while (j >= End(d)) ++d;  // partners ascend, so d only moves forward
-          visit(d, CrossPair{i, k});
+          visit(c, d, CrossPair{i, k, 0});
         }
       }
     }
   };
-  for_each_cross([&](size_t d, const CrossPair&) { ++incoming_start_[d + 1]; });
-  for (size_t c = 0; c < count; ++c) incoming_start_[c + 1] += incoming_start_[c];
+  for_each_cross([&](size_t c, size_t d, const CrossPair&) {
+    ++outgoing_start_[c + 1];
+    ++incoming_start_[d + 1];
+  });
+  for (size_t c = 0; c < count; ++c) {
+    incoming_start_[c + 1] += incoming_start_[c];
+    outgoing_start_[c + 1] += outgoing_start_[c];
+  }
   incoming_.resize(incoming_start_[count]);
   std::vector<uint32_t> fill(incoming_start_.begin(), incoming_start_.end() - 1);
-  for_each_cross([&](size_t d, const CrossPair& x) { incoming_[fill[d]++] = x; });
+  uint32_t slot = 0;  // pairs are visited in entry order: the slot is the visit's rank
+  for_each_cross([&](size_t, size_t d, CrossPair x) {
+    x.slot = slot++;
+    incoming_[fill[d]++] = x;
+  });
 }
 
 void SweepChunks::ResetClaims() {

@@ -5,10 +5,14 @@
 // A pair (i, j), i < j, whose partner j lies in a later chunk than i is a cross pair; it belongs
 // to the "incoming" set of j's chunk. Both chunks need its result: j's chunk first (it sums pairs
 // from earlier rows before its own), i's chunk only when its sweep reaches row i, usually near
-// its end. The incoming set of a chunk is therefore evaluated once, on demand, by whichever chunk
-// asks first (Ensure): normally the chunk itself as it starts, so no barrier separates the
-// evaluation of cross pairs from the sums, and no chunk waits unless another is evaluating
-// exactly the pairs it needs.
+// its end. Each chunk's start (its particles' sums begun, its incoming set evaluated) therefore
+// runs once, on demand, by whichever chunk asks first (Ensure): normally the chunk itself as it
+// starts, so no barrier separates the evaluation of cross pairs from the sums, and no chunk waits
+// unless another is starting exactly the chunk it needs.
+//
+// Every cross pair has a slot: its rank in entry order over all cross pairs. The pairs of the
+// rows of chunk c hold the slots [OutgoingBegin(c), OutgoingBegin(c + 1)), in the order c's sweep
+// meets them, so the results that i's chunk reads back lie in one contiguous run.
 //
 // Only the moving rows [0, list.FirstFixed()) are split: fixed spheres need no force, and a pair
 // with a fixed partner is evaluated by its row's chunk alone (never a cross pair).
@@ -22,8 +26,8 @@
 // distinct chunks) may be called concurrently.
 // Usage:
 //   chunks.Plan(list, 4);  ...  chunks.ResetClaims();
-//   parallel over c: chunks.Ensure(c, evaluate); sweep chunk c, calling Ensure(d, evaluate)
-//                    before reading a cross pair whose partner lies in chunk d.
+//   parallel over c: chunks.Ensure(c, start); sweep chunk c, calling Ensure(d, start) before
+//                    reading a cross pair whose partner lies in chunk d.
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -41,6 +45,7 @@ class SweepChunks {
   struct CrossPair {
     uint32_t row = 0;    // particle slot i (in an earlier chunk)
     uint32_t entry = 0;  // neighbour-list entry of (i, j)
+    uint32_t slot = 0;   // rank of the entry among all cross pairs
   };
 
   // Splits `list`'s moving rows into `count` chunks of about equal work (rows + listed pairs)
@@ -54,10 +59,12 @@ class SweepChunks {
   std::span<const CrossPair> Incoming(size_t c) const {
     return {incoming_.data() + incoming_start_[c], incoming_.data() + incoming_start_[c + 1]};
   }
+  // The first slot of the cross pairs in chunk c's rows (c = Count(): CrossPairCount()).
+  uint32_t OutgoingBegin(size_t c) const { return outgoing_start_[c]; }
 
   // The cross pairs and per-chunk arrays (core/math/heap_bytes.h).
   size_t HeapBytes() const {
-    return VectorBytes(boundary_, incoming_start_, incoming_, time_s_) + Count();
+    return VectorBytes(boundary_, incoming_start_, outgoing_start_, incoming_, time_s_) + Count();
   }
 
   // Adds the measured sweep time of chunk c in this pass.
@@ -71,15 +78,15 @@ class SweepChunks {
   // Marks every incoming set as not yet evaluated (once per force pass, before the sweep).
   void ResetClaims();  // also counts the passes for Rebalance
 
-  // Returns once `evaluate(row, entry)` has run for every incoming pair of chunk c in this pass:
-  // runs it here if no other thread has started, else waits for the one that has.
-  template <class Evaluate>
-  void Ensure(size_t c, Evaluate&& evaluate) {
+  // Returns once `start(c)` has run for chunk c in this pass: runs it here if no other thread
+  // has begun it, else waits for the one that has.
+  template <class Start>
+  void Ensure(size_t c, Start&& start) {
     std::atomic<uint8_t>& state = claim_[c];
     if (state.load(std::memory_order_acquire) == kDone) return;
     uint8_t expected = kPending;
     if (state.compare_exchange_strong(expected, kRunning, std::memory_order_acquire)) {
-      for (const CrossPair& x : Incoming(c)) evaluate(x.row, x.entry);
+      start(c);
       state.store(kDone, std::memory_order_release);
       return;
     }
@@ -97,6 +104,7 @@ class SweepChunks {
 
   std::vector<uint32_t> boundary_{0, 0};   // chunk c is slots [boundary_[c], boundary_[c+1])
   std::vector<uint32_t> incoming_start_;   // chunk c's cross pairs: [start[c], start[c+1])
+  std::vector<uint32_t> outgoing_start_;   // slots of the cross pairs in chunk c's rows
   std::vector<CrossPair> incoming_;
   std::unique_ptr<std::atomic<uint8_t>[]> claim_;  // per chunk: kPending, kRunning or kDone
   std::vector<double> time_s_;                     // per chunk, since the last (re)plan
