@@ -1,6 +1,6 @@
 // The restored-state checks of a checkpoint, part 2: the neighbour list, the layout of fixed
 // spheres, pair contact histories and wall candidates with their histories. Rows, partners,
-// reverse index and wall indices are all checked against the particle and wall counts, so the
+// and wall indices are all checked against the particle and wall counts, so the
 // force loop never follows a damaged index (which would read or write out of bounds).
 #include <cmath>
 #include <string>
@@ -48,14 +48,6 @@ bool NeighbourList::CheckRestored(size_t particles, double skin_m, std::string* 
                         std::to_string(i) + " and below " + std::to_string(particles) + ")",
                     error);
   }
-  // The reverse index is a function of the rows: it must be exactly what Finish() builds.
-  std::vector<uint32_t> start(particles + 1, 0), entry(pairs);
-  for (uint32_t j : partner_) ++start[j + 1];
-  for (size_t j = 0; j < particles; ++j) start[j + 1] += start[j];
-  std::vector<uint32_t> fill(start.begin(), start.end() - 1);
-  for (uint32_t k = 0; k < pairs; ++k) entry[fill[partner_[k]]++] = k;
-  if (start != reverse_start_ || entry != reverse_entry_)
-    return Fail("neighbour list: the reverse index does not match the rows", error);
   if (reference_position_.size() != particles)
     return Fail("neighbour list: reference positions do not match the particles", error);
   for (const Vec3& x : reference_position_)

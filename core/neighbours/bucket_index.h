@@ -1,8 +1,8 @@
 #pragma once
 // BucketIndex: a counting sort of the indices 0 .. keys.size() − 1 into buckets by key (a key
 // below 0 leaves its index out): start[b] .. start[b + 1] index `items` for bucket b, each
-// bucket in ascending index order. The neighbour list builds its cell bins and its reverse
-// index (entries by partner) this way at every rebuild.
+// bucket in ascending index order. The neighbour list builds its cell bins this way at
+// every rebuild.
 //
 // Serial in an arena of one thread (two passes, no atomics). With more, the counts are atomic
 // increments, the items are placed in any order and each bucket is then sorted: the output is

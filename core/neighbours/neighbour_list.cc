@@ -160,9 +160,6 @@ void NeighbourList::Build(const Settings& s, const std::vector<Vec3>& x,
 }
 
 void NeighbourList::Finish(const Settings& s) {
-  const size_t n = row_start_.size() - 1;
-  // Reverse index: for each j, the entries (in ascending order) whose partner is j.
-  BucketIndex(partner_, n, reverse_start_, reverse_entry_);
   half_skin2_ = 0.25 * s.skin_m * s.skin_m;
   ++builds_;
 }

@@ -1,9 +1,9 @@
 #pragma once
 // NeighbourList: a Verlet list built with a cell grid. It holds every pair i < j whose surfaces
 // are closer than `skin` (|x_i − x_j| < R_i + R_j + skin), as a half list in compressed rows
-// (row i lists its partners j > i in ascending order), plus the reverse index (for each j, the
-// entries that name it) so forces can be gathered per particle in a fixed order: the result is
-// then bit-identical for any thread count.
+// (row i lists its partners j > i in ascending order). The force sweep visits the entries in
+// this fixed order whatever the thread count (core/neighbours/sweep_chunks.h), so results are
+// bit-identical for any number of threads.
 //
 // Fixed spheres (glued, never moving) occupy the slots from `first_fixed` on: pairs among them
 // are left out (LIGGGHTS: neigh_modify exclude type), so their rows are empty and only moving
@@ -56,7 +56,7 @@ class NeighbourList {
   // This list becomes `previous` with its slots compacted: new slot s is old slot order[s]
   // (strictly ascending: a sink's removal), the removed slots' rows and entries dropped, the
   // references kept; it is then Update()'s `previous` after a removal, so that a removal costs an
-  // incremental rebuild, not a full one. Rows only (no reverse index, build count unchanged).
+  // incremental rebuild, not a full one. Rows only (build count unchanged).
   // False (and nothing usable) if `order` is not such a compaction of `previous`, or if slots
   // below `first_fixed` were not all moving ones and those above all fixed; then Build().
   bool CompactFrom(const NeighbourList& previous, const std::vector<uint32_t>& order,
@@ -77,9 +77,6 @@ class NeighbourList {
   uint32_t RowBegin(size_t i) const { return row_start_[i]; }
   uint32_t RowEnd(size_t i) const { return row_start_[i + 1]; }
   uint32_t Partner(size_t k) const { return partner_[k]; }
-  uint32_t ReverseBegin(size_t j) const { return reverse_start_[j]; }
-  uint32_t ReverseEnd(size_t j) const { return reverse_start_[j + 1]; }
-  uint32_t ReverseEntry(size_t r) const { return reverse_entry_[r]; }
   // Entry index of pair (i, j) with i < j, or -1 if the pair is not listed.
   int64_t Find(uint32_t i, uint32_t j) const;
 
@@ -92,20 +89,20 @@ class NeighbourList {
   uint64_t Builds() const { return builds_; }
   // The list's arrays and its search scratch (core/math/heap_bytes.h).
   HeapBytes Heap() const {
-    return {VectorBytes(row_start_, reverse_start_, reference_position_, cell_of_particle_,
+    return {VectorBytes(row_start_, reference_position_, cell_of_particle_,
                         cell_particles_, row_scratch_, is_mover_, new_slot_, movers_) +
                 VectorBytes(found_, found_count_, incoming_start_),
-            VectorBytes(partner_, reverse_entry_, incoming_), VectorBytes(cell_start_)};
+            VectorBytes(partner_, incoming_), VectorBytes(cell_start_)};
   }
 
   // Checkpointing: the list and its rebuild reference (cell scratch is rebuilt on demand).
   template <class A>
   void Serialize(A& a) {
-    a.Vector(row_start_), a.Vector(partner_), a.Vector(reverse_start_), a.Vector(reverse_entry_);
+    a.Vector(row_start_), a.Vector(partner_);
     a.Vector(reference_position_), a.Value(half_skin2_), a.Value(builds_), a.Value(first_fixed_);
   }
 
-  // After a checkpoint load: rows, partners, reverse index and references fit `particles` and
+  // After a checkpoint load: rows, partners and references fit `particles` and
   // the scene's skin; false with the failed check (core/checkpoint/checkpoint_checks_contacts.cc).
   bool CheckRestored(size_t particles, double skin_m, std::string* error) const;
 
@@ -122,7 +119,7 @@ class NeighbourList {
   Grid MakeGrid(const Settings& s, const std::vector<Vec3>& positions, size_t moving) const;
   // Over the box [lo, hi] (grown by a cut-off and binning others within reach if asked).
   Grid MakeGrid(const Settings& s, Vec3 lo, Vec3 hi, bool margin_for_others) const;
-  // Reverse index, rebuild reference and count, after the rows are filled.
+  // Rebuild reference and count, after the rows are filled.
   void Finish(const Settings& s);
   // Fixed spheres out of reach of every moving particle are not binned (cell −1).
   void BinParticles(const Grid& grid, const std::vector<Vec3>& positions, size_t moving);
@@ -133,8 +130,6 @@ class NeighbourList {
 
   std::vector<uint32_t> row_start_{0};
   std::vector<uint32_t> partner_;
-  std::vector<uint32_t> reverse_start_{0};
-  std::vector<uint32_t> reverse_entry_;
   std::vector<Vec3> reference_position_;
   PeriodicBox periodic_;
   double half_skin2_ = 0;

@@ -183,7 +183,6 @@ bool NeighbourList::CompactFrom(const NeighbourList& previous, const std::vector
       if (const uint32_t j = new_slot_[previous.partner_[k]]; j != kGone) partner_.push_back(j);
     row_start_[s + 1] = static_cast<uint32_t>(partner_.size());
   }
-  reverse_start_.clear(), reverse_entry_.clear();  // not needed by Update
   first_fixed_ = static_cast<uint32_t>(first_fixed);
   half_skin2_ = previous.half_skin2_;
   periodic_ = previous.periodic_;

@@ -77,7 +77,7 @@ class Layout {
               kSpecies, kMaterial, kBody, kId, kClumpPosition,
               kClumpInertia = kClumpPosition + 3, kClumpMass,
               kMemberSlot = kClumpPosition + 10, kRowStart = kClumpPosition + 12, kPartner,
-              kReverseStart, kReverseEntry, kReference, kPairHistory, kPairActive, kWallStart,
+              kReference, kPairHistory, kPairActive, kWallStart,
               kWallIndex, kWallHistory, kWallActive, kMeshSlots, kMeshHistory };
 
   explicit Layout(const std::string& payload) : p_(payload) {
@@ -96,7 +96,7 @@ class Layout {
                      sizeof(uint32_t), sizeof(Vec3)})
       Vector(e);  // clumps
     end_ += 8;    // next id
-    for (int k = 0; k < 4; ++k) Vector(sizeof(uint32_t));  // rows, partners, reverse index
+    for (int k = 0; k < 2; ++k) Vector(sizeof(uint32_t));  // rows, partners
     Vector(sizeof(Vec3));                                  // reference positions
     end_ += 8 + 8 + 4;                                     // half skin², builds, first fixed
     Vector(sizeof(ContactHistory)), Vector(1);             // pair histories, flags
@@ -239,8 +239,6 @@ TEST_CASE("hand-edited checkpoints with a valid checksum are refused by the stat
   REQUIRE(at.Count(Layout::kPartner) > 0);
   CHECK_THAT(Load(Edited(payload, at.At(Layout::kPartner), uint32_t{4000000000u})),
              Catch::Contains("lists partner 4000000000"));
-  CHECK_THAT(Load(Edited(payload, at.At(Layout::kReverseEntry), uint32_t{4000000000u})),
-             Catch::Contains("neighbour list: the reverse index does not match the rows"));
   CHECK_THAT(Load(Edited(payload, at.At(Layout::kRowStart) + 4, uint32_t{4000000000u})),
              Catch::Contains("neighbour list: rows do not match"));
   CHECK_THAT(Load(Edited(payload, at.At(Layout::kReference), 0.5)),
