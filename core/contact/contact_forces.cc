@@ -14,9 +14,13 @@
 
 namespace demcal::core {
 namespace {
-// Measured chunk balancing (SweepChunks::Rebalance): a window of passes long enough to average
-// out scheduler noise, and the imbalance worth re-planning for (a re-plan costs about one pass).
-constexpr int kRebalancePasses = 100;
+// Measured chunk balancing (SweepChunks::Rebalance): the window of passes, and the imbalance
+// worth re-planning for (a re-plan is a pass over the rows, cheaper than a sweep). Chunks are
+// timed in thread CPU time, so other processes' load does not enter the window; short enough to
+// follow where a pour's grains land (the balance probe at 16 chunks, a 20,000-sphere column
+// pour: 0.58 / 0.67 / 0.75 / 0.80 at windows of 100 / 50 / 20 / 10 passes; the dense bed 0.84 /
+// – / 0.87 / 0.88; docs/performance.md).
+constexpr int kRebalancePasses = 10;
 constexpr double kRebalanceTolerance = 0.03;
 
 // The calling thread's CPU time, s. A chunk is timed in it rather than on the wall clock so that
@@ -198,11 +202,13 @@ void ContactForces::PlanChunks(const NeighbourList& list) {
   const size_t workers = balance_probe_chunks_ > 0 ? balance_probe_chunks_
                                                   : tbb::this_task_arena::max_concurrency();
   const size_t chunks = std::min<size_t>(workers, list.FirstFixed() / 256 + 1);
-  if (!plan_stale_ && planned_list_ == &list && chunks_.Count() == chunks) {
-    chunks_.Rebalance(list, kRebalancePasses, kRebalanceTolerance);
-    return;
+  const bool list_changed = plan_stale_ || planned_list_ != &list;
+  if (planned_list_ && chunks_.Count() == chunks) {
+    chunks_.Rebalance(list, list_changed, kRebalancePasses, kRebalanceTolerance);
+    if (!list_changed) return;
+  } else {
+    chunks_.Plan(list, chunks);
   }
-  chunks_.Plan(list, chunks);
   const uint32_t longest_row = tbb::parallel_reduce(
       tbb::blocked_range<size_t>(0, list.FirstFixed()), uint32_t{0},
       [&](const auto& range, uint32_t longest) {

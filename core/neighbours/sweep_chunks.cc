@@ -8,57 +8,64 @@ namespace demcal::core {
 void SweepChunks::Plan(const NeighbourList& list, size_t count) {
   const size_t rows = list.FirstFixed();
   count = std::clamp<size_t>(count, 1, std::max<size_t>(rows, 1));
-  const double per_chunk = WorkBefore(list, rows) / count;
-  std::vector<double> targets(count - 1);
-  for (size_t c = 1; c < count; ++c) targets[c - 1] = per_chunk * c;
-  SplitRows(list, targets);
+  std::vector<double> shares(count + 1);
+  for (size_t c = 0; c <= count; ++c) shares[c] = static_cast<double>(c) / count;
+  SplitRows(list, shares, true);
 }
 
-bool SweepChunks::Rebalance(const NeighbourList& list, int min_passes, double tolerance) {
+bool SweepChunks::Rebalance(const NeighbourList& list, bool list_changed, int min_passes,
+                            double tolerance) {
   const size_t count = Count();
-  if (passes_ < min_passes || count < 2) return false;
   const double total = std::accumulate(time_s_.begin(), time_s_.end(), 0.0);
-  const double slowest = *std::max_element(time_s_.begin(), time_s_.end());
-  const bool balanced = slowest <= (1 + tolerance) * total / count;
-  if (balanced || *std::min_element(time_s_.begin(), time_s_.end()) <= 0) {
-    std::fill(time_s_.begin(), time_s_.end(), 0.0), passes_ = 0;
+  const double slowest = count > 1 ? *std::max_element(time_s_.begin(), time_s_.end()) : 0;
+  const bool window_full = passes_ >= min_passes && count > 1;
+  const bool measured = window_full && *std::min_element(time_s_.begin(), time_s_.end()) > 0;
+  if (!measured || slowest <= (1 + tolerance) * total / count) {
+    if (window_full) std::fill(time_s_.begin(), time_s_.end(), 0.0), passes_ = 0;  // a new one
+    if (list_changed) SplitRows(list, share_, false);
     return false;
   }
   // Measured time is piecewise linear in work (one slope per chunk): place each boundary where
   // the cumulative time reaches its share.
-  std::vector<double> targets(count - 1);
+  std::vector<double> shares = share_;
   size_t c = 0;
   double time_before = 0;
   for (size_t b = 1; b < count; ++b) {
-    const double share = total * b / count;
-    while (c + 1 < count && time_before + time_s_[c] < share) time_before += time_s_[c++];
-    const double work = WorkBefore(list, End(c)) - WorkBefore(list, Begin(c));
-    const double balanced_at = WorkBefore(list, Begin(c)) + (share - time_before) / time_s_[c] * work;
+    const double time_share = total * b / count;
+    while (c + 1 < count && time_before + time_s_[c] < time_share) time_before += time_s_[c++];
+    const double balanced_at =
+        share_[c] + (time_share - time_before) / time_s_[c] * (share_[c + 1] - share_[c]);
     // Half-way only: part of a window's imbalance is noise (other processes, cache misses).
-    targets[b - 1] = 0.5 * (WorkBefore(list, Begin(b)) + balanced_at);
+    shares[b] = 0.5 * (share_[b] + balanced_at);
   }
-  SplitRows(list, targets);
+  SplitRows(list, shares, true);
   return true;
 }
 
-void SweepChunks::SplitRows(const NeighbourList& list, const std::vector<double>& targets) {
+void SweepChunks::SplitRows(const NeighbourList& list, const std::vector<double>& shares,
+                            bool restart_timing) {
   const size_t n = list.FirstFixed();
-  boundary_.assign(targets.size() + 2, static_cast<uint32_t>(n));
+  const size_t count = shares.size() - 1;
+  const double total = WorkBefore(list, n);
+  boundary_.assign(count + 1, static_cast<uint32_t>(n));
   boundary_[0] = 0;
   // WorkBefore grows with the row: binary-search each boundary.
-  for (size_t c = 1; c <= targets.size(); ++c) {
+  for (size_t c = 1; c < count; ++c) {
     size_t lo = boundary_[c - 1], hi = n;
     while (lo < hi) {
       const size_t mid = (lo + hi) / 2;
-      if (WorkBefore(list, mid) >= targets[c - 1]) hi = mid;
+      if (WorkBefore(list, mid) >= shares[c] * total) hi = mid;
       else lo = mid + 1;
     }
     boundary_[c] = static_cast<uint32_t>(lo);
   }
+  share_ = shares;
   CollectCrossPairs(list);
-  claim_ = std::make_unique<std::atomic<uint8_t>[]>(Count());
-  time_s_.assign(Count(), 0.0);
-  passes_ = 0;
+  if (!claim_ || restart_timing || time_s_.size() != count) {
+    claim_ = std::make_unique<std::atomic<uint8_t>[]>(count);
+    time_s_.assign(count, 0.0);
+    passes_ = 0;
+  }
 }
 
 void SweepChunks::CollectCrossPairs(const NeighbourList& list) {

@@ -20,7 +20,10 @@
 // Balance: Plan() gives every chunk the same modelled work (rows + listed pairs). The sweep also
 // reports how long each chunk took (AddTime); Rebalance() then moves the boundaries so that the
 // measured times even out, which catches what the model misses (contacts vs mere neighbours,
-// walls, a slower core). Results never depend on where the boundaries lie.
+// walls, a slower core). It keeps what it learnt across a rebuild: each boundary stays at the same
+// share of the work, for the particles keep their places in the slot order between rebuilds
+// (and a re-sort keeps the spatial order), so a pour, which rebuilds every few steps, is balanced
+// by measurement too. Results never depend on where the boundaries lie.
 //
 // Thread-safety: Plan(), Rebalance() and ResetClaims() are serial; Ensure() and AddTime() (for
 // distinct chunks) may be called concurrently.
@@ -64,16 +67,17 @@ class SweepChunks {
 
   // The cross pairs and per-chunk arrays (core/math/heap_bytes.h).
   size_t HeapBytes() const {
-    return VectorBytes(boundary_, incoming_start_, outgoing_start_, incoming_, time_s_) + Count();
+    return VectorBytes(boundary_, share_, incoming_start_, outgoing_start_, incoming_, time_s_) + Count();
   }
 
   // Adds the measured sweep time of chunk c in this pass.
   void AddTime(size_t c, double seconds) { time_s_[c] += seconds; }
   // After `min_passes` timed passes: if the slowest chunk took more than `tolerance` (relative)
   // longer than the mean, moves each boundary half-way towards where the measured times would
-  // be equal (assuming each chunk's time per unit of work stays as measured) and re-plans.
-  // Restarts the timing; true if re-planned.
-  bool Rebalance(const NeighbourList& list, int min_passes, double tolerance);
+  // be equal (assuming each chunk's time per unit of work stays as measured), restarts the
+  // timing and returns true. With a rebuilt `list` (`list_changed`), the boundaries otherwise
+  // keep their shares of the work and the timing goes on.
+  bool Rebalance(const NeighbourList& list, bool list_changed, int min_passes, double tolerance);
 
   // Marks every incoming set as not yet evaluated (once per force pass, before the sweep).
   void ResetClaims();  // also counts the passes for Rebalance
@@ -95,14 +99,16 @@ class SweepChunks {
 
  private:
   static constexpr uint8_t kPending = 0, kRunning = 1, kDone = 2;
-  // Boundaries where the work before a row (rows + pairs) reaches each of `targets`.
-  void SplitRows(const NeighbourList& list, const std::vector<double>& targets);
+  // Boundaries where the work before a row (rows + pairs) reaches each of `shares` of the total;
+  // the timing restarts if `restart_timing`.
+  void SplitRows(const NeighbourList& list, const std::vector<double>& shares, bool restart_timing);
   double WorkBefore(const NeighbourList& list, uint32_t row) const {
     return static_cast<double>(list.RowBegin(row)) + row;
   }
   void CollectCrossPairs(const NeighbourList& list);
 
   std::vector<uint32_t> boundary_{0, 0};   // chunk c is slots [boundary_[c], boundary_[c+1])
+  std::vector<double> share_{0, 1};        // the work before each boundary, over the total
   std::vector<uint32_t> incoming_start_;   // chunk c's cross pairs: [start[c], start[c+1])
   std::vector<uint32_t> outgoing_start_;   // slots of the cross pairs in chunk c's rows
   std::vector<CrossPair> incoming_;
