@@ -168,33 +168,30 @@ TEST_CASE("a rebuilt list keeps the measured split and the timing goes on", "[un
   const NeighbourList list = RandomCloudList(3000, 13);
   const NeighbourList rebuilt = RandomCloudList(3300, 14);  // more particles, other pairs
   SweepChunks chunks;
+  // Chunk 0's share of the work (rows + listed pairs).
+  auto first_share = [&](const NeighbourList& l) {
+    return static_cast<double>(l.RowBegin(chunks.End(0)) + chunks.End(0)) /
+           static_cast<double>(l.PairCount() + l.RowsCount());
+  };
   chunks.Plan(list, 2);
-  const double planned_share =
-      static_cast<double>(list.RowBegin(chunks.End(0)) + chunks.End(0)) /
-      static_cast<double>(list.PairCount() + list.RowsCount());
+  const double planned_share = first_share(list);
   for (int k = 0; k < 10; ++k) chunks.ResetClaims(), chunks.AddTime(0, 3.0), chunks.AddTime(1, 1.0);
   REQUIRE(chunks.Rebalance(list, false, 10, 0.03));  // chunk 0 measured slow: moved
-  const double learnt_share =
-      static_cast<double>(list.RowBegin(chunks.End(0)) + chunks.End(0)) /
-      static_cast<double>(list.PairCount() + list.RowsCount());
+  const double learnt_share = first_share(list);
   CHECK(learnt_share == Approx(planned_share * 5.0 / 6).epsilon(0.01));
   // A rebuild with too short a window: the learnt share carries over to the new list, not the
   // model's even split, and the passes timed before it still count.
   for (int k = 0; k < 6; ++k) chunks.ResetClaims(), chunks.AddTime(0, 1.0), chunks.AddTime(1, 3.0);
   CHECK_FALSE(chunks.Rebalance(rebuilt, true, 10, 0.03));
   CHECK(chunks.End(chunks.Count() - 1) == rebuilt.RowsCount());
-  const double carried_share =
-      static_cast<double>(rebuilt.RowBegin(chunks.End(0)) + chunks.End(0)) /
-      static_cast<double>(rebuilt.PairCount() + rebuilt.RowsCount());
+  const double carried_share = first_share(rebuilt);
   CHECK(carried_share == Approx(learnt_share).epsilon(0.01));
   CheckCrossPairs(rebuilt, chunks);
   for (int k = 0; k < 4; ++k) chunks.ResetClaims(), chunks.AddTime(0, 1.0), chunks.AddTime(1, 3.0);
   // 6 + 4 passes: a full window across the rebuild. Chunk 1 took 3/4 of the time: the times
   // are equal a third of the way into its work; the boundary moves half-way there.
   REQUIRE(chunks.Rebalance(rebuilt, false, 10, 0.03));
-  const double moved_share =
-      static_cast<double>(rebuilt.RowBegin(chunks.End(0)) + chunks.End(0)) /
-      static_cast<double>(rebuilt.PairCount() + rebuilt.RowsCount());
+  const double moved_share = first_share(rebuilt);
   CHECK(moved_share == Approx(learnt_share + (1 - learnt_share) / 6).epsilon(0.01));
 }
 
