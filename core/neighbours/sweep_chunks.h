@@ -67,7 +67,9 @@ class SweepChunks {
 
   // The cross pairs and per-chunk arrays (core/math/heap_bytes.h).
   size_t HeapBytes() const {
-    return VectorBytes(boundary_, share_, incoming_start_, outgoing_start_, incoming_, time_s_) + Count();
+    return VectorBytes(boundary_, share_, incoming_start_, outgoing_start_, counts_, incoming_,
+                       time_s_) +
+           Count();
   }
 
   // Adds the measured sweep time of chunk c in this pass.
@@ -111,6 +113,7 @@ class SweepChunks {
   std::vector<double> share_{0, 1};        // the work before each boundary, over the total
   std::vector<uint32_t> incoming_start_;   // chunk c's cross pairs: [start[c], start[c+1])
   std::vector<uint32_t> outgoing_start_;   // slots of the cross pairs in chunk c's rows
+  std::vector<uint32_t> counts_;           // CollectCrossPairs' scratch, per pair of chunks
   std::vector<CrossPair> incoming_;
   std::unique_ptr<std::atomic<uint8_t>[]> claim_;  // per chunk: kPending, kRunning or kDone
   std::vector<double> time_s_;                     // per chunk, since the last (re)plan
