@@ -88,7 +88,7 @@ BaseCalibration StudyModel::CalibrateBase(int budget_scale) {
   if (summary.best < 0) return base;
   const calibrate::Candidate& best = summary.candidates[summary.best];
   base.base_unit = best.unit;
-  base.prediction = Predict(best.result);
+  base.prediction = Predict(*s, best.result);
   std::string why;
   if (!Sensitivities(summary, targets, &base.jacobian, &base.jacobian_sigma, &why)) {
     base.message += "; no sensitivities (" + why + "): the refits move only the effects";

@@ -64,4 +64,16 @@ MergedRunGroups MergeSharedRunGroups(const std::vector<calibrate::RunGroup>& gro
   return out;
 }
 
+std::vector<int> BindingSources(const std::vector<calibrate::TargetBinding>& bindings) {
+  std::vector<int> source;
+  for (size_t k = 0; k < bindings.size(); ++k) {
+    size_t first = 0;
+    while (bindings[first].group != bindings[k].group ||
+           bindings[first].observable != bindings[k].observable)
+      ++first;  // ends at k at the latest
+    source.push_back(static_cast<int>(first));
+  }
+  return source;
+}
+
 }  // namespace demcal::diagnose

@@ -34,4 +34,9 @@ MergedRunGroups MergeSharedRunGroups(const std::vector<calibrate::RunGroup>& gro
                                      const std::vector<calibrate::TargetBinding>& bindings,
                                      const calibrate::ParameterSpace& space);
 
+// Per target the simulated quantity it reads (Prediction::source): the index of the first target
+// bound to the same run group and observable. Targets of merged groups read one simulated mean
+// and get one source; every other target its own.
+std::vector<int> BindingSources(const std::vector<calibrate::TargetBinding>& bindings);
+
 }  // namespace demcal::diagnose

@@ -158,7 +158,7 @@ void StudyModel::Pool(Setting* s) {
     }
 }
 
-Prediction StudyModel::Predict(const calibrate::CandidateResult& result) const {
+Prediction StudyModel::Predict(const Setting& s, const calibrate::CandidateResult& result) const {
   Prediction p;
   p.ok = result.ok();
   p.status = result.status;
@@ -170,6 +170,8 @@ Prediction StudyModel::Predict(const calibrate::CandidateResult& result) const {
     p.spread.push_back(spread);
     p.sem.push_back(t.replicates > 0 ? spread / std::sqrt(t.replicates) : t.sem);
   }
+  p.source = BindingSources(s.bindings);
+  p.source.resize(p.mean.size(), -1);  // a target without a binding: its own
   return p;
 }
 
@@ -196,7 +198,7 @@ std::vector<Prediction> StudyModel::Evaluate(const std::vector<ModelPoint>& poin
     reused_ += r[0].replicates_reused;
     if (journal_error_.empty()) journal_error_ = r[0].journal_error;
     Pool(s);
-    out.push_back(Predict(r[0]));
+    out.push_back(Predict(*s, r[0]));
     if (options_.log)
       *options_.log << "diagnose:   "
                     << (point.effects.empty() ? "base" : DescribeEffects(point.effects)) << ": "

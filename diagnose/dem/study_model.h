@@ -72,7 +72,9 @@ class StudyModel final : public ForwardModel {
              const EffectContext& context, const StudyModelOptions& options);
   Setting* SettingFor(const std::vector<ActiveEffect>& effects, std::string* error);
   void Pool(Setting* s);
-  Prediction Predict(const calibrate::CandidateResult& result) const;
+  // The prediction of a setting's candidate; its sources number the (run group, observable)
+  // pairs the targets are bound to, so targets of merged groups share one.
+  Prediction Predict(const Setting& s, const calibrate::CandidateResult& result) const;
 
   const workflow::StudyFile& study_;
   std::vector<const Effect*> effects_;

@@ -9,4 +9,11 @@ std::vector<double> Residuals(const std::vector<Observation>& observations) {
   return r;
 }
 
+std::vector<int> Sources(const std::vector<Observation>& observations) {
+  std::vector<int> s;
+  s.reserve(observations.size());
+  for (const Observation& o : observations) s.push_back(o.source);
+  return s;
+}
+
 }  // namespace demcal::diagnose

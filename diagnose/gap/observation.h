@@ -36,6 +36,9 @@ struct Observation {
   double scatter = 0;      // the simulation's single-run scatter (the floors' unit), >= 0
   int repeats = 0;         // packings the measured value is the mean of (0: not stated, one)
   std::string experiment;  // the experiment file that measures it ("" when not known)
+  // The simulated quantity it reads (Prediction::source); rows with one source share its
+  // simulation error. −1: its own.
+  int source = -1;
 
   double Sigma() const { return std::sqrt(uncertainty * uncertainty + sem * sem + floor * floor); }
   double Residual() const { return (simulated - measured) / Sigma(); }
@@ -43,5 +46,7 @@ struct Observation {
 
 // The standardised residuals of a list, in order.
 std::vector<double> Residuals(const std::vector<Observation>& observations);
+// Their sources, in order (Chi2NoiseSd's grouping).
+std::vector<int> Sources(const std::vector<Observation>& observations);
 
 }  // namespace demcal::diagnose

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "calibrate/jacobian_svd.h"
+#include "core/math/number_text.h"
 #include "diagnose/gap/gap_significance.h"
 #include "diagnose/loop/fit_state.h"
 #include "diagnose/loop/base_noise.h"
@@ -27,12 +28,7 @@ NoisyChi2 Chi2(const std::vector<Observation>& observations, const Prediction& p
 }
 
 // χ² figures in the summary: 3 significant digits.
-std::string Rounded(double x) {
-  std::ostringstream o;
-  o.precision(3);
-  o << x;
-  return o.str();
-}
+std::string Rounded(double x) { return core::NumberText(x, 3); }
 
 // On a bound: the unit coordinate at 0 or 1 up to rounding (optimisers clamp to the bound
 // exactly; 1e-9 only absorbs the unit map's arithmetic, it is not a tolerance on the fit).

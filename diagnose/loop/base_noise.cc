@@ -1,23 +1,16 @@
 #include "diagnose/loop/base_noise.h"
 
-#include <map>
-#include <tuple>
+#include <Eigen/Dense>
+
+#include "diagnose/ranking/evidence.h"
 
 namespace demcal::diagnose {
 
 NoisyChi2 BaseChi2(const std::vector<Observation>& at) {
-  NoisyChi2 c{0, 0};
-  // Per simulated quantity (mean, sem, scatter): the sum of 2·r_i·u_i of the rows reading it.
-  std::map<std::tuple<double, double, double>, double> shared;
-  for (const Observation& o : at) {
-    const double r = o.Residual();
-    c.chi2 += r * r;
-    if (o.sem > 0) shared[{o.simulated, o.sem, o.scatter}] += 2 * r * o.sem / o.Sigma();
-  }
-  double var = 0;
-  for (const auto& [key, sum] : shared) var += sum * sum;
-  c.noise_sd = std::sqrt(var);
-  return c;
+  const Eigen::Index n = static_cast<Eigen::Index>(at.size());
+  Eigen::VectorXd r(n), u(n);
+  for (Eigen::Index i = 0; i < n; ++i) r(i) = at[i].Residual(), u(i) = at[i].sem / at[i].Sigma();
+  return {r.squaredNorm(), Chi2NoiseSd(r, u, Eigen::VectorXd::Zero(n), 0, Sources(at))};
 }
 
 }  // namespace demcal::diagnose

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <sstream>
 
+#include "core/math/number_text.h"
 #include "diagnose/loop/base_fit.h"
 #include "diagnose/loop/bound_step.h"
 #include "diagnose/loop/candidate_step.h"
@@ -16,26 +16,15 @@
 
 namespace demcal::diagnose {
 
-namespace {
-
-// 6 significant digits, as Limit::Text prints the bounds (std::to_string gives 0.000000 for 1e-7).
-std::string Shown(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
-
-}  // namespace
-
 bool DiagnoseOptions::IsValid(std::string* error) const {
   namespace limits = objectives::limits;
   if (!limits::kSignificance.Contains(significance))
     return *error = "significance must be in " + limits::kSignificance.Text() + ", got " +
-                    Shown(significance),
+                    core::NumberText(significance),
            false;
   if (!limits::kDiscrepancyFloor.Contains(discrepancy_floor))
     return *error = "discrepancy floor must be in " + limits::kDiscrepancyFloor.Text() +
-                    " single-run scatters, got " + Shown(discrepancy_floor),
+                    " single-run scatters, got " + core::NumberText(discrepancy_floor),
            false;
   if (!limits::kDiagnoseRefits.Contains(dem_refits))
     return *error = "refits must be in " + limits::kDiagnoseRefits.Text(), false;

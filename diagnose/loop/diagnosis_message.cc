@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/math/number_text.h"
 #include "diagnose/loop/base_fit.h"
 #include "diagnose/ranking/ranking.h"
 #include "diagnose/ranking/revaluation.h"
@@ -11,13 +12,6 @@
 namespace demcal::diagnose {
 
 namespace {
-
-std::string FloorText(double phi) {
-  std::ostringstream s;
-  s.precision(3);
-  s << phi;
-  return s.str();
-}
 
 // "jkr_adhesion or particle_shape (delta BIC -12.1 and -11.4, within 6)" from the last step.
 std::string TieText(const Diagnosis& d, const std::vector<CandidateEffect>& candidates) {
@@ -141,11 +135,11 @@ std::string DiagnosisMessage(const Diagnosis& d, const DiagnoseOptions& options,
       << d.gap_before.summary << "; re-valued: " << d.gap_after.summary << ")";
   } else if (!d.control_note.empty()) {
     m << "model-form offset / no missing effect: " << d.control_note << " (discrepancy floor "
-      << FloorText(d.floor_before) << " single-run scatter(s) beyond the fixed "
+      << core::NumberText(d.floor_before, 3) << " single-run scatter(s) beyond the fixed "
       << options.discrepancy_floor << "; " << d.gap_before.summary << ")";
   } else {
     m << "model-form offset: the base model misses the data by a discrepancy floor of "
-      << FloorText(d.floor_before) << " single-run scatter(s) beyond the fixed "
+      << core::NumberText(d.floor_before, 3) << " single-run scatter(s) beyond the fixed "
       << options.discrepancy_floor
       << ", and no effect of the library explains more than that floor "
       << "allows (gap not explained by the library: " << d.gap_before.summary << ")";

@@ -30,6 +30,7 @@ std::vector<Observation> WithPrediction(const std::vector<Observation>& observat
     // The packing noise of a mean over `repeats` packings (none stated: one packing).
     out[i].floor = floor_factor * p.spread[i] / std::sqrt(std::max(1, out[i].repeats));
     out[i].scatter = p.spread[i];
+    out[i].source = i < p.source.size() ? p.source[i] : -1;
   }
   return out;
 }

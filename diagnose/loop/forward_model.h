@@ -45,6 +45,12 @@ struct Prediction {
   bool ok = false;
   std::string status = "not evaluated";   // "ok" or why not
   std::vector<double> mean, sem, spread;  // per observation; spread = single-run standard deviation
+  // Per observation: which simulated quantity it reads (the model's own numbering). Rows with one
+  // id read one simulated mean — a scene shared by several table rows, run once (the coating rows
+  // of a base the coating does not enter, shared_run_groups.h) — so one simulation error moves
+  // them all, and the χ² noise adds their terms before squaring (Chi2NoiseSd). Empty: every row
+  // its own quantity.
+  std::vector<int> source;
 };
 
 // The base calibration (Calibration II): best fitted parameters, the prediction there and the

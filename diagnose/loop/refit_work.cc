@@ -53,7 +53,8 @@ void Fill(const Frame& f, const Work& w, const std::vector<CandidateEffect>& can
   // the ranking does not tell two candidates apart by less than that.
   if (w.simulated && w.best_prediction.sem.size() == static_cast<size_t>(f.n())) {
     const Eigen::VectorXd u = ToVector(w.best_prediction.sem).cwiseQuotient(f.sigma);
-    e->evidence.chi2_noise_sd = Chi2NoiseSd(r, u, f.q, e->evidence.floor);
+    e->evidence.chi2_noise_sd =
+        Chi2NoiseSd(r, u, f.q, e->evidence.floor, w.best_prediction.source);
   }
   e->chi2_per_dof = e->chi2 / std::max(1, f.n() - f.fitted - k);
   e->control = candidates[w.candidate].control;

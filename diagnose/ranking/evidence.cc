@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "calibrate/chi_square.h"
 #include "diagnose/ranking/discrepancy_floor.h"
@@ -47,12 +48,18 @@ double BicGap(const Evidence& a, const Evidence& b) {
 }
 
 double Chi2NoiseSd(const Eigen::VectorXd& r, const Eigen::VectorXd& u, const Eigen::VectorXd& q,
-                   double phi) {
+                   double phi, const std::vector<int>& source) {
+  // Per source the sum of 2·r_i·w_i·u_i of its rows; a row without one is a source of its own.
+  std::map<int, double> shared;
   double var = 0;
   for (Eigen::Index i = 0; i < r.size(); ++i) {
     const double w = 1 / (1 + phi * phi * q(i) * q(i));
-    var += 4 * r(i) * r(i) * w * w * u(i) * u(i);
+    const double term = 2 * r(i) * w * u(i);
+    const int s = i < static_cast<Eigen::Index>(source.size()) ? source[i] : -1;
+    if (s < 0) var += term * term;
+    else shared[s] += term;
   }
+  for (const auto& [s, sum] : shared) var += sum * sum;
   return std::sqrt(var);
 }
 

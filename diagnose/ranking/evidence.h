@@ -22,6 +22,7 @@
 //
 // Thread-safety: pure function.
 #include <Eigen/Dense>
+#include <vector>
 
 namespace demcal::diagnose {
 
@@ -56,13 +57,18 @@ constexpr double kBicIndistinct = 6.0;
 // A simulated refit's χ² is itself a random variable: each simulated mean m_i carries a standard
 // error s_i, and χ² = Σ r_i² w_i (r_i = (m_i − y_i)/σ_i, w_i = 1/(1 + φ² q_i²) the floor's
 // weight) moves with it. To first order (the delta method), δχ² = Σ 2 r_i w_i δm_i/σ_i, so with
-// independent means Var(χ²) ≈ Σ 4 r_i² w_i² u_i², u_i = s_i/σ_i. The refit that ran its points
-// where the noise happened to fall its way has the lower χ² by chance; the two ΔBIC of two
-// candidates share the base fit, so their difference carries the two refits' noise, and its
-// variance is the sum of the two.
-//   u: s_i/σ_i per observation; q, phi as in discrepancy_floor.h.
+// independent means Var(χ²) ≈ Σ 4 r_i² w_i² u_i², u_i = s_i/σ_i. Rows that read one simulated
+// mean (one source, Prediction::source) carry one error δm, which moves their terms together:
+// they add before squaring, Var(χ²) ≈ Σ_sources (Σ_{i∈source} 2 r_i w_i u_i)². Counted as
+// independent they would give up to √(rows per source) too little where their residuals share a
+// sign, as they do on a fit that misses in one direction. The refit that ran its points where
+// the noise happened to fall its way has the lower χ² by chance; the two ΔBIC of two candidates
+// share the base fit, so their difference carries the two refits' noise, and its variance is
+// the sum of the two.
+//   u: s_i/σ_i per observation; q, phi as in discrepancy_floor.h; source: per observation its
+//   simulated quantity (Sources(observations)); −1 or empty: its own.
 double Chi2NoiseSd(const Eigen::VectorXd& r, const Eigen::VectorXd& u, const Eigen::VectorXd& q,
-                   double phi);
+                   double phi, const std::vector<int>& source = {});
 
 // The gap between two candidates' BIC. Each ΔBIC is taken with the floor estimated from that
 // candidate's own fit, so each is measured against a differently floored base χ², and two

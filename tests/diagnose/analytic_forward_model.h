@@ -115,6 +115,7 @@ class AnalyticForwardModel final : public ForwardModel {
                 calibrate::testing::Normal(seed, shared_scenes ? Kind(i) : i));
         pr.sem.push_back(s / std::sqrt(replicates));
         pr.spread.push_back(s);
+        pr.source.push_back(shared_scenes ? Kind(i) : i);
       }
       runs_ += replicates;
       out.push_back(pr);

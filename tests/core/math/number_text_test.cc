@@ -14,3 +14,10 @@ TEST_CASE("NumberText keeps small values and drops padding", "[unit][core]") {
   CHECK(NumberText(1e308) == "1e+308");
   CHECK(NumberText(2.0 / 3.0) == "0.666667");
 }
+
+TEST_CASE("NumberText rounds to a summary's own digit count", "[unit][core]") {
+  CHECK(NumberText(2.0 / 3.0, 3) == "0.667");
+  CHECK(NumberText(1234.5, 3) == "1.23e+03");  // the stream's shortest form, as summaries print
+  CHECK(NumberText(0.5, 3) == "0.5");          // no padding at fewer digits either
+  CHECK(NumberText(2.0 / 3.0, 6) == NumberText(2.0 / 3.0));
+}

@@ -52,6 +52,9 @@ TEST_CASE("groups whose condition does not enter the model share one run", "[uni
   CHECK(m.bindings[1].group == 0);
   CHECK(m.bindings[2].group == 1);
   CHECK(m.bindings[3].group == 0);
+  // The three heap targets read one simulated angle: one source for the χ² noise.
+  CHECK(BindingSources(m.bindings) == std::vector<int>{0, 0, 2, 0});
+  CHECK(BindingSources(bindings) == std::vector<int>{0, 1, 2, 3});
 }
 
 TEST_CASE("groups a condition changes stay apart", "[unit]") {

@@ -15,13 +15,14 @@ namespace {
 
 using testing::AnalyticForwardModel;
 
-Observation Row(double simulated, double sem, double scatter, double measured) {
+Observation Row(double simulated, double sem, double scatter, double measured, int source) {
   Observation o;
   o.measured = measured;
   o.uncertainty = 1;
   o.simulated = simulated;
   o.sem = sem;
   o.scatter = scatter;
+  o.source = source;
   return o;
 }
 
@@ -37,16 +38,21 @@ Prediction Packing(AnalyticForwardModel& model, double u, uint64_t seed) {
 }  // namespace
 
 TEST_CASE("base chi2 noise: rows reading one simulated mean add before squaring", "[unit]") {
-  // Three rows read one simulated mean (2 ± 0.5, measured 0): one error moves all three terms.
-  // r = 2/√1.25, u = 0.5/√1.25: each term 2·r·u = 1.6; together sd 4.8, not √3·1.6.
-  const std::vector<Observation> shared = {Row(2, 0.5, 1, 0), Row(2, 0.5, 1, 0), Row(2, 0.5, 1, 0)};
+  // Three rows read one simulated mean (2 ± 0.5, measured 0; one source): one error moves all
+  // three terms. r = 2/√1.25, u = 0.5/√1.25: each term 2·r·u = 1.6; together sd 4.8, not √3·1.6.
+  const std::vector<Observation> shared = {Row(2, 0.5, 1, 0, 7), Row(2, 0.5, 1, 0, 7),
+                                           Row(2, 0.5, 1, 0, 7)};
   CHECK(BaseChi2(shared).chi2 == Approx(3 * 4 / 1.25));
   CHECK(BaseChi2(shared).noise_sd == Approx(4.8));
-  // Three scenes (different means): independent, as Chi2NoiseSd counts them.
-  const std::vector<Observation> own = {Row(2, 0.5, 1, 0), Row(2, 0.5, 1.1, 0), Row(-2, 0.5, 1, 0)};
+  // The same numbers from three scenes (three sources): independent, however alike they are.
+  const std::vector<Observation> own = {Row(2, 0.5, 1, 0, 0), Row(2, 0.5, 1, 0, 1),
+                                        Row(2, 0.5, 1, 0, -1)};
   CHECK(BaseChi2(own).noise_sd == Approx(1.6 * std::sqrt(3.0)));
+  // One source read by rows it misses in opposite directions: their terms cancel.
+  const std::vector<Observation> opposite = {Row(2, 0.5, 1, 0, 3), Row(2, 0.5, 1, 4, 3)};
+  CHECK(BaseChi2(opposite).noise_sd == Approx(0).margin(1e-12));
   // No simulation noise: none in χ².
-  CHECK(BaseChi2({Row(2, 0, 0, 0)}).noise_sd == 0);
+  CHECK(BaseChi2({Row(2, 0, 0, 0, 0)}).noise_sd == 0);
 }
 
 TEST_CASE("base chi2 noise matches the scatter of chi2 over packings of shared scenes", "[unit]") {

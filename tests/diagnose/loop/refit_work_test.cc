@@ -48,6 +48,16 @@ class PacketModel : public ForwardModel {
   int runs_ = 0;
 };
 
+// A refit kept at the simulated point fit + the effect at `value`.
+refits::Work SimulatedAt(PacketModel& model, const FitState& fit, double value) {
+  refits::Work w{0};
+  w.simulated = true;
+  w.best_point = fit.point;
+  w.best_point.effects = {{0, {value}}};
+  w.best_prediction = model.Evaluate({w.best_point})[0];
+  return w;
+}
+
 }  // namespace
 
 TEST_CASE("a refit ends on a finite-difference probe that fits better", "[unit]") {
@@ -58,11 +68,7 @@ TEST_CASE("a refit ends on a finite-difference probe that fits better", "[unit]"
   CandidateEffect effect{"effect", "a stand-in", {{"t", "", -1, 1, 0.5}}};
   const FitState fit = OneParameterFit(model, 0.5, 4);
   const refits::Frame f = FrameWithoutFloor(obs, fit);
-  refits::Work w{0};
-  w.simulated = true;
-  w.best_point = fit.point;
-  w.best_point.effects = {{0, {0.2}}};
-  w.best_prediction = model.Evaluate({w.best_point})[0];
+  refits::Work w = SimulatedAt(model, fit, 0.2);
   w.best_chi2 = 4 * 3.0 * 3.0 / (1 + 0.25);  // σ² = u² + sem² = 1.25
   w.signature = Eigen::VectorXd::Constant(4, 1.0);
   // The effect's probe is one finite-difference step of its range (2) above the kept point: the
@@ -77,6 +83,36 @@ TEST_CASE("a refit ends on a finite-difference probe that fits better", "[unit]"
   CHECK(w.best_chi2 == Approx(4 * 0.75 * 0.75 / 1.25));
   CHECK(w.best_point.effects.back().values[0] == Approx(model.lucky));
   CHECK(w.best_point.base_unit[0] == Approx(0.5));
+}
+
+TEST_CASE("a simulated refit's chi2 noise adds the rows that read one simulated mean", "[unit]") {
+  // The stand-in misses ±3 in turn (σ² = 1 + 0.5², u = 0.5/√1.25 on every row): four terms
+  // 2·r·w·u of one size and alternating sign. Rows of one source (one simulated scene read by
+  // two table rows) share its error: same-sign pairs add to √2 times the independent sd,
+  // opposite-sign pairs cancel. Counted as independent rows, all three would be equal.
+  PacketModel model;
+  model.measured = {10, 20, 30, 40};
+  std::vector<Observation> obs(4);
+  for (size_t i = 0; i < obs.size(); ++i) obs[i].measured = model.measured[i];
+  const std::vector<CandidateEffect> effect = {{"effect", "a stand-in", {{"t", "", -1, 1, 0.5}}}};
+  const FitState fit = OneParameterFit(model, 0.5, 4);
+  const refits::Frame f = FrameWithoutFloor(obs, fit);
+  refits::Work w = SimulatedAt(model, fit, 0.2);
+  w.signature = Eigen::VectorXd::Constant(4, 1.0);
+  w.refit = refits::Refit(f, effect[0].parameters[0], w.signature);
+  const Eigen::VectorXd r = StandardisedResiduals(obs, w.best_prediction.mean, f.sigma);
+  w.best_chi2 = r.squaredNorm();
+  auto noise = [&](std::vector<int> source) {
+    w.best_prediction.source = std::move(source);
+    RankingEntry e;
+    refits::Fill(f, w, effect, r, &e);
+    return e.evidence.chi2_noise_sd;
+  };
+  const double own = noise({});
+  REQUIRE(own > 0);
+  CHECK(noise({0, 1, 2, 3}) == Approx(own));
+  CHECK(noise({0, 1, 0, 1}) == Approx(std::sqrt(2.0) * own));
+  CHECK(noise({0, 0, 1, 1}) == Approx(0).margin(1e-12));
 }
 
 }  // namespace demcal::diagnose

@@ -2,6 +2,7 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <map>
 #include <random>
 
 #include "diagnose/ranking/discrepancy_floor.h"
@@ -18,6 +19,28 @@ RankingEntry Entry(const std::string& key, double chi2_base, double chi2, bool s
   e.chi2 = chi2;
   e.evidence = EvidenceOf(chi2_base, chi2, 1, 12, 0.01);
   return e;
+}
+
+// The standard deviation of the floored χ² over 40000 draws of the simulated means, each source
+// one error (source[i]: row i's; empty: every row its own) of its rows' standard errors u.
+double SampledChi2Sd(const Eigen::VectorXd& r, const Eigen::VectorXd& u, const Eigen::VectorXd& q,
+                     double phi, const std::vector<int>& source, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> z(0, 1);
+  const int draws = 40000;
+  double sum = 0, sum2 = 0;
+  for (int k = 0; k < draws; ++k) {
+    std::map<int, double> error;  // per source, this draw's
+    Eigen::VectorXd rr = r;
+    for (int i = 0; i < rr.size(); ++i) {
+      const int s = source.empty() ? i : source[i];
+      if (!error.count(s)) error[s] = z(rng);
+      rr(i) += u(i) * error[s];
+    }
+    const double c = FlooredChi2(rr, q, phi);
+    sum += c, sum2 += c * c;
+  }
+  return std::sqrt(sum2 / draws - (sum / draws) * (sum / draws));
 }
 
 }  // namespace
@@ -90,18 +113,25 @@ TEST_CASE("evidence: the χ² noise of a simulated refit by the delta method", "
   const Eigen::VectorXd u2 = (Eigen::VectorXd(6) << 0.2, 0.3, 0.1, 0.25, 0.15, 0.3).finished();
   const Eigen::VectorXd q2 = (Eigen::VectorXd(6) << 1, 2, 0.5, 1, 1.5, 1).finished();
   const double phi = 0.7;
-  std::mt19937 rng(7);
-  std::normal_distribution<double> z(0, 1);
-  const int draws = 40000;
-  double sum = 0, sum2 = 0;
-  for (int k = 0; k < draws; ++k) {
-    Eigen::VectorXd rr = r2;
-    for (int i = 0; i < rr.size(); ++i) rr(i) += u2(i) * z(rng);
-    const double c = FlooredChi2(rr, q2, phi);
-    sum += c, sum2 += c * c;
-  }
-  const double sd = std::sqrt(sum2 / draws - (sum / draws) * (sum / draws));
+  const double sd = SampledChi2Sd(r2, u2, q2, phi, {}, 7);
   CHECK(Chi2NoiseSd(r2, u2, q2, phi) == Approx(sd).epsilon(0.03));
+}
+
+TEST_CASE("evidence: rows of one simulated mean share its error in the chi2 noise", "[unit]") {
+  // Six rows, three sources (one simulated scene read by two table rows each: a scene run once
+  // for two conditions that do not enter the model). One error per source moves both its rows:
+  // against sampling with one draw per source, the grouped delta method holds and the rows
+  // counted as independent fall short (same-sign pairs: by up to √2).
+  const Eigen::VectorXd r = (Eigen::VectorXd(6) << 3, 2.5, -2, -1.5, 1, 2).finished();
+  const Eigen::VectorXd u = (Eigen::VectorXd(6) << 0.2, 0.2, 0.3, 0.3, 0.25, 0.25).finished();
+  const Eigen::VectorXd q = (Eigen::VectorXd(6) << 1, 1, 2, 2, 1.5, 1.5).finished();
+  const std::vector<int> source = {4, 4, 9, 9, 2, 2};
+  const double phi = 0.7;
+  const double sd = SampledChi2Sd(r, u, q, phi, source, 11);
+  CHECK(Chi2NoiseSd(r, u, q, phi, source) == Approx(sd).epsilon(0.03));
+  CHECK(Chi2NoiseSd(r, u, q, phi) < 0.8 * sd);
+  // Every row its own source: as without sources.
+  CHECK(Chi2NoiseSd(r, u, q, phi, {0, 1, 2, 3, 4, 5}) == Approx(Chi2NoiseSd(r, u, q, phi)));
 }
 
 TEST_CASE("ranking: a gap within the refits' simulation noise is not told apart", "[unit]") {
