@@ -104,6 +104,7 @@ bool ClumpIsFree(const OccupancyGrid& grid, const ParticleSystem& system, int sp
       return false;
   return true;
 }
+
 // One particle to place: its species, (equivalent) diameter and enclosing radius.
 struct Draw {
   const SpeciesDraw* species = nullptr;
@@ -135,7 +136,8 @@ std::vector<Draw> DrawBatchLargestFirst(const InsertionRequest& q, Rng& rng,
     mass += unit_mass * p.species->density_kg_m3 * p.d * p.d * p.d;
     batch.push_back(p);
   }
-  std::stable_sort(batch.begin(), batch.end(), [](const Draw& a, const Draw& b) { return a.r > b.r; });
+  std::stable_sort(batch.begin(), batch.end(),
+                   [](const Draw& a, const Draw& b) { return a.r > b.r; });
   return batch;
 }
 

@@ -26,7 +26,8 @@ Scene ClumpPour(const InsertionRegion& region, double rate_kg_s) {
   s.species[0].size.kind = SizeDistribution::Kind::kUniform;
   s.species[0].size.min_diameter_m = 0.002125;
   s.species[0].size.max_diameter_m = 0.0025;
-  for (const ClumpSphere& m : chain.spheres) s.species[0].clump_shape.push_back({m.centre_m, m.radius_m});
+  for (const ClumpSphere& m : chain.spheres)
+    s.species[0].clump_shape.push_back({m.centre_m, m.radius_m});
   s.pair_parameters = {PairParameters{}};
   s.gravity_m_s2 = {0, 0, -9.81};
   s.domain_min_m = {-0.02, -0.02, -1.0};
@@ -92,7 +93,8 @@ TEST_CASE("a clump batch is placed largest first and keeps the mixture's composi
   s.species[1].size.kind = SizeDistribution::Kind::kUniform;
   s.species[1].size.min_diameter_m = 0.00425;
   s.species[1].size.max_diameter_m = 0.005;
-  for (const ClumpSphere& m : chain.spheres) s.species[1].clump_shape.push_back({m.centre_m, m.radius_m});
+  for (const ClumpSphere& m : chain.spheres)
+    s.species[1].clump_shape.push_back({m.centre_m, m.radius_m});
   s.pair_parameters.assign(4, PairParameters{});
   s.factories[0].species = {0, 1};
   s.factories[0].mass_fractions = {0.925, 0.075};
