@@ -31,6 +31,8 @@ and, for the comparison with the species' own repose box (examples/aor_bp.json a
                       0.2 m wide box, no funnel (1 heap per seed)
   aor_bp_sphere_big_smooth  the same with frictionless front/back walls
   aor_bp_clump_big    the same grown box with the BP clumps (Table 1's mu_r 0.10)
+  aor_bp_clump_big_half  the same poured at half the rate (9.25 g/s, about what the clump feed
+                      inserted before f793d06)
 Resumable: a run whose result.json exists is skipped. Writes OUT/runs.csv (one row per heap; angle_deg: the mixture angle, or the repose-box heap's angle) and
 OUT/arms.csv (mean +- sem per arm) from every finished run; `--summary-only` just rewrites them.
 
@@ -54,7 +56,7 @@ ARMS = ["sphere_base", "sphere_smooth", "sphere_deep", "sphere_bp", "clump_base"
         "clump_orifice16",
         "aor_bp_sphere", "aor_bp_sphere_dt02", "aor_bp_clump", "aor_bp_clump_dt02",
         "aor_bp_sphere_smooth", "aor_bp_sphere_big", "aor_bp_sphere_big_smooth",
-        "aor_bp_clump_big", "aor_bp_clump_smooth"]
+        "aor_bp_clump_big", "aor_bp_clump_smooth", "aor_bp_clump_big_half"]
 AOR_EXAMPLE = os.path.join(REPO, "examples", "aor_bp.json")
 AOR_REPLICATES = 4
 
@@ -100,6 +102,8 @@ def aor_variant(arm):
         for k in ("width_m", "pour_height_m", "feed_width_m"):
             a[k] = seg[k]
         a["settle"]["max_time_s"] = seg["settle"]["max_time_s"]
+    if arm.endswith("_half"):
+        exp["aor"]["feed"]["mass_rate_kg_s"] /= 2
     if arm.endswith("smooth"):
         smooth_walls(exp, exp["aor"])
     return exp

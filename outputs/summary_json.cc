@@ -67,6 +67,7 @@ nlohmann::ordered_json RunRecordToJson(const RunRecord& r) {
     fj["region_lift_m"] = Finite(f.region_lift_m);
     j["factories"].push_back(fj);
   }
+  j["factory_warnings"] = r.factory_warnings;
   j["sinks"] = nlohmann::ordered_json::array();
   for (const core::SinkReport& sink : r.sinks) {
     nlohmann::ordered_json sj;

@@ -39,6 +39,7 @@ struct RunRecord {
   double setup_wall_time_s = 0;                // scene loading, particle placement, first forces
   double total_wall_time_s = 0;                // the whole command, outputs included
   std::vector<core::FactoryReport> factories;  // one per scene factory
+  std::vector<std::string> factory_warnings;   // Simulation::FactoryRateWarnings at the end
   std::vector<NamedWallLoad> wall_loads;       // one per wall, at the end of the run
   std::vector<core::SinkReport> sinks;         // one per sink, then "domain" (if any sinks)
   std::vector<std::string> species_names;      // to name the per-species sink tallies

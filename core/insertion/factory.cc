@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
+#include <sstream>
 
 namespace demcal::core {
 
@@ -60,6 +62,20 @@ int64_t ParticleFactory::Update(double t, ParticleSystem& system) {
     next_batch_s_ += interval_;
   }
   return added;
+}
+
+std::string ParticleFactory::RateWarning() const {
+  const double nominal = spec_.mass_rate_kg_s;
+  const double behind_kg = nominal * report_.active_time_s - report_.inserted_mass_kg;
+  if (!(behind_kg > nominal * interval_)) return "";
+  std::ostringstream os;
+  os << std::setprecision(3) << "factory '" << spec_.name << "' fell behind its nominal rate: "
+     << report_.inserted_mass_kg << " kg in " << report_.active_time_s << " s, "
+     << report_.AchievedRate() << " kg/s against a nominal " << nominal << " kg/s; "
+     << report_.full_batches
+     << " batch(es) found the region full (it cannot hold a batch's particles at random "
+        "positions): enlarge the region, raise the entry speed (velocity_m_s) or lower the rate";
+  return os.str();
 }
 
 InsertionRegion ParticleFactory::RegionAt(double time_s) const {

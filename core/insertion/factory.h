@@ -3,7 +3,9 @@
 // fractions, into a region at a target mass rate (kg/s), in batches, at random non-overlapping
 // positions with a given initial velocity. Deterministic from its seed. The shortfall of a
 // batch (region momentarily full) is carried to the next one, and the factory reports the
-// requested and the achieved rate.
+// requested and the achieved rate. A factory more than one batch behind its nominal rate
+// (RateWarning) has a region that cannot hold what a batch asks for: each batch interval the
+// region empties (the grains fall through it), so a full region caps the rate whatever is owed.
 //
 // Moving regions, so that a staged pour is one scene: the region translates with
 // region_velocity_m_s while start_s <= t < end_s, and/or follows the heap it feeds: with
@@ -86,6 +88,12 @@ class ParticleFactory {
   bool CheckRestored(double time_s, std::string* error) const;
 
   const FactoryReport& report() const { return report_; }
+  // Empty while the factory is at most one batch (nominal rate × batch interval) behind its
+  // nominal mass rate over its active time — the most a factory that keeps up owes (the mass of
+  // the batch in progress, or the remainder of a capped total); otherwise a warning naming the
+  // factory with its achieved and nominal rates and the cause. A factory that fell behind and
+  // finished its total_mass_kg late stays behind: its active time ran on until it finished.
+  std::string RateWarning() const;
   const FactorySpec& spec() const { return spec_; }
   double batch_interval_s() const { return interval_; }
 

@@ -40,7 +40,8 @@ struct InsertionResult {
 };
 
 // Appends particles (spheres or clumps, by species, clumps randomly oriented) until max_count
-// or max_mass_kg is reached or the region is full. A clump is placed by its enclosing sphere.
+// or max_mass_kg is reached or the region is full. A clump's enclosing sphere lies inside the
+// region, and its members (randomly oriented) overlap no sphere already present.
 InsertionResult InsertRandomNonOverlapping(const InsertionRequest& request, Rng& rng,
                                            ParticleSystem& system);
 

@@ -185,6 +185,19 @@ std::vector<FactoryReport> Simulation::FactoryReports() const {
   return reports;
 }
 
+const FactoryReport* Simulation::FindFactoryReport(const std::string& name) const {
+  for (const ParticleFactory& f : factories_)
+    if (f.report().name == name) return &f.report();
+  return nullptr;
+}
+
+std::vector<std::string> Simulation::FactoryRateWarnings() const {
+  std::vector<std::string> warnings;
+  for (const ParticleFactory& f : factories_)
+    if (std::string w = f.RateWarning(); !w.empty()) warnings.push_back(std::move(w));
+  return warnings;
+}
+
 void Simulation::RebuildNeighbours(bool allow_reorder, const std::vector<uint32_t>& removed) {
   std::swap(list_, spare_list_);
   std::vector<uint32_t> order;

@@ -118,6 +118,10 @@ class Simulation {
   // Wall time per phase of the step since Initialize (RunSummary::phases has one Run's).
   const PhaseTimes& phases() const { return phases_; }
   std::vector<FactoryReport> FactoryReports() const;
+  // The report of the factory named `name` (the first, if several share it); nullptr if none.
+  const FactoryReport* FindFactoryReport(const std::string& name) const;
+  // ParticleFactory::RateWarning of every factory that fell behind its nominal rate.
+  std::vector<std::string> FactoryRateWarnings() const;
   // Per sink (scene order), then the implicit "domain" sink when the scene has sinks: what
   // each has removed so far, per species.
   const std::vector<SinkReport>& SinkReports() const { return sink_reports_; }

@@ -37,6 +37,7 @@ nlohmann::ordered_json RunJson(int replicate, const AorRun& run) {
                                    : nullptr;
   j["particles"] = run.particles;
   j["settle_time_s"] = run.settle.settle_time_s;
+  j["factory_warnings"] = run.settle.factory_warnings;
   j["specific_kinetic_J_kg"] = run.settle.specific_kinetic_J_kg;
   j["settled_by"] = run.settle.settled_by.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(run.settle.settled_by);
   j["surface_change_d"] = run.settle.surface_change_d >= 0 ? nlohmann::ordered_json(run.settle.surface_change_d) : nlohmann::ordered_json();
@@ -132,6 +133,9 @@ AorResult RunAorExperiment(const ExperimentFile& file, const ExperimentContext& 
   log << "aor: angle of repose " << (s.n > 0 ? std::to_string(s.mean) : "n/a") << " deg ± "
       << s.sem << " (standard error, " << s.n << " of " << context.replicates
       << " replicates ok) -> " << context.out_dir << "/result.json\n";
+  for (const AorRun& run : out.runs)
+    for (const std::string& warning : run.settle.factory_warnings)
+      log << "warning: seed " << run.seed << ": " << warning << "\n";
   out.status = s.n > 0 ? ExperimentStatus::kOk : ExperimentStatus::kRunFailed;
   return out;
 }

@@ -197,6 +197,7 @@ ordered_json RunJson(int replicate, const SegregationRun& run,
   j["feed_duration_s"] = run.feed_duration_s;
   j["funnel_feed_limited"] = run.funnel_feed_limited;
   j["funnel_regime"] = run.funnel_regime;
+  j["factory_warnings"] = run.settle.factory_warnings;
   j["funnel_mass_flow_kg_s"] = run.funnel_mass_flow_kg_s;
   j["funnel_orifice_diameter_m"] = run.funnel_orifice_diameter_m;
   j["outflow_mass_fraction"] = run.outflow_mass_fraction;

@@ -93,6 +93,9 @@ SegregationResult RunSegregationExperiment(const ExperimentFile& file,
   for (const SegregationRun& run : out.runs)
     if (!run.ok()) log << "; seed " << run.seed << ": " << run.Status();
   log << " -> " << context.out_dir << "/result.json\n";
+  for (const SegregationRun& run : out.runs)
+    for (const std::string& warning : run.settle.factory_warnings)
+      log << "warning: seed " << run.seed << ": " << warning << "\n";
   out.status = out.replicates_ok > 0 ? ExperimentStatus::kOk : ExperimentStatus::kRunFailed;
   return out;
 }

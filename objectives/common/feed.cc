@@ -50,9 +50,8 @@ double FeedEntrySpeed(const core::Scene& model, const Feed& feed,
 }
 
 bool FeedInserted(const core::Simulation& sim, const Feed& feed) {
-  for (const core::FactoryReport& r : sim.FactoryReports())
-    if (r.name == "feed") return r.inserted_mass_kg >= feed.mass_kg;
-  return true;
+  const core::FactoryReport* r = sim.FindFactoryReport("feed");
+  return !r || r->inserted_mass_kg >= feed.mass_kg;
 }
 
 double FeedTookS(const Feed& feed, double inserted_at_s, double check_interval_s) {

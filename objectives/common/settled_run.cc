@@ -71,6 +71,7 @@ SettleResult RunUntilSettled(core::Simulation& sim, const SettleCriteria& criter
   };
   result.run = sim.Run(std::max(0.0, criteria.max_time_s - sim.time_s()), observer);
   result.settle_time_s = sim.time_s();
+  result.factory_warnings = sim.FactoryRateWarnings();
   if (!result.run.ok()) {
     result.status = core::TerminationName(result.run.termination);
     result.message = result.run.message;

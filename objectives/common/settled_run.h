@@ -10,6 +10,7 @@
 // in the status, never an exception.
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "core/simulation/simulation.h"
 
@@ -38,6 +39,8 @@ struct SettleResult {
   double specific_kinetic_J_kg = 0;
   std::string settled_by;       // "kinetic_energy" or "surface" when ok
   double surface_change_d = -1; // of the last full surface window (mean diameters; −1: none)
+  // Simulation::FactoryRateWarnings at the end: a feed that fell behind its nominal rate.
+  std::vector<std::string> factory_warnings;
   bool ok() const { return status == "ok"; }
 };
 

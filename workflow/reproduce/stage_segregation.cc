@@ -117,6 +117,7 @@ bool RunReplicate(const ReproduceContext& ctx, const Scenario& s, int r, int thr
   *metrics = ExtractSegregationMetrics(*segregation);
   (*metrics)["seed"] = seed;
   (*metrics)["exit_code"] = code;
+  (*metrics)["size_scale"] = context.fidelity.size_scale;  // the mixture angle's note
   (*metrics)["run"] = {{"host", objectives::farm::HostName()},
                        {"rank", objectives::farm::Rank()},
                        {"start_unix_s", start_unix_s},

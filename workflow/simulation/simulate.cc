@@ -194,6 +194,9 @@ int RunSimulate(const SimulateOptions& options, std::ostream& log) {
   };
   record.summary = sim.Run(static_cast<double>(steps_left) * sim.timestep_s(), observer);
   record.factories = sim.FactoryReports();
+  record.factory_warnings = sim.FactoryRateWarnings();
+  if (!options.quiet)
+    for (const std::string& warning : record.factory_warnings) log << "warning: " << warning << "\n";
   record.sinks = sim.SinkReports();
   for (const core::Species& species : sim.scene().species) record.species_names.push_back(species.name);
   {

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "outputs/html_report.h"
+#include "workflow/reproduce/segregation_metrics.h"
 #include "workflow/test_paths.h"
 
 using namespace demcal::workflow;
@@ -225,4 +226,35 @@ TEST_CASE("reproduce report: the Fig. 3 table with the calibrated aspect ratio p
   // The paper states no aspect ratio: the summary row is demcal's alone.
   CHECK(html.find("EP clump aspect ratio a/c (calibrated; the paper gives none)") !=
         std::string::npos);
+}
+
+TEST_CASE("reproduce report: a coarse heap's mixture angle carries its note once", "[unit]") {
+  const fs::path root = demcal::testing::RepoRoot();
+  WorkflowFile w;
+  std::string error;
+  REQUIRE(LoadWorkflowFile((root / "datasets/alizadeh2018/workflow.json").string(), &w, &error));
+  // Two heaps at size ×5, as the segregation stage summarises them.
+  const nlohmann::json scenario = {{"mixture_angle_deg", {{"mean", 48.2}, {"sem", 0.5}, {"n", 2}}},
+                                   {"size_scale", {{"mean", 5.0}, {"sem", 0.0}, {"n", 2}}}};
+  const nlohmann::json values =
+      SegregationSummaryValues({{"uncoated", scenario}, {"coated", scenario}}, "EP");
+  DemcalValues v;
+  for (const char* key : {"mixture_angle_uncoated_deg", "mixture_angle_coated_deg"}) {
+    const nlohmann::json& x = values[key];
+    v[key] = {.mean = x["mean"].get<double>(), .sem = x["sem"].get<double>(),
+              .note = x["note"].get<std::string>()};
+  }
+  const std::string note = v["mixture_angle_uncoated_deg"].note;
+  REQUIRE(note.find("not like for like") == 0);
+  const std::vector<SummaryRow> rows = BuildSummaryRows(w.reference, v);
+  const WrittenReport report = WriteStandInReport(w, StandInResults(), rows, {{"species", 60.0}},
+                                                  "demcal_reproduce_report_angle_note_test");
+  // Both mixture-angle rows point at one footnote with the measured figures and the document.
+  CHECK(Count(report.html, HtmlEscape(note)) == 1);
+  CHECK(Count(report.md, note) == 1);
+  CHECK(note.find("13.7 ± 0.4°") != std::string::npos);
+  CHECK(note.find("docs/experiments/segregation_angle.md") != std::string::npos);
+  // The rows are still compared with the paper (the verdict cell says by how much).
+  for (const SummaryRow& r : rows)
+    if (r.key == "mixture_angle_uncoated_deg") CHECK(r.kind == VerdictKind::kDiffers);
 }

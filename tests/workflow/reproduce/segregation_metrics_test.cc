@@ -74,3 +74,32 @@ TEST_CASE("a discharge time from a feed-limited funnel is reported but not compa
   CHECK(c["note"].get<std::string>().find("orifice-limited funnel in 100 % of the runs "
                                           "(steady outflow 0.014 kg/s)") == 0);
 }
+
+TEST_CASE("a coarse heap's mixture angle says it is no like-for-like comparison", "[unit]") {
+  auto scenario = [](double size_scale) {
+    std::vector<json> runs;
+    for (double angle : {48.0, 48.4}) {
+      SegregationResult r = Result(1.0, 1.5);
+      r.mixture_angle_deg = objectives::Summarise({angle});
+      json m = ExtractSegregationMetrics(r);
+      if (size_scale > 0) m["size_scale"] = size_scale;  // as the reproduce stage records it
+      runs.push_back(m);
+    }
+    return SummariseSegregationRuns(runs);
+  };
+  auto note = [&](double size_scale) {
+    const json values = SegregationSummaryValues({{"uncoated", scenario(size_scale)}}, "EP");
+    CHECK(values["mixture_angle_uncoated_deg"]["mean"].get<double>() == Approx(48.2));
+    CHECK_FALSE(values["mixture_angle_uncoated_deg"].contains("comparable"));  // still compared
+    return values["mixture_angle_uncoated_deg"]["note"].get<std::string>();
+  };
+  for (double coarse : {4.0, 5.0}) {
+    const std::string text = note(coarse);
+    CHECK(text.find("not like for like with the paper's measured angle") == 0);
+    CHECK(text.find(coarse == 4.0 ? "size ×4 " : "size ×5 ") != std::string::npos);
+    CHECK(text.find("34.6 ± 0.9° frictionless") != std::string::npos);
+    CHECK(text.find("docs/experiments/segregation_angle.md") != std::string::npos);
+  }
+  CHECK(note(3.0).empty());  // the side walls' share was not separated at ×3
+  CHECK(note(0).empty());    // runs that did not record their size scale
+}
