@@ -30,7 +30,9 @@ Json ResidualTable(const std::vector<Observation>& obs) {
                     {"sem", Number(o.sem)},
                     {"floor", Number(o.floor)},
                     {"sigma", Number(o.Sigma())},
-                    {"standardised_residual", Number(o.Residual())}});
+                    {"standardised_residual", Number(o.Residual())},
+                    // rows with one source share its simulation error (Chi2NoiseSd)
+                    {"simulated_source", o.source >= 0 ? Json(o.source) : Json(nullptr)}});
   return rows;
 }
 

@@ -46,8 +46,14 @@ TEST_CASE("diagnosis outputs carry the sign, the floor, the base and the tie", "
   ScratchDir dir("diagnosis_outputs");
   testing::AnalyticForwardModel model;
   std::vector<Observation> obs = testing::MakeObservations(&model, 0.5, {{1, -0.2}}, 1);
-  const Diagnosis signed_effect = Diagnose(model, obs, testing::Candidates(), DiagnoseOptions{});
+  Diagnosis signed_effect = Diagnose(model, obs, testing::Candidates(), DiagnoseOptions{});
+  REQUIRE(signed_effect.before.size() >= 3);
+  signed_effect.before[0].source = signed_effect.before[2].source = 7;  // one simulated scene
+  signed_effect.before[1].source = -1;
   nlohmann::json j = Written(dir, "signed", testing::Candidates(), signed_effect);
+  CHECK(j["residuals_before"][0]["simulated_source"] == 7);
+  CHECK(j["residuals_before"][1]["simulated_source"].is_null());
+  CHECK(j["residuals_before"][2]["simulated_source"] == 7);
   CHECK(j["termination"] == "effect_found");
   CHECK(j["named_effects_signed"][0]["direction"] == "less rolling resistance than assumed");
   CHECK(j["named_effects_signed"][0]["value"].get<double>() < 0);
