@@ -63,11 +63,11 @@ void SweepChunks::SplitRows(const NeighbourList& list, const std::vector<double>
   }
   share_ = shares;
   CollectCrossPairs(list);
-  if (!claim_ || restart_timing || time_s_.size() != count) {
+  if (time_s_.size() != count) {  // a new chunk count: new claims and timing
     claim_ = std::make_unique<std::atomic<uint8_t>[]>(count);
-    time_s_.assign(count, 0.0);
-    passes_ = 0;
+    restart_timing = true;
   }
+  if (restart_timing) time_s_.assign(count, 0.0), passes_ = 0;
 }
 
 void SweepChunks::CollectCrossPairs(const NeighbourList& list) {
