@@ -2,7 +2,10 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
+#include <algorithm>
+#include <functional>
 #include <numbers>
 
 namespace demcal::core {
@@ -52,6 +55,16 @@ void Particles::Permute(const std::vector<uint32_t>& order) {
   ApplyOrder(material, order);
   ApplyOrder(body, order);
   ApplyOrder(id, order);
+}
+
+size_t Particles::CountMoving(size_t first, size_t last) const {
+  return tbb::parallel_reduce(
+      tbb::blocked_range<size_t>(first, std::max(first, last), 4096), size_t{0},
+      [&](const auto& range, size_t moving) {
+        for (size_t i = range.begin(); i != range.end(); ++i) moving += !IsFixed(i);
+        return moving;
+      },
+      std::plus<size_t>());
 }
 
 double Particles::FreeKineticEnergy(size_t i) const {

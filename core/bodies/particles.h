@@ -29,6 +29,8 @@ struct Particles {
   size_t Size() const { return position_m.size(); }
   // A glued sphere (Fix): no inverse mass and not a clump member (members have none either).
   bool IsFixed(size_t i) const { return inv_mass[i] == 0 && body[i] < 0; }
+  // How many of slots [first, last) are not fixed (in parallel: a rebuild asks every time).
+  size_t CountMoving(size_t first, size_t last) const;
 
   template <class A>
   void Serialize(A& a) {

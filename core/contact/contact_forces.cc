@@ -11,6 +11,7 @@
 #include <numeric>
 
 #include "core/contact/contact_kernel.h"
+#include "core/math/parallel_passes.h"
 
 namespace demcal::core {
 namespace {
@@ -299,7 +300,7 @@ void ContactForces::RemapPairs(const NeighbourList& old_list, const NeighbourLis
   // Without a permutation, or with an order-keeping one (a sink's removal compacts the slots),
   // old row order[i] holds i's old partners in the same ascending order as the new row: one
   // merge pass per row instead of a binary search per entry.
-  const bool keeps_order = std::is_sorted(order.begin(), order.end());
+  const bool keeps_order = IsAscending(order);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& range) {
     for (size_t i = range.begin(); i != range.end(); ++i) {
       if (keeps_order) MergeRow(old_list, new_list, order, i, history, active);

@@ -17,6 +17,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "core/math/parallel_passes.h"
+
 namespace demcal::core {
 
 template <class Key>
@@ -30,7 +32,7 @@ void BucketIndex(const std::vector<Key>& keys, size_t buckets, std::vector<uint3
   start.assign(buckets + 1, 0);
   if (tbb::this_task_arena::max_concurrency() <= 1) {
     for (size_t k = 0; k < m; ++k) start[keys[k] + 1] += kept(k);
-    for (size_t b = 0; b < buckets; ++b) start[b + 1] += start[b];
+    InclusivePrefixSum(start);
     items.resize(start[buckets]);
     std::vector<uint32_t> fill(start.begin(), start.end() - 1);
     for (size_t k = 0; k < m; ++k)
@@ -42,9 +44,10 @@ void BucketIndex(const std::vector<Key>& keys, size_t buckets, std::vector<uint3
       if (kept(k))
         std::atomic_ref<uint32_t>(start[keys[k] + 1]).fetch_add(1, std::memory_order_relaxed);
   });
-  for (size_t b = 0; b < buckets; ++b) start[b + 1] += start[b];
+  InclusivePrefixSum(start);
   items.resize(start[buckets]);
-  std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+  std::vector<uint32_t> fill;
+  CopyOf(start, fill);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, m), [&](const auto& range) {
     for (size_t k = range.begin(); k != range.end(); ++k)
       if (kept(k))

@@ -1,5 +1,6 @@
 #include "core/neighbours/neighbour_list.h"
 
+#include "core/math/parallel_passes.h"
 #include "core/neighbours/bucket_index.h"
 #include "core/neighbours/neighbour_list_search.h"
 
@@ -108,10 +109,9 @@ bool NeighbourList::SearchOnce(const Grid& grid, const Settings& s, const std::v
       },
       [](bool a, bool b) { return a && b; });
   if (!fits) return false;
-  uint32_t longest = 0;
-  for (size_t i = 0; i < first_fixed_; ++i) longest = std::max(longest, row_start_[i + 1]);
+  const uint32_t longest = MaxOf(row_start_, 1, size_t{first_fixed_} + 1);
   if (longest + 8 < cap / 4) row_capacity_ = longest + longest / 2 + 8;  // shrink after a dense phase
-  for (size_t i = 0; i < n; ++i) row_start_[i + 1] += row_start_[i];
+  InclusivePrefixSum(row_start_);
   partner_.resize(row_start_[n]);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, first_fixed_), [&](const auto& range) {
     for (size_t i = range.begin(); i != range.end(); ++i)
@@ -141,10 +141,9 @@ void NeighbourList::Build(const Settings& s, const std::vector<Vec3>& x,
         row_start_[i + 1] = count;
       }
     });
-    uint32_t longest = 0;
-    for (size_t i = 0; i < n; ++i) longest = std::max(longest, row_start_[i + 1]);
+    const uint32_t longest = MaxOf(row_start_, 1, n + 1);
     row_capacity_ = longest + longest / 2 + 8;  // the next build searches once
-    for (size_t i = 0; i < n; ++i) row_start_[i + 1] += row_start_[i];
+    InclusivePrefixSum(row_start_);
     partner_.resize(row_start_[n]);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, first_fixed_), [&](const auto& range) {
       for (size_t i = range.begin(); i != range.end(); ++i) {
@@ -155,7 +154,7 @@ void NeighbourList::Build(const Settings& s, const std::vector<Vec3>& x,
     });
   }
 
-  reference_position_ = x;
+  CopyOf(x, reference_position_);
   Finish(s);
 }
 

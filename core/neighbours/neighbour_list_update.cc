@@ -14,7 +14,9 @@
 #include <tbb/parallel_reduce.h>
 
 #include <algorithm>
+#include <functional>
 
+#include "core/math/parallel_passes.h"
 #include "core/neighbours/neighbour_list.h"
 #include "core/neighbours/neighbour_list_search.h"
 
@@ -40,21 +42,27 @@ void NeighbourList::Update(const Settings& s, const std::vector<Vec3>& x,
   const double refresh2 = refresh_fraction * refresh_fraction * s.skin_m * s.skin_m;
   const std::vector<Vec3>& old_p = previous.reference_position_;
   is_mover_.assign(n, 0);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, fixed_from), [&](const auto& range) {
-    for (size_t i = range.begin(); i != range.end(); ++i)
-      is_mover_[i] = Norm2(periodic_.MinimumImage(x[i] - old_p[i])) > refresh2;
-  });
-  movers_.clear();
-  for (uint32_t i = 0; i < fixed_from; ++i)
-    if (is_mover_[i]) movers_.push_back(i);
-  if (2 * movers_.size() > fixed_from) {  // most of the bed moved: a full build is cheaper
+  const size_t mover_count = tbb::parallel_reduce(
+      tbb::blocked_range<size_t>(0, fixed_from), size_t{0},
+      [&](const auto& range, size_t movers) {
+        for (size_t i = range.begin(); i != range.end(); ++i) {
+          is_mover_[i] = Norm2(periodic_.MinimumImage(x[i] - old_p[i])) > refresh2;
+          movers += is_mover_[i];
+        }
+        return movers;
+      },
+      std::plus<size_t>());
+  if (2 * mover_count > fixed_from) {  // most of the bed moved: a full build is cheaper
     Build(s, x, r, body, first_fixed);
     return;
   }
+  movers_.clear();
+  for (uint32_t i = 0; i < fixed_from; ++i)
+    if (is_mover_[i]) movers_.push_back(i);
   last_movers_ = movers_.size();
 
   // New references for the movers; the grid spans them (others binned within a cut-off).
-  reference_position_ = old_p;
+  CopyOf(old_p, reference_position_);
   Vec3 lo = s.domain_max_m, hi = s.domain_min_m;
   for (uint32_t m : movers_) {
     reference_position_[m] = x[m];
@@ -100,7 +108,7 @@ void NeighbourList::Update(const Settings& s, const std::vector<Vec3>& x,
       const uint32_t j = found_[t * cap + k];
       if (j < movers_[t] && !is_mover_[j]) ++incoming_start_[j + 1];
     }
-  for (size_t i = 0; i < n; ++i) incoming_start_[i + 1] += incoming_start_[i];
+  InclusivePrefixSum(incoming_start_);
   incoming_.resize(incoming_start_[n]);
   {
     std::vector<uint32_t> fill(incoming_start_.begin(), incoming_start_.end() - 1);
@@ -134,7 +142,7 @@ void NeighbourList::Update(const Settings& s, const std::vector<Vec3>& x,
       row_start_[i + 1] = kept + incoming_start_[i + 1] - incoming_start_[i];
     }
   });
-  for (size_t i = 0; i < n; ++i) row_start_[i + 1] += row_start_[i];
+  InclusivePrefixSum(row_start_);
   partner_.resize(row_start_[n]);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, fixed_from), [&](const auto& range) {
     for (size_t i = range.begin(); i != range.end(); ++i) {

@@ -209,13 +209,13 @@ void Simulation::RebuildNeighbours(bool allow_reorder, const std::vector<uint32_
   bool fixed_last = true;  // every fixed sphere after every moving one
   std::vector<uint8_t> swept;  // per slot, for a re-sort: whether the force sweep visits it
   if (options_.exclude_fixed_pairs) {
-    moving = 0;
-    if (reorder) swept.resize(n);
-    for (size_t i = 0; i < n; ++i) {
-      const bool fixed = p.IsFixed(i);
-      fixed_last = fixed_last && (fixed || moving == i);
-      moving += !fixed;
-      if (reorder) swept[i] = !fixed;
+    moving = p.CountMoving(0, n);
+    fixed_last = p.CountMoving(0, moving) == moving;
+    if (reorder) {
+      swept.resize(n);
+      tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& range) {
+        for (size_t i = range.begin(); i != range.end(); ++i) swept[i] = !p.IsFixed(i);
+      });
     }
   }
   if (reorder || !fixed_last) {

@@ -1,5 +1,8 @@
 #include "core/walls/wall_contacts.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <numeric>
 
@@ -39,32 +42,70 @@ void WallContacts::Rebuild(const Particles& p, const std::vector<Vec3>& previous
   const size_t moving = std::min(n, first_fixed);
   const size_t old_n = start_.size() - 1;  // particles appended since keep no history
   const double half_skin2 = 0.25 * skin_m * skin_m;
-  Rows& to = spare_;
-  to.Clear(n);
-  for (size_t i = 0; i < moving; ++i) {
-    const size_t o = order.empty() ? i : order[i];
-    const bool known = o < old_n;
-    // A particle whose neighbour-list reference stayed put was not re-searched: its row was
-    // listed at that reference and still holds (the plain displacement test catches a periodic
-    // wrap, which the list's minimum-image test does not see).
-    if (known && o < previous_reference.size() && i < reference.size() &&
-        previous_reference[o] == reference[i] &&
-        Norm2(p.position_m[i] - reference[i]) <= half_skin2)
-      KeepRow(o, walls, to);
-    else
-      ListRow(p, i, known ? o : kNoOldSlot, walls, skin_m, adhesive_gap_m, to);
-    to.start[i + 1] = static_cast<uint32_t>(to.index.size());
-  }
-  std::fill(to.start.begin() + moving + 1, to.start.end(), static_cast<uint32_t>(to.index.size()));
-  start_.swap(to.start);
-  index_.swap(to.index);
-  history_.swap(to.history);
-  active_.swap(to.active);
-  mesh_slots_.swap(to.mesh_slots);
-  mesh_history_.swap(to.mesh_history);
-  mesh_near_start_.swap(to.near_start);
-  mesh_near_.swap(to.near);
+  const size_t blocks = (moving + kRebuildBlock - 1) / kRebuildBlock;
+  if (blocks_.size() < blocks) blocks_.resize(blocks);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, blocks), [&](const auto& range) {
+    for (size_t b = range.begin(); b != range.end(); ++b) {
+      Block& block = blocks_[b];
+      const size_t first = b * kRebuildBlock, last = std::min(moving, first + kRebuildBlock);
+      block.rows.Clear(last - first);
+      for (size_t i = first; i < last; ++i) {
+        const size_t o = order.empty() ? i : order[i];
+        const bool known = o < old_n;
+        // A particle whose neighbour-list reference stayed put was not re-searched: its row was
+        // listed at that reference and still holds (the plain displacement test catches a
+        // periodic wrap, which the list's minimum-image test does not see).
+        if (known && o < previous_reference.size() && i < reference.size() &&
+            previous_reference[o] == reference[i] &&
+            Norm2(p.position_m[i] - reference[i]) <= half_skin2)
+          KeepRow(o, walls, block.rows);
+        else
+          ListRow(p, i, known ? o : kNoOldSlot, walls, skin_m, adhesive_gap_m, block);
+        block.rows.start[i - first + 1] = static_cast<uint32_t>(block.rows.index.size());
+      }
+    }
+  });
+  JoinBlocks(blocks, moving, n);
   load_.resize(index_.size());
+}
+
+void WallContacts::JoinBlocks(size_t blocks, size_t moving, size_t n) {
+  // Where each block's candidates, mesh candidates and near triangles start in the arrays.
+  std::vector<size_t> entry(blocks + 1, 0), mesh(blocks + 1, 0), near(blocks + 1, 0);
+  for (size_t b = 0; b < blocks; ++b) {
+    const Rows& r = blocks_[b].rows;
+    entry[b + 1] = entry[b] + r.index.size();
+    mesh[b + 1] = mesh[b] + r.mesh_history.size();
+    near[b + 1] = near[b] + r.near.size();
+  }
+  start_.resize(n + 1);
+  start_[0] = 0;
+  index_.resize(entry[blocks]), history_.resize(entry[blocks]), active_.resize(entry[blocks]);
+  mesh_slots_.resize(entry[blocks]);
+  mesh_history_.resize(mesh[blocks]);
+  mesh_near_start_.resize(mesh[blocks] + 1);
+  mesh_near_start_[0] = 0;
+  mesh_near_.resize(near[blocks]);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, blocks), [&](const auto& range) {
+    for (size_t b = range.begin(); b != range.end(); ++b) {
+      const Rows& r = blocks_[b].rows;
+      const size_t first = b * kRebuildBlock, e0 = entry[b];
+      for (size_t k = 1; k < r.start.size(); ++k)
+        start_[first + k] = static_cast<uint32_t>(e0 + r.start[k]);
+      std::copy(r.index.begin(), r.index.end(), index_.begin() + e0);
+      std::copy(r.history.begin(), r.history.end(), history_.begin() + e0);
+      std::copy(r.active.begin(), r.active.end(), active_.begin() + e0);
+      for (size_t k = 0; k < r.mesh_slots.size(); ++k)
+        mesh_slots_[e0 + k] = r.mesh_slots[k] == kNoMesh
+                                  ? kNoMesh
+                                  : static_cast<uint32_t>(mesh[b] + r.mesh_slots[k]);
+      std::copy(r.mesh_history.begin(), r.mesh_history.end(), mesh_history_.begin() + mesh[b]);
+      for (size_t k = 1; k < r.near_start.size(); ++k)
+        mesh_near_start_[mesh[b] + k] = static_cast<uint32_t>(near[b] + r.near_start[k]);
+      std::copy(r.near.begin(), r.near.end(), mesh_near_.begin() + near[b]);
+    }
+  });
+  std::fill(start_.begin() + moving + 1, start_.end(), static_cast<uint32_t>(entry[blocks]));
 }
 
 void WallContacts::Rows::Clear(size_t particles) {
@@ -95,13 +136,15 @@ void WallContacts::KeepRow(size_t o, const std::vector<Wall>& walls, Rows& to) c
 }
 
 void WallContacts::ListRow(const Particles& p, size_t i, size_t o, const std::vector<Wall>& walls,
-                           double skin_m, double adhesive_gap_m, Rows& to) {
+                           double skin_m, double adhesive_gap_m, Block& block) const {
+  Rows& to = block.rows;
+  std::vector<int32_t>& triangles = block.triangles;
   for (uint32_t w = 0; w < walls.size(); ++w) {
     const Wall& wall = walls[w];
     if (wall.removed) continue;
-    triangles_.clear();  // a moving mesh keeps no near triangles (WithinSkin is not asked)
+    triangles.clear();  // a moving mesh keeps no near triangles (WithinSkin is not asked)
     if (!wall.Moves() &&
-        !WithinSkin(wall, p.position_m[i], p.radius_m[i], skin_m, adhesive_gap_m, triangles_))
+        !WithinSkin(wall, p.position_m[i], p.radius_m[i], skin_m, adhesive_gap_m, triangles))
       continue;
     const bool is_mesh = std::holds_alternative<MeshRef>(wall.shape);
     ContactHistory h{};
@@ -121,7 +164,7 @@ void WallContacts::ListRow(const Particles& p, size_t i, size_t o, const std::ve
     to.mesh_slots.push_back(is_mesh ? static_cast<uint32_t>(to.mesh_history.size()) : kNoMesh);
     if (is_mesh) {
       to.mesh_history.push_back(m);
-      to.near.insert(to.near.end(), triangles_.begin(), triangles_.end());
+      to.near.insert(to.near.end(), triangles.begin(), triangles.end());
       to.near_start.push_back(static_cast<uint32_t>(to.near.size()));
     }
   }

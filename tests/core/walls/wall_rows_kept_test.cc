@@ -10,6 +10,8 @@
 #include <type_traits>
 #include <vector>
 
+#include <tbb/task_arena.h>
+
 #include "core/walls/wall_contacts.h"
 #include "tests/core/walls/wall_test_support.h"
 
@@ -84,19 +86,30 @@ WallContacts Fresh(const Particles& p, const std::vector<Wall>& walls, double sk
   return contacts;
 }
 
+// Seeded uniform draws over the walls' region (Walls()).
+struct Draw {
+  std::mt19937_64 rng;
+  std::uniform_real_distribution<double> u{0, 1};
+  explicit Draw(unsigned seed) : rng(seed) {}
+  double U() { return u(rng); }
+  Vec3 Point() { return {-0.019 + 0.038 * U(), -0.019 + 0.038 * U(), 0.012 * U()}; }
+};
+
+// `count` spheres of one radius at drawn points.
+Particles Spheres(int count, double radius, Draw& draw) {
+  Particles p;
+  for (int k = 0; k < count; ++k) p.Add(k, 0, 0, radius, 2500, draw.Point(), {}, {});
+  return p;
+}
+
 }  // namespace
 
 TEST_CASE("a kept wall row covers what its particle can reach; a moved one is re-listed",
           "[unit][geometry]") {
   const double radius = 0.001, skin = 0.0005;
   const std::vector<Wall> walls = Walls();
-  std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> u(0, 1);
-  auto random_point = [&] {
-    return Vec3{-0.019 + 0.038 * u(rng), -0.019 + 0.038 * u(rng), 0.012 * u(rng)};
-  };
-  Particles p;
-  for (int k = 0; k < 400; ++k) p.Add(k, 0, 0, radius, 2500, random_point(), {}, {});
+  Draw draw(11);
+  Particles p = Spheres(400, radius, draw);
   const std::vector<Vec3> before = p.position_m;
   WallContacts contacts;
   contacts.Rebuild(p, {}, before, {}, walls, skin);
@@ -109,10 +122,10 @@ TEST_CASE("a kept wall row covers what its particle can reach; a moved one is re
   for (size_t i = 0; i < p.Size(); ++i) {
     kept[i] = i % 2 == 0;
     if (kept[i]) {
-      const Vec3 d{u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5};
-      p.position_m[i] = before[i] + (0.5 * skin * u(rng)) * d / Norm(d);
+      const Vec3 d{draw.U() - 0.5, draw.U() - 0.5, draw.U() - 0.5};
+      p.position_m[i] = before[i] + (0.5 * skin * draw.U()) * d / Norm(d);
     } else {
-      p.position_m[i] = reference[i] = random_point();
+      p.position_m[i] = reference[i] = draw.Point();
     }
   }
   contacts.Rebuild(p, before, reference, {}, walls, skin);
@@ -151,4 +164,61 @@ TEST_CASE("a kept wall row covers what its particle can reach; a moved one is re
     expected.erase(kBox);
     CHECK(after_removal[i] == expected);
   }
+}
+
+namespace {
+// Every stored array of `contacts`, byte for byte (through its Serialize archive interface).
+struct ByteArchive {
+  std::vector<unsigned char> bytes;
+  template <class T>
+  void Vector(std::vector<T>& v) {
+    const auto* b = reinterpret_cast<const unsigned char*>(v.data());
+    bytes.insert(bytes.end(), b, b + v.size() * sizeof(T));
+    bytes.push_back(0xFF);  // a boundary, so that bytes moved between arrays differ
+  }
+};
+std::vector<unsigned char> Bytes(WallContacts contacts) {
+  ByteArchive a;
+  contacts.Serialize(a);
+  return a.bytes;
+}
+}  // namespace
+
+TEST_CASE("wall rows listed in blocks on several threads are the one-thread rows",
+          "[unit][geometry][determinism]") {
+  // 5,000 particles: three blocks of rows (WallContacts::kRebuildBlock is 2,048), so rows,
+  // mesh slots and near triangles are joined across block boundaries.
+  const double radius = 0.001, skin = 0.0005;
+  const std::vector<Wall> walls = Walls();
+  Draw draw(7);
+  Particles p = Spheres(5000, radius, draw);
+  const std::vector<Vec3> before = p.position_m;
+  std::vector<Vec3> reference = before;
+  for (size_t i = 1; i < p.Size(); i += 2) p.position_m[i] = reference[i] = draw.Point();
+
+  auto listed_with = [&](int threads) {
+    tbb::task_arena arena(threads);
+    return arena.execute([&] {
+      WallContacts contacts;
+      contacts.Rebuild(p, {}, before, {}, walls, skin);  // the first listing
+      contacts.Rebuild(p, before, reference, {}, walls, skin);  // half kept, half re-listed
+      return contacts;
+    });
+  };
+  const WallContacts one = listed_with(1);
+  CHECK(Bytes(one) == Bytes(listed_with(4)));
+  CHECK(Bytes(one) == Bytes(listed_with(3)));
+
+  // In every block, a re-listed row is what the particle alone, listed fresh, gets (one block:
+  // no join involved).
+  const std::vector<Row> rows = Rows(one);
+  size_t meshes_in_last_block = 0;
+  for (size_t i = 1; i < p.Size(); i += 2) {
+    INFO("particle " << i);
+    Particles alone;
+    alone.Add(0, 0, 0, radius, 2500, p.position_m[i], {}, {});
+    CHECK(rows[i] == Rows(Fresh(alone, walls, skin))[0]);
+    meshes_in_last_block += i >= 4096 && rows[i].count(kBox);
+  }
+  CHECK(meshes_in_last_block > 10);  // mesh slots and triangles offset past two blocks
 }
