@@ -35,6 +35,14 @@ Scene OverfedSlot() {
                                0.0025);
 }
 
+// Starts `sim` and runs it half a batch past its first: the carry holds draws.
+void RunPastFirstBatch(Simulation& sim) {
+  std::string err;
+  REQUIRE(sim.Initialize(&err));
+  REQUIRE(sim.Run(1.5 * sim.factories()[0].batch_interval_s()).ok());
+  REQUIRE_FALSE(sim.factories()[0].carried().empty());
+}
+
 std::string FileOf(const Simulation& sim, const std::string& path) {
   std::string err;
   REQUIRE(sim.SaveCheckpoint(path, &err));
@@ -59,12 +67,10 @@ TEST_CASE("a restart with a clump factory's carried draws pending continues bit-
   const std::string path = TempPath("restart");
   const Scene s = OverfedSlot();
   REQUIRE(!s.species.empty());
-  std::string err;
   Simulation reference(s, {.threads = 2});
-  REQUIRE(reference.Initialize(&err));
-  REQUIRE(reference.Run(1.5 * reference.factories()[0].batch_interval_s()).ok());
+  RunPastFirstBatch(reference);
   const std::vector<CarriedDraw> pending = reference.factories()[0].carried();
-  REQUIRE_FALSE(pending.empty());
+  std::string err;
   REQUIRE(reference.SaveCheckpoint(path, &err));
   REQUIRE(reference.Run(0.15).ok());
 
@@ -82,12 +88,9 @@ TEST_CASE("a restart with a clump factory's carried draws pending continues bit-
 TEST_CASE("damaged carried draws in a checkpoint are refused", "[unit][checkpoint]") {
   const Scene s = OverfedSlot();
   REQUIRE(!s.species.empty());
-  std::string err;
   Simulation sim(s, {.threads = 1});
-  REQUIRE(sim.Initialize(&err));
-  REQUIRE(sim.Run(1.5 * sim.factories()[0].batch_interval_s()).ok());
+  RunPastFirstBatch(sim);
   const size_t n = sim.factories()[0].carried().size();
-  REQUIRE(n > 0);
   const std::string payload = FileOf(sim, TempPath("damaged")).substr(kCheckpointHeaderBytes);
   CHECK(Load(s, payload).empty());
   // The payload ends with the carry (count, then 16 bytes per draw: mixture index, diameter)

@@ -35,6 +35,13 @@ void CheckPlacedSizes(const Simulation& sim) {
   CHECK(std::abs(kg / n / unit - MeanD3()) < 4 * SdD3() / std::sqrt(n));
 }
 
+void RequireInitialized(Simulation& sim) {
+  std::string error;
+  const bool ok = sim.Initialize(&error);
+  INFO(error);
+  REQUIRE(ok);
+}
+
 }  // namespace
 
 TEST_CASE("a full clump batch's draws are placed later: the stream keeps its sizes and its mass",
@@ -49,10 +56,7 @@ TEST_CASE("a full clump batch's draws are placed later: the stream keeps its siz
   const Scene scene = clump_pour::ClumpPour(slot, rate, total);
   REQUIRE(!scene.species.empty());
   Simulation sim(scene, {.threads = 1});
-  std::string error;
-  const bool ok = sim.Initialize(&error);
-  INFO(error);
-  REQUIRE(ok);
+  RequireInitialized(sim);
   const double batch_s = sim.factories()[0].batch_interval_s();
   const double batch_kg = rate * batch_s;
   const double body_kg = sim.system().shapes[0].mass_kg * kDensity * std::pow(kDMax, 3);
@@ -101,10 +105,7 @@ TEST_CASE("a clump factory held up for a batch catches up to its rate with the c
   s.pair_parameters.assign(4, PairParameters{});
   s.fills = {FillSpec(1, region, 300)};
   Simulation sim(s, {.threads = 1});
-  std::string error;
-  const bool ok = sim.Initialize(&error);
-  INFO(error);
-  REQUIRE(ok);
+  RequireInitialized(sim);
   const double batch_s = sim.factories()[0].batch_interval_s();
   const double batch_kg = rate * batch_s;
   for (int k = 0; k < 5; ++k) {
