@@ -111,5 +111,9 @@ TEST_CASE("a factory whose region cannot hold its rate warns with achieved and n
   const std::vector<std::string> warnings = sim.FactoryRateWarnings();
   REQUIRE(warnings.size() == 1);
   CHECK_THAT(warnings[0], Catch::Contains("factory 'feed' fell behind its nominal rate") &&
-                              Catch::Contains("kg/s against a nominal"));
+                              Catch::Contains("kg/s against a nominal") &&
+                              Catch::Contains("draw(s) wait for room"));
+  // The carry stays bounded however far behind the factory falls: two batches plus one body.
+  const double body_kg = sim.system().shapes[0].mass_kg * 780 * 0.0025 * 0.0025 * 0.0025;
+  CHECK(sim.factories()[0].CarriedMassKg(sim.system()) <= 2 * rate * batch_s + body_kg);
 }
