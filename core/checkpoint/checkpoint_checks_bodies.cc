@@ -173,14 +173,15 @@ bool Simulation::CheckRestoredProgress(std::string* error) const {
   }
   for (size_t f = 0; f < factories_.size(); ++f) {
     std::string why;
-    if (!factories_[f].CheckRestored(time_s_, &why))
+    if (!factories_[f].CheckRestored(time_s_, system_, &why))
       return Fail("factories[" + std::to_string(f) + "] '" + factories_[f].spec().name + "': " + why,
                   error);
   }
   return true;
 }
 
-bool ParticleFactory::CheckRestored(double time_s, std::string* error) const {
+bool ParticleFactory::CheckRestored(double time_s, const ParticleSystem& system,
+                                    std::string* error) const {
   const FactoryReport& r = report_;
   if (!(std::isfinite(r.inserted_mass_kg) && std::isfinite(r.requested_mass_kg) &&
         std::isfinite(r.active_time_s) && std::isfinite(owed_kg_) && r.particles >= 0 &&
@@ -204,6 +205,31 @@ bool ParticleFactory::CheckRestored(double time_s, std::string* error) const {
     std::ostringstream os;
     os << "next batch time " << next_batch_s_ << " s outside [" << spec_.start_s << ", " << latest
        << "] s";
+    return Fail(os.str(), error);
+  }
+  // Carried draws: species of the mixture, sizes of its distribution (a damaged index would read
+  // past the mixture), and no more than the batches drew: drawing stops once what is carried
+  // and new reaches what is owed, so the carry weighs at most the owed mass plus one body.
+  double heaviest_kg = 0;
+  for (const SpeciesDraw& m : mixture_)
+    heaviest_kg = std::max(heaviest_kg, DrawMassKg(system, m, m.size->MaxDiameter()));
+  for (size_t k = 0; k < carried_.size(); ++k) {
+    const CarriedDraw& c = carried_[k];
+    const bool species_ok = c.mixture_index >= 0 && c.mixture_index < std::ssize(mixture_);
+    const SizeDistribution* size = species_ok ? mixture_[c.mixture_index].size : nullptr;
+    if (!species_ok || !(c.diameter_m >= size->MinDiameter() * (1 - 1e-12) &&
+                         c.diameter_m <= size->MaxDiameter() * (1 + 1e-12))) {
+      std::ostringstream os;
+      os << "carried draw " << k << ": mixture index " << c.mixture_index << " (of "
+         << mixture_.size() << ") or diameter " << c.diameter_m << " m not of its species";
+      return Fail(os.str(), error);
+    }
+  }
+  const double carried_kg = CarriedMassKg(system);
+  if (carried_kg > (std::max(owed_kg_, 0.0) + heaviest_kg) * (1 + 1e-9)) {
+    std::ostringstream os;
+    os << carried_.size() << " carried draws weigh " << carried_kg << " kg, more than the "
+       << owed_kg_ << " kg owed plus one body (" << heaviest_kg << " kg)";
     return Fail(os.str(), error);
   }
   return true;

@@ -52,7 +52,9 @@ bool CheckHeader(const std::string& header, uint64_t file_size, uint64_t* payloa
   const uint32_t version = Load<uint32_t>(header, 8);
   if (version != kCheckpointFormatVersion)
     return Fail("format version " + std::to_string(version) + "; this build reads version " +
-                    std::to_string(kCheckpointFormatVersion),
+                    std::to_string(kCheckpointFormatVersion) +
+                    " (written by another demcal build: resume it with that build, or rerun "
+                    "from the scene)",
                 error);
   *payload_size = Load<uint64_t>(header, 16);
   const uint64_t have = file_size - kCheckpointHeaderBytes;

@@ -21,7 +21,7 @@
 
 namespace demcal::core {
 
-inline constexpr uint32_t kCheckpointFormatVersion = 7;
+inline constexpr uint32_t kCheckpointFormatVersion = 8;
 inline constexpr size_t kCheckpointHeaderBytes = 32;
 
 // The whole file for `payload`.

@@ -52,8 +52,13 @@ int64_t ParticleFactory::Update(double t, ParticleSystem& system) {
     }
     q.mixture = mixture_;
     q.max_mass_kg = owed_kg_;
+    if (HasClump(system)) {
+      q.max_mass_kg = std::min(owed_kg_, 2 * spec_.mass_rate_kg_s * interval_);
+      q.carried = std::move(carried_);
+    }
     q.velocity_m_s = spec_.velocity_m_s;
-    const InsertionResult r = InsertRandomNonOverlapping(q, rng_, system);
+    InsertionResult r = InsertRandomNonOverlapping(q, rng_, system);
+    carried_ = std::move(r.unplaced);
     owed_kg_ -= r.mass_kg;  // may go slightly negative: the last particle overshoots
     report_.inserted_mass_kg += r.mass_kg;
     report_.particles += r.count;
@@ -62,6 +67,18 @@ int64_t ParticleFactory::Update(double t, ParticleSystem& system) {
     next_batch_s_ += interval_;
   }
   return added;
+}
+
+bool ParticleFactory::HasClump(const ParticleSystem& system) const {
+  for (const SpeciesDraw& d : mixture_)
+    if (system.IsClump(d.species)) return true;
+  return false;
+}
+
+double ParticleFactory::CarriedMassKg(const ParticleSystem& system) const {
+  double kg = 0;
+  for (const CarriedDraw& c : carried_) kg += DrawMassKg(system, mixture_[c.mixture_index], c.diameter_m);
+  return kg;
 }
 
 std::string ParticleFactory::RateWarning() const {
@@ -74,7 +91,9 @@ std::string ParticleFactory::RateWarning() const {
      << report_.AchievedRate() << " kg/s against a nominal " << nominal << " kg/s; "
      << report_.full_batches
      << " batch(es) found the region full (it cannot hold a batch's particles at random "
-        "positions): enlarge the region, raise the entry speed (velocity_m_s) or lower the rate";
+        "positions";
+  if (!carried_.empty()) os << "; " << carried_.size() << " draw(s) wait for room";
+  os << "): enlarge the region, raise the entry speed (velocity_m_s) or lower the rate";
   return os.str();
 }
 

@@ -3,7 +3,12 @@
 // fractions, into a region at a target mass rate (kg/s), in batches, at random non-overlapping
 // positions with a given initial velocity. Deterministic from its seed. The shortfall of a
 // batch (region momentarily full) is carried to the next one, and the factory reports the
-// requested and the achieved rate. A factory more than one batch behind its nominal rate
+// requested and the achieved rate. A clump feed carries the draws themselves: those a full batch
+// could not place join the next batch (InsertRandomNonOverlapping places them with its new
+// draws, largest first), so the placed stream is the drawn one less the carry, whose mass is at
+// most the mass owed plus one body, and at most two batches (a clump batch asks for at most
+// two batches' mass: the one due and one of backlog; more would only be carried again). Without
+// the carry a full batch's smallest draws were lost and the stream came out coarse. A factory more than one batch behind its nominal rate
 // (RateWarning) has a region that cannot hold what a batch asks for: each batch interval the
 // region empties (the grains fall through it), so a full region caps the rate whatever is owed.
 //
@@ -78,14 +83,16 @@ class ParticleFactory {
     a.Value(report_.inserted_mass_kg), a.Value(report_.requested_mass_kg);
     a.Value(report_.active_time_s), a.Value(report_.full_batches);
     a.Value(report_.region_lift_m);
+    a.Vector(carried_);
   }
   // Where the region is for a batch at time t (after the heap lift of the last batch).
   InsertionRegion RegionAt(double time_s) const;
   // The heap top under `region` (see the file comment); −infinity if no grain qualifies.
   double HeapTop(const Particles& spheres, const InsertionRegion& region) const;
 
-  // After a checkpoint load at time_s: progress finite and the next batch due in range.
-  bool CheckRestored(double time_s, std::string* error) const;
+  // After a checkpoint load at time_s: progress finite, the next batch due in range, and the
+  // carried draws of the mixture's species and sizes, weighing at most what is owed plus a body.
+  bool CheckRestored(double time_s, const ParticleSystem& system, std::string* error) const;
 
   const FactoryReport& report() const { return report_; }
   // Empty while the factory is at most one batch (nominal rate × batch interval) behind its
@@ -96,14 +103,20 @@ class ParticleFactory {
   std::string RateWarning() const;
   const FactorySpec& spec() const { return spec_; }
   double batch_interval_s() const { return interval_; }
+  // Clump draws that found no room, waiting for the next batch (see the file comment).
+  const std::vector<CarriedDraw>& carried() const { return carried_; }
+  double CarriedMassKg(const ParticleSystem& system) const;
 
  private:
+  bool HasClump(const ParticleSystem& system) const;  // a clump species in the mixture
+
   FactorySpec spec_;
   std::vector<SpeciesDraw> mixture_;
   Rng rng_;
   double interval_ = 0;
   double next_batch_s_ = 0;
   double owed_kg_ = 0;  // requested but not yet inserted
+  std::vector<CarriedDraw> carried_;
   FactoryReport report_;
 };
 

@@ -60,6 +60,12 @@ class OccupancyGrid {
 
 }  // namespace
 
+double DrawMassKg(const ParticleSystem& system, const SpeciesDraw& draw, double d) {
+  const double unit_mass = system.IsClump(draw.species) ? system.shapes[draw.species].mass_kg  // Clumps::Add
+                                                        : std::numbers::pi / 6;
+  return unit_mass * draw.density_kg_m3 * d * d * d;
+}
+
 std::vector<double> NumberWeightsFromMassFractions(const std::vector<double>& w,
                                                    const std::vector<double>& mean_mass) {
   std::vector<double> n(w.size());
@@ -105,35 +111,42 @@ bool ClumpIsFree(const OccupancyGrid& grid, const ParticleSystem& system, int sp
   return true;
 }
 
-// One particle to place: its species, (equivalent) diameter and enclosing radius.
+// One particle to place: its species (and its index in the request's mixture), (equivalent)
+// diameter and enclosing radius.
 struct Draw {
   const SpeciesDraw* species = nullptr;
+  int64_t mixture_index = 0;
   double d = 0, r = 0;
 };
 
 Draw DrawParticle(const InsertionRequest& q, Rng& rng, const ParticleSystem& system) {
   const SpeciesDraw& species = DrawSpecies(q.mixture, rng);
   const double d = species.size->Sample(rng.Uniform());
-  return {&species, d, system.EnclosingRadius(species.species, d)};
+  return {&species, &species - q.mixture.data(), d, system.EnclosingRadius(species.species, d)};
 }
 
 // A batch of a given mass that holds clumps is drawn whole, then placed largest enclosing sphere
 // first. Drawn and placed in turn, a large clump that came late found the region crowded by the
 // small ones before it and ended the batch unplaced, so the stream lost the large species (the
 // segregation feed at size ×5: TAED 3.3 % of the mass poured instead of 5.5 %). Placed first,
-// it finds the room; what a full region refuses is the smallest particles, and the mixture's
-// composition is that of the draws. Sphere batches keep their draw-and-place order (and their
-// random streams): their sizes fit the region's room.
+// it finds the room. The draws carried from earlier batches join the batch before the new ones
+// (so among equal sizes the older goes first) and are sorted with them: largest first is the
+// order that fits the most into the emptied region, and a carried draw placed ahead of larger
+// new ones would crowd them out in turn. Sphere batches keep their draw-and-place order (and
+// their random streams): their sizes fit the region's room.
 std::vector<Draw> DrawBatchLargestFirst(const InsertionRequest& q, Rng& rng,
                                         const ParticleSystem& system) {
   std::vector<Draw> batch;
   double mass = 0;
+  for (const CarriedDraw& c : q.carried) {
+    const SpeciesDraw& species = q.mixture[c.mixture_index];
+    batch.push_back({&species, c.mixture_index, c.diameter_m,
+                     system.EnclosingRadius(species.species, c.diameter_m)});
+    mass += DrawMassKg(system, species, c.diameter_m);
+  }
   while (static_cast<int64_t>(batch.size()) < q.max_count && mass < q.max_mass_kg) {
     const Draw p = DrawParticle(q, rng, system);
-    const double unit_mass = system.IsClump(p.species->species)
-                                 ? system.shapes[p.species->species].mass_kg  // Clumps::Add
-                                 : std::numbers::pi / 6;
-    mass += unit_mass * p.species->density_kg_m3 * p.d * p.d * p.d;
+    mass += DrawMassKg(system, *p.species, p.d);
     batch.push_back(p);
   }
   std::stable_sort(batch.begin(), batch.end(),
@@ -163,13 +176,15 @@ InsertionResult InsertRandomNonOverlapping(const InsertionRequest& q, Rng& rng,
   for (uint32_t s = 0; s < particles.Size(); ++s) grid.Add(particles.position_m[s], s);
 
   InsertionResult result;
-  // A batch of given mass with clumps: drawn first, placed largest first (DrawBatchLargestFirst).
+  // A batch of given mass with clumps: drawn first (with the carried draws), every draw tried
+  // once, largest first (DrawBatchLargestFirst); those that find no room are returned. A
+  // smaller draw may still fit where a larger one found no room, so a failure does not end it.
   const bool largest_first = std::isfinite(q.max_mass_kg) && HasClump(q, system);
   const std::vector<Draw> batch = largest_first ? DrawBatchLargestFirst(q, rng, system)
                                                 : std::vector<Draw>{};
   size_t next = 0;
-  while (result.count < q.max_count && result.mass_kg < q.max_mass_kg) {
-    if (largest_first && next == batch.size()) break;
+  while (largest_first ? next < batch.size()
+                       : result.count < q.max_count && result.mass_kg < q.max_mass_kg) {
     const Draw p = largest_first ? batch[next++] : DrawParticle(q, rng, system);
     const SpeciesDraw& draw = *p.species;
     const double d = p.d, r = p.r;
@@ -196,7 +211,8 @@ InsertionResult InsertRandomNonOverlapping(const InsertionRequest& q, Rng& rng,
     }
     if (!placed) {
       result.region_full = true;
-      break;
+      if (!largest_first) break;
+      result.unplaced.push_back({p.mixture_index, p.d});
     }
   }
   return result;

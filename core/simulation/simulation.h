@@ -118,6 +118,7 @@ class Simulation {
   // Wall time per phase of the step since Initialize (RunSummary::phases has one Run's).
   const PhaseTimes& phases() const { return phases_; }
   std::vector<FactoryReport> FactoryReports() const;
+  const std::vector<ParticleFactory>& factories() const { return factories_; }
   // The report of the factory named `name` (the first, if several share it); nullptr if none.
   const FactoryReport* FindFactoryReport(const std::string& name) const;
   // ParticleFactory::RateWarning of every factory that fell behind its nominal rate.

@@ -210,6 +210,12 @@ TEST_CASE("appended, truncated and flipped checkpoints are refused by the envelo
   std::memcpy(old.data(), &length, 8);
   std::memcpy(old.data() + 8, "demcal-checkpoint/4", 19);
   CHECK_THAT(Load(old), Catch::Contains("format 'demcal-checkpoint/4' of an older demcal"));
+  // Format 7 (before the factories' carried clump draws): refused by its version, not misread.
+  std::string seven = good;
+  const uint32_t version7 = 7;
+  std::memcpy(seven.data() + 8, &version7, 4);
+  CHECK_THAT(Load(seven), Catch::Contains("format version 7; this build reads version 8 (written "
+                                          "by another demcal build"));
 }
 
 TEST_CASE("hand-edited checkpoints with a valid checksum are refused by the state checks",
@@ -256,13 +262,15 @@ TEST_CASE("hand-edited checkpoints with a valid checksum are refused by the stat
   CHECK_THAT(Load(FrameCheckpoint(payload + "junk")), Catch::Contains("4 bytes left over"));
   // The factory's next batch far in the past would loop over batches for ever.
   // The factory's 8 progress values (next batch, owed mass, particles, inserted and requested
-  // mass, active time, full batches, region lift), then (no sinks here) the last sink pass step.
-  CHECK_THAT(Load(Edited(payload, payload.size() - 64 - 8, -1e300)),
+  // mass, active time, full batches, region lift), its carried draws (none here: a count of 0),
+  // then (no sinks here) the last sink pass step.
+  REQUIRE(Read<uint64_t>(payload, payload.size() - 16) == 0);
+  CHECK_THAT(Load(Edited(payload, payload.size() - 64 - 16, -1e300)),
              Catch::Contains("factories[0] 'feed': next batch time -1e+300 s outside"));
   // A NaN region lift gave the insertion grid NaN bounds (found by fuzz_checkpoint, UBSan); a lift
   // on a factory that does not follow the heap is not a state a run can reach.
-  CHECK_THAT(Load(Edited(payload, payload.size() - 16, nan)), Catch::Contains("region lift nan m"));
-  CHECK_THAT(Load(Edited(payload, payload.size() - 16, 0.5)),
+  CHECK_THAT(Load(Edited(payload, payload.size() - 24, nan)), Catch::Contains("region lift nan m"));
+  CHECK_THAT(Load(Edited(payload, payload.size() - 24, 0.5)),
              Catch::Contains("set on a factory that does not follow the heap"));
   // A last sink pass ahead of the step counter would postpone every later pass.
   CHECK_THAT(Load(Edited(payload, payload.size() - 8, int64_t{1} << 50)),
@@ -333,8 +341,10 @@ TEST_CASE("edits that break the physics of the state are refused naming the chec
   CHECK_THAT(Load(Edited(payload, scale, 1e308)),
              Catch::Contains("checkpoint: energy scale 1e+308 J exceeds what the scene's"));
   // The factory's inserted bodies and mass (the 3rd and 4th of its 8 progress values, before
-  // the last sink pass step): one body more than exist, or a mass its bodies cannot have.
-  const size_t particles = payload.size() - 8 - 64 + 16;
+  // its empty carry and the last sink pass step): one body more than exist, or a mass its
+  // bodies cannot have.
+  REQUIRE(Read<uint64_t>(payload, payload.size() - 16) == 0);
+  const size_t particles = payload.size() - 8 - 8 - 64 + 16;
   CHECK_THAT(Load(Edited(payload, particles, Read<int64_t>(payload, particles) + 1)),
              Catch::Contains("checkpoint: counters: "));
   CHECK_THAT(Load(Edited(payload, particles + 8, Read<double>(payload, particles + 8) * 3)),
