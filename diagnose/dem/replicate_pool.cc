@@ -12,15 +12,17 @@ void ReplicatePool::Add(const std::vector<std::vector<double>>& values,
                         const std::vector<int>& group) {
   const size_t n = std::min({n_, values.size(), group.size()});
   for (size_t k = 0; k < n; ++k) {
-    double mean = 0;
-    int m = 0;
+    // In the arithmetic's order of the pooling this replaced, so that the spreads stay the same
+    // to the last bit (a refit's path follows them).
+    std::vector<double> v;
     for (double x : values[k])
-      if (std::isfinite(x)) mean += x, ++m;
-    if (m < 2) continue;
-    mean /= m;
-    for (double x : values[k])
-      if (std::isfinite(x)) squares_[k] += (x - mean) * (x - mean);
-    dof_[k] += m - 1;
+      if (std::isfinite(x)) v.push_back(x);
+    if (v.size() < 2) continue;
+    double mean = 0, squares = 0;
+    for (double x : v) mean += x / v.size();
+    for (double x : v) squares += (x - mean) * (x - mean);
+    squares_[k] += squares;
+    dof_[k] += static_cast<int>(v.size()) - 1;
   }
   for (size_t k = 0; k < n; ++k)
     for (size_t l = k + 1; l < n; ++l) {
