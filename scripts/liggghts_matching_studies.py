@@ -8,8 +8,9 @@ cdt` at 0.20 between grains and 0.055 against the walls. demcal's `cdt` is EDEM'
 one (docs/physics.md section 2.1), so a base model with it carries a model-form offset that hides
 rolling and wall effects. A user who knows the data came from LIGGGHTS' cdt picks the same law:
 demcal `cdt_relative` at the same coefficients (the same torque, no conversion). This writes
- - examples/diagnose/<experiment>_cdt_relative.json: the three experiment files of the studies
-   (rig 1, rig 2, the funnel) with that law and those coefficients, all else unchanged;
+ - examples/diagnose/<experiment>_cdt_relative.json: the four experiment files of the studies
+   (rig 1, rig 2, the funnel, rig 3: the narrow funnel) with that law and those coefficients, all
+   else unchanged;
  - examples/diagnose/crossengine_<case>_cdt_relative.json: each case's study
    (crossengine_<case>.json, written by make_liggghts_datasets.py) on those experiment files.
 The study still fits only the BP-BP sliding friction; nothing else is read from the data.
@@ -20,7 +21,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import make_liggghts_datasets as mk  # noqa: E402
 
 EXAMPLES = os.path.join(mk.ROOT, "examples", "diagnose")
-EXPERIMENTS = ("aor_bp_heap.json", "aor_bp_heap_narrow.json", "discharge_bp_small.json")
+EXPERIMENTS = ("aor_bp_heap.json", "aor_bp_heap_narrow.json", "discharge_bp_small.json", "discharge_bp_narrow.json")
 SUFFIX = "_cdt_relative"
 
 
@@ -57,7 +58,8 @@ def write_study(case):
         "of datasets/liggghts_crossengine/, with the base on the data's own rolling law: demcal "
         f"cdt_relative (LIGGGHTS' cdt) at {mk.BASE['mur_pp']} between grains and {mk.BASE['mur_pw']} "
         "against the walls, BP-BP sliding friction fitted; rig 1 (16 mm slot heap) at 0, 1.5 and 3 wt% "
-        "PEG, rig 2 (12.5 mm slot heap) at 0 and 3 wt%, the funnel at 0 wt%. Written by "
+        "PEG, rig 2 (12.5 mm slot heap) at 0 and 3 wt%, the funnel and rig 3 (the narrow funnel) at 0 wt%. "
+        "Written by "
         "scripts/liggghts_matching_studies.py. Run with --quick, the fidelity the data were made at.")
     write(os.path.join(EXAMPLES, f"crossengine_{case}{SUFFIX}.json"), study)
 

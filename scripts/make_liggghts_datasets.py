@@ -10,8 +10,9 @@ measured; demcal did not make them.
 
 Recipe (datasets/liggghts_crossengine/README.md):
  1. The model of examples/diagnose/aor_bp_heap.json (rig 1: the 16 mm slot box),
-    aor_bp_heap_narrow.json (rig 2: the same heap in a 12.5 mm box) and discharge_bp_small.json
-    (the funnel), at their quick fidelity (sizes x5, stiffness x0.01), written as LIGGGHTS decks
+    aor_bp_heap_narrow.json (rig 2: the same heap in a 12.5 mm box), discharge_bp_small.json
+    (the funnel) and discharge_bp_narrow.json (rig 3: a narrow, steep funnel), at their quick
+    fidelity (sizes x5, stiffness x0.01), written as LIGGGHTS decks
     (scripts/liggghts_decks.py). Base: BP spheres, BP-BP sliding friction 0.5 (the twins' value),
     rolling friction by LIGGGHTS' own constant-torque law `cdt` at 0.20 between grains (demcal's
     0.10 at the torque-equivalent coefficient: LIGGGHTS multiplies by R* = R/2, demcal by R) and
@@ -45,6 +46,11 @@ COATINGS = [0.0, 1.5, 3.0]
 RIGS = {"slot": ("aor_bp_heap.json", "pseudo-2D heap"),
         "narrow": ("aor_bp_heap_narrow.json", "narrow pseudo-2D heap")}
 RIG2_COATINGS = [0.0, 3.0]
+# Funnels, all at 0 wt%: name -> (experiment file, test label, seed condition). The narrow funnel
+# (rig 3) was added later on condition 6, which no earlier rig used, and its rows are written
+# after the first funnel's, so the earlier rows, their seeds and their noise draws are unchanged.
+FUNNELS = {"funnel": ("discharge_bp_small.json", "funnel", 9),
+           "narrow_funnel": ("discharge_bp_narrow.json", "narrow funnel", 6)}
 BASE = {"sliding_friction": 0.5, "rolling": "cdt", "mur_pp": 0.20, "mur_pw": 0.055}
 # case -> (library effect the diagnosis should name, LIGGGHTS change, sign). Strengths: clear
 # changes of the heap at quick fidelity, not tuned to any diagnosis result.
@@ -180,11 +186,12 @@ def simulate(case, replicates, log):
                 res = heap_run(model_for(exp, case, w or 0.0), exp["aor"], seeds(ci, 3 * r_i + round((w or 0) / 1.5), rep))
                 runs.append((rig, w, rep, res))
                 log(f"{case} {rig} w={w} r{rep}: {res['status']} {res.get('angle_deg')} cpu {res['cpu_s']:.1f} s")
-    exp = experiment("discharge_bp_small.json")
-    for rep in range(replicates):
-        res = funnel_run(model_for(exp, case, 0.0), exp["discharge"], seeds(ci, 9, rep))
-        runs.append(("funnel", 0.0, rep, res))
-        log(f"{case} funnel r{rep}: {res['status']} {res.get('discharge_time_s')} cpu {res['cpu_s']:.1f} s")
+    for rig, (name, _, cond) in FUNNELS.items():
+        exp = experiment(name)
+        for rep in range(replicates):
+            res = funnel_run(model_for(exp, case, 0.0), exp["discharge"], seeds(ci, cond, rep))
+            runs.append((rig, 0.0, rep, res))
+            log(f"{case} {rig} r{rep}: {res['status']} {res.get('discharge_time_s')} cpu {res['cpu_s']:.1f} s")
     return runs
 
 
@@ -203,9 +210,10 @@ def write_case(case, runs, replicates, provenance):
             group = [r for g, lv, _, r in runs if g == rig and (lv == w or lv is None)]
             for obs in HEAP_OBS:
                 rows.append((obs, w, test, depth, mean_sd(group, obs), group))
-    group = [r for g, _, _, r in runs if g == "funnel"]
-    for obs in FUNNEL_OBS:
-        rows.append((obs, 0.0, "funnel", None, mean_sd(group, obs), group))
+    for rig, (_, test, _) in FUNNELS.items():
+        group = [r for g, _, _, r in runs if g == rig]
+        for obs in FUNNEL_OBS:
+            rows.append((obs, 0.0, test, None, mean_sd(group, obs), group))
     with open(os.path.join(out_dir, "measurements.csv"), "w") as f:
         f.write("observable,unit,material,coating_PEG_wt_pct,test,box_depth_m,value,uncertainty,repeats,provenance,source\n")
         for obs, w, test, depth, (mu, sd, n), group in rows:
@@ -234,10 +242,10 @@ def write_case(case, runs, replicates, provenance):
 
 def write_study(case):
     """examples/diagnose/crossengine_<case>.json: the twins' study (diagnose_none.json: mu_s fitted,
-    its optimiser and replicates) over every row the case's table holds, both rigs and the funnel."""
+    its optimiser and replicates) over every row the case's table holds: both heaps and both funnels."""
     study = json.load(open(os.path.join(ROOT, "examples", "diagnose", "diagnose_none.json")))
-    files = {"pseudo-2D heap": "aor_bp_heap.json", "narrow pseudo-2D heap": "aor_bp_heap_narrow.json",
-             "funnel": "discharge_bp_small.json"}
+    files = {test: name for name, test in RIGS.values()}
+    files.update({test: name for name, test, _ in FUNNELS.values()})
     targets = []
     with open(os.path.join(OUT, case, "measurements.csv")) as f:
         for row in csv.DictReader(f):
@@ -249,7 +257,8 @@ def write_study(case):
                             f"case {case} of datasets/liggghts_crossengine/ (scripts/make_liggghts_datasets.py). "
                             "Base model as the twins' studies: BP spheres, BP-BP sliding friction fitted; rig 1 "
                             "(16 mm slot heap) at 0, 1.5 and 3 wt% PEG, rig 2 (12.5 mm slot heap) at 0 and 3 wt%, "
-                            "the funnel at 0 wt%. Run with --quick, the fidelity the data were made at.")
+                            "the funnel and rig 3 (the narrow funnel: 4 g, 21 mm top, 12.5 mm orifice, 10 degree "
+                            "half-angle) at 0 wt%. Run with --quick, the fidelity the data were made at.")
     study["measurements"] = f"../../datasets/liggghts_crossengine/{case}/measurements.csv"
     study["targets"] = targets
     path = os.path.join(ROOT, "examples", "diagnose", f"crossengine_{case}.json")

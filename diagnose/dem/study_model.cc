@@ -1,5 +1,6 @@
 #include "diagnose/dem/study_model.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -48,8 +49,7 @@ std::unique_ptr<StudyModel> StudyModel::Create(const workflow::StudyFile& study,
   if (!workflow::BuildStudyRuns(study, options.quick, 0, &m->runs_, error)) return nullptr;
   m->replicates_ = study.replicates > 0 ? study.replicates : study.experiment().replicates;
   m->seed_ = study.has_seed ? study.seed : study.experiment().seed;
-  m->pool_squares_.assign(study.targets.size(), 0.0);
-  m->pool_dof_.assign(study.targets.size(), 0);
+  m->pool_ = ReplicatePool(study.targets.size());
   std::error_code ec;
   if (objectives::farm::IsManager())
     std::filesystem::create_directories(options.out_dir + "/journal", ec);
@@ -141,37 +141,48 @@ StudyModel::Setting* StudyModel::SettingFor(const std::vector<ActiveEffect>& eff
 
 void StudyModel::Pool(Setting* s) {
   const auto& history = s->evaluator->history();
-  for (; s->pooled < history.size(); ++s->pooled)
-    for (size_t k = 0; k < s->bindings.size() && k < pool_squares_.size(); ++k) {
+  const size_t n = std::min(s->bindings.size(), study_.targets.size());
+  for (; s->pooled < history.size(); ++s->pooled) {
+    std::vector<std::vector<double>> values(n);
+    std::vector<int> group(n, -1);
+    for (size_t k = 0; k < n; ++k) {
       const calibrate::TargetBinding& b = s->bindings[k];
-      std::vector<double> v;
+      group[k] = b.group;
       for (const calibrate::ReplicateRecord& r : history[s->pooled].runs[b.group]) {
         const auto it = r.values.find(b.observable);
-        if (r.ok() && it != r.values.end() && std::isfinite(it->second)) v.push_back(it->second);
+        values[k].push_back(r.ok() && it != r.values.end() ? it->second : NAN);
       }
-      if (v.size() < 2) continue;
-      double mean = 0, squares = 0;
-      for (double x : v) mean += x / v.size();
-      for (double x : v) squares += (x - mean) * (x - mean);
-      pool_squares_[k] += squares;
-      pool_dof_[k] += static_cast<int>(v.size()) - 1;
     }
+    pool_.Add(values, group);
+  }
 }
 
 Prediction StudyModel::Predict(const Setting& s, const calibrate::CandidateResult& result) const {
   Prediction p;
   p.ok = result.ok();
   p.status = result.status;
-  for (size_t k = 0; k < result.targets.size() && k < pool_squares_.size(); ++k) {
+  const size_t n = std::min(result.targets.size(), study_.targets.size());
+  for (size_t k = 0; k < n; ++k) {
     const calibrate::TargetValue& t = result.targets[k];
-    const double spread = pool_dof_[k] > 0 ? std::sqrt(pool_squares_[k] / pool_dof_[k])
-                                           : t.sem * std::sqrt(t.replicates);
+    const double pooled = pool_.Spread(k);
+    const double spread = pooled >= 0 ? pooled : t.sem * std::sqrt(t.replicates);
     p.mean.push_back(t.mean);
     p.spread.push_back(spread);
     p.sem.push_back(t.replicates > 0 ? spread / std::sqrt(t.replicates) : t.sem);
   }
   p.source = BindingSources(s.bindings);
   p.source.resize(p.mean.size(), -1);  // a target without a binding: its own
+  // Rows of one source read one value (1); rows of one run, different observables, its pooled
+  // within-run correlation; rows of different runs none.
+  p.correlation.assign(n, std::vector<double>(n, 0.0));
+  for (size_t k = 0; k < n; ++k)
+    for (size_t l = 0; l < n; ++l) {
+      const bool same_group = k < s.bindings.size() && l < s.bindings.size() &&
+                              s.bindings[k].group == s.bindings[l].group;
+      p.correlation[k][l] = k == l || (p.source[k] >= 0 && p.source[k] == p.source[l]) ? 1.0
+                            : same_group ? pool_.Correlation(k, l)
+                                         : 0.0;
+    }
   return p;
 }
 

@@ -9,9 +9,9 @@
 // run. Replicate r has the same seed everywhere (common random numbers), so groups whose
 // condition does not enter a setting's model run once for all of them (shared_run_groups.h).
 //
-// The simulation scatter is pooled over every evaluation of the diagnosis, per observation
-// (Σ(n_i − 1)s_i² / Σ(n_i − 1)): packing noise depends little on the parameters, and one
-// point's own spread over 2-3 replicates is too unsteady to divide by.
+// The simulation scatter is pooled over every evaluation of the diagnosis, per observation, and
+// so is the correlation of two observables read from one run (replicate_pool.h): the
+// prediction's correlation matrix of its rows' simulation errors.
 //
 // Thread-safety: one call at a time (each batch runs side by side inside).
 #include <map>
@@ -22,6 +22,7 @@
 
 #include "calibrate/evaluation_journal.h"
 #include "calibrate/target_evaluator.h"
+#include "diagnose/dem/replicate_pool.h"
 #include "diagnose/effects/effect.h"
 #include "diagnose/gap/observation.h"
 #include "diagnose/loop/forward_model.h"
@@ -84,8 +85,7 @@ class StudyModel final : public ForwardModel {
   int replicates_ = 2;
   uint64_t seed_ = 1;
   std::map<std::string, Setting> settings_;
-  std::vector<double> pool_squares_;  // per observation
-  std::vector<int> pool_dof_;
+  ReplicatePool pool_{0};  // per observation, and per pair read from one run
   int run_ = 0, reused_ = 0;
   std::string journal_error_;
 };

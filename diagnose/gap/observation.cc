@@ -16,4 +16,11 @@ std::vector<int> Sources(const std::vector<Observation>& observations) {
   return s;
 }
 
+std::vector<std::vector<double>> Correlations(const std::vector<Observation>& observations) {
+  std::vector<std::vector<double>> c;
+  c.reserve(observations.size());
+  for (const Observation& o : observations) c.push_back(o.correlation);
+  return c;
+}
+
 }  // namespace demcal::diagnose

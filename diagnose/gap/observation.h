@@ -39,6 +39,8 @@ struct Observation {
   // The simulated quantity it reads (Prediction::source); rows with one source share its
   // simulation error. −1: its own.
   int source = -1;
+  // Its row of the prediction's error correlation (Prediction::correlation); empty: its source's.
+  std::vector<double> correlation;
 
   double Sigma() const { return std::sqrt(uncertainty * uncertainty + sem * sem + floor * floor); }
   double Residual() const { return (simulated - measured) / Sigma(); }
@@ -48,5 +50,7 @@ struct Observation {
 std::vector<double> Residuals(const std::vector<Observation>& observations);
 // Their sources, in order (Chi2NoiseSd's grouping).
 std::vector<int> Sources(const std::vector<Observation>& observations);
+// Their rows of the error correlation, in order (empty rows where not known).
+std::vector<std::vector<double>> Correlations(const std::vector<Observation>& observations);
 
 }  // namespace demcal::diagnose

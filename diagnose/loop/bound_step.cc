@@ -21,7 +21,8 @@ Evidence BaseEvidence(const std::vector<Observation>& at, const Eigen::VectorXd&
   e.floor = EstimateFloor(r, e.q, static_cast<int>(at.size()) - fitted);
   Eigen::VectorXd u(at.size());
   for (size_t i = 0; i < at.size(); ++i) u(i) = at[i].sem / at[i].Sigma();
-  e.chi2_noise_sd = Chi2NoiseSd(r, u, e.q, e.floor, Sources(at));
+  e.chi2_noise_sd = CorrelatedChi2NoiseSd(
+      r, u, e.q, e.floor, ErrorCorrelation(Sources(at), Correlations(at), u.size()));
   return e;
 }
 

@@ -31,6 +31,7 @@ std::vector<Observation> WithPrediction(const std::vector<Observation>& observat
     out[i].floor = floor_factor * p.spread[i] / std::sqrt(std::max(1, out[i].repeats));
     out[i].scatter = p.spread[i];
     out[i].source = i < p.source.size() ? p.source[i] : -1;
+    out[i].correlation = i < p.correlation.size() ? p.correlation[i] : std::vector<double>{};
   }
   return out;
 }

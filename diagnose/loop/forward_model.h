@@ -51,6 +51,10 @@ struct Prediction {
   // them all, and the χ² noise adds their terms before squaring (Chi2NoiseSd). Empty: every row
   // its own quantity.
   std::vector<int> source;
+  // Per pair of observations the correlation of their simulation errors (n × n): 1 within a
+  // source, the pooled within-run correlation for two observables of one run (the angle and the
+  // height of one heap: replicate_pool.h), 0 across runs. Empty: the sources alone.
+  std::vector<std::vector<double>> correlation;
 };
 
 // The base calibration (Calibration II): best fitted parameters, the prediction there and the

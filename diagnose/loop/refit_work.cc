@@ -53,8 +53,9 @@ void Fill(const Frame& f, const Work& w, const std::vector<CandidateEffect>& can
   // the ranking does not tell two candidates apart by less than that.
   if (w.simulated && w.best_prediction.sem.size() == static_cast<size_t>(f.n())) {
     const Eigen::VectorXd u = ToVector(w.best_prediction.sem).cwiseQuotient(f.sigma);
-    e->evidence.chi2_noise_sd =
-        Chi2NoiseSd(r, u, f.q, e->evidence.floor, w.best_prediction.source);
+    e->evidence.chi2_noise_sd = CorrelatedChi2NoiseSd(
+        r, u, f.q, e->evidence.floor,
+        ErrorCorrelation(w.best_prediction.source, w.best_prediction.correlation, u.size()));
   }
   e->chi2_per_dof = e->chi2 / std::max(1, f.n() - f.fitted - k);
   e->control = candidates[w.candidate].control;

@@ -63,6 +63,37 @@ double Chi2NoiseSd(const Eigen::VectorXd& r, const Eigen::VectorXd& u, const Eig
   return std::sqrt(var);
 }
 
+double CorrelatedChi2NoiseSd(const Eigen::VectorXd& r, const Eigen::VectorXd& u,
+                             const Eigen::VectorXd& q, double phi,
+                             const Eigen::MatrixXd& correlation) {
+  Eigen::VectorXd a(r.size());
+  for (Eigen::Index i = 0; i < r.size(); ++i)
+    a(i) = 2 * r(i) * u(i) / (1 + phi * phi * q(i) * q(i));
+  if (correlation.rows() != r.size() || correlation.cols() != r.size()) return a.norm();
+  return std::sqrt(std::max(0.0, a.dot(correlation * a)));
+}
+
+Eigen::MatrixXd ErrorCorrelation(const std::vector<int>& source,
+                                 const std::vector<std::vector<double>>& rows, Eigen::Index n) {
+  Eigen::MatrixXd c = Eigen::MatrixXd::Identity(n, n);
+  const bool given = static_cast<Eigen::Index>(rows.size()) == n &&
+                     std::all_of(rows.begin(), rows.end(), [n](const std::vector<double>& row) {
+                       return static_cast<Eigen::Index>(row.size()) == n;
+                     });
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = 0; j < n; ++j) {
+      if (i == j) continue;
+      if (given) {
+        c(i, j) = rows[i][j];
+      } else {
+        const int si = i < static_cast<Eigen::Index>(source.size()) ? source[i] : -1;
+        const int sj = j < static_cast<Eigen::Index>(source.size()) ? source[j] : -1;
+        c(i, j) = si >= 0 && si == sj ? 1.0 : 0.0;
+      }
+    }
+  return c;
+}
+
 double IndistinctWithin(const Evidence& a, const Evidence& b) {
   const double sd = std::hypot(a.chi2_noise_sd, b.chi2_noise_sd);
   return std::max(kBicIndistinct, kNoiseSds * sd);

@@ -69,6 +69,19 @@ constexpr double kBicIndistinct = 6.0;
 //   simulated quantity (Sources(observations)); −1 or empty: its own.
 double Chi2NoiseSd(const Eigen::VectorXd& r, const Eigen::VectorXd& u, const Eigen::VectorXd& q,
                    double phi, const std::vector<int>& source = {});
+// The same with the rows' errors correlated: Var(χ²) ≈ aᵀ C a, a_i = 2 r_i w_i u_i, C the
+// correlation of the rows' simulation errors (ErrorCorrelation). Rows of one run that read
+// different observables (the angle and the height of one heap) move together as far as the run's
+// replicates say they do (replicate_pool.h); the sources alone count them as independent, which
+// overstates the noise where their terms have opposite signs and understates it where alike.
+double CorrelatedChi2NoiseSd(const Eigen::VectorXd& r, const Eigen::VectorXd& u,
+                             const Eigen::VectorXd& q, double phi,
+                             const Eigen::MatrixXd& correlation);
+// The n × n error correlation of rows: a row's own correlation row where all n rows carry one of
+// length n (Prediction::correlation); otherwise 1 on the diagonal and within a source (≥ 0), 0
+// elsewhere, which gives CorrelatedChi2NoiseSd the value of Chi2NoiseSd(..., source).
+Eigen::MatrixXd ErrorCorrelation(const std::vector<int>& source,
+                                 const std::vector<std::vector<double>>& rows, Eigen::Index n);
 
 // The gap between two candidates' BIC. Each ΔBIC is taken with the floor estimated from that
 // candidate's own fit, so each is measured against a differently floored base χ², and two

@@ -96,4 +96,24 @@ TEST_CASE("a base sensitivity within its own noise is reported undetermined", "[
   }
 }
 
+TEST_CASE("base chi2 noise: two observables of one run by their correlation", "[unit]") {
+  // The angle and the height of one heap (two sources of one run), their errors correlated
+  // +0.6 (Prediction::correlation, pooled from the replicates: replicate_pool.h), carried to the
+  // observations by WithPrediction: var = a1² + a2² + 2·0.6·a1·a2, a_i = 2 r_i u_i.
+  std::vector<Observation> rows = {Row(12, 0.5, 1, 10, 0), Row(0.013, 0.0004, 0.001, 0.012, 1)};
+  rows[1].uncertainty = 0.0005;
+  Prediction p;
+  for (const Observation& o : rows) {
+    p.mean.push_back(o.simulated), p.sem.push_back(o.sem), p.spread.push_back(o.scatter);
+    p.source.push_back(o.source);
+  }
+  p.correlation = {{1, 0.6}, {0.6, 1}};
+  const std::vector<Observation> at = WithPrediction(rows, p, 0);
+  const double a1 = 2 * at[0].Residual() * at[0].sem / at[0].Sigma();
+  const double a2 = 2 * at[1].Residual() * at[1].sem / at[1].Sigma();
+  CHECK(BaseChi2(at).noise_sd == Approx(std::sqrt(a1 * a1 + a2 * a2 + 1.2 * a1 * a2)));
+  p.correlation.clear();  // the sources alone: independent
+  CHECK(BaseChi2(WithPrediction(rows, p, 0)).noise_sd == Approx(std::hypot(a1, a2)));
+}
+
 }  // namespace demcal::diagnose
