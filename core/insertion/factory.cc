@@ -77,7 +77,8 @@ bool ParticleFactory::HasClump(const ParticleSystem& system) const {
 
 double ParticleFactory::CarriedMassKg(const ParticleSystem& system) const {
   double kg = 0;
-  for (const CarriedDraw& c : carried_) kg += DrawMassKg(system, mixture_[c.mixture_index], c.diameter_m);
+  for (const CarriedDraw& c : carried_)
+    kg += DrawMassKg(system, mixture_[c.mixture_index], c.diameter_m);
   return kg;
 }
 

@@ -7,10 +7,11 @@
 // could not place join the next batch (InsertRandomNonOverlapping places them with its new
 // draws, largest first), so the placed stream is the drawn one less the carry, whose mass is at
 // most the mass owed plus one body, and at most two batches (a clump batch asks for at most
-// two batches' mass: the one due and one of backlog; more would only be carried again). Without
-// the carry a full batch's smallest draws were lost and the stream came out coarse. A factory more than one batch behind its nominal rate
-// (RateWarning) has a region that cannot hold what a batch asks for: each batch interval the
-// region empties (the grains fall through it), so a full region caps the rate whatever is owed.
+// two batches' mass: the one due and one of backlog; more would only be carried again). Dropped
+// instead, they would be a full batch's smallest (placed last) and the stream would come out
+// coarse. A factory more than one batch behind its nominal rate (RateWarning) has a region that
+// cannot hold what a batch asks for: each batch interval the region empties (the grains fall
+// through it), so a full region caps the rate whatever is owed.
 //
 // Moving regions, so that a staged pour is one scene: the region translates with
 // region_velocity_m_s while start_s <= t < end_s, and/or follows the heap it feeds: with

@@ -61,8 +61,9 @@ class OccupancyGrid {
 }  // namespace
 
 double DrawMassKg(const ParticleSystem& system, const SpeciesDraw& draw, double d) {
-  const double unit_mass = system.IsClump(draw.species) ? system.shapes[draw.species].mass_kg  // Clumps::Add
-                                                        : std::numbers::pi / 6;
+  const double unit_mass = system.IsClump(draw.species)
+                               ? system.shapes[draw.species].mass_kg  // as Clumps::Add
+                               : std::numbers::pi / 6;
   return unit_mass * draw.density_kg_m3 * d * d * d;
 }
 

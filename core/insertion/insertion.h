@@ -62,7 +62,7 @@ struct InsertionResult {
 InsertionResult InsertRandomNonOverlapping(const InsertionRequest& request, Rng& rng,
                                            ParticleSystem& system);
 
-// The mass of a body of `draw` at (equivalent) diameter d, as ParticleSystem::Add makes it.
+// The mass of a body of `draw` at (equivalent) diameter d: ParticleSystem::Add's, to rounding.
 double DrawMassKg(const ParticleSystem& system, const SpeciesDraw& draw, double d);
 
 // Number weights that realise the given mass fractions (w_s / mean particle mass_s).

@@ -107,7 +107,8 @@ TEST_CASE("damaged carried draws in a checkpoint are refused", "[unit][checkpoin
   const size_t first = count_at + 8;
   CHECK_THAT(Load(s, edited(first, int64_t{5})),
              Catch::Contains("factories[0] 'feed': carried draw 0: mixture index 5 (of 1)"));
-  CHECK_THAT(Load(s, edited(first + 8, 0.003)), Catch::Contains("diameter 0.003 m not of its species"));
+  CHECK_THAT(Load(s, edited(first + 8, 0.003)),
+             Catch::Contains("diameter 0.003 m not of its species"));
   // More draws than were ever asked for: 10,000 of the largest.
   std::string many = payload.substr(0, count_at);
   const uint64_t extra = 10000;

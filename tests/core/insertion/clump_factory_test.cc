@@ -17,7 +17,8 @@ namespace {
 
 Scene ClumpPour(const InsertionRegion& region, double rate_kg_s) {
   std::string error;
-  Scene s = clump_pour::ClumpPour(region, rate_kg_s, std::numeric_limits<double>::infinity(), &error);
+  Scene s = clump_pour::ClumpPour(region, rate_kg_s, std::numeric_limits<double>::infinity(),
+                                  &error);
   INFO(error);
   REQUIRE(!s.species.empty());
   return s;
