@@ -39,11 +39,11 @@ NeighbourList::Grid NeighbourList::MakeGrid(const Settings& s, const std::vector
         }
         return a;
       });
-  return MakeGrid(s, box.first, box.second, moving < x.size());
+  return MakeGrid(s, box.first, box.second, moving < x.size(), x.size());
 }
 
 NeighbourList::Grid NeighbourList::MakeGrid(const Settings& s, Vec3 lo, Vec3 hi,
-                                            bool margin_for_others) const {
+                                            bool margin_for_others, size_t particles) const {
   // A cell is at least the largest possible cut-off, so partners lie in the 27 nearest cells.
   const double cutoff = 2.0 * s.max_radius_m + s.skin_m;
   Grid g;
@@ -55,16 +55,23 @@ NeighbourList::Grid NeighbourList::MakeGrid(const Settings& s, Vec3 lo, Vec3 hi,
     lo[a] = std::max(lo[a] - margin, s.domain_min_m[a]);
     hi[a] = std::min(hi[a] + margin, s.domain_max_m[a]);
     if (!(hi[a] - lo[a] >= cutoff)) hi[a] = lo[a] + cutoff;  // also catches NaN and empty sets
-    // A periodic axis spans the whole period; wrapping needs at least 3 cells (else whole axis).
-    g.wrap[a] = periodic && static_cast<int>(s.periodic.length_m[a] / cutoff) >= 3;
     if (periodic) lo[a] = s.domain_min_m[a], hi[a] = s.domain_max_m[a];
   }
   const Vec3 extent = hi - lo;
+  const double max_cells =
+      std::min(1e9, std::max(4096.0, kMaxCellsPerParticle * static_cast<double>(particles)));
+  double cell = cutoff;
+  auto cells_along = [&](int a) {  // in double: extent / cell may exceed any int
+    return std::max(1.0, std::min(std::floor(extent[a] / cell), 1e9));
+  };
+  while (cells_along(0) * cells_along(1) * cells_along(2) > max_cells) cell *= 1.25;
   g.origin = lo;
   int* dims[3] = {&g.nx, &g.ny, &g.nz};
   for (int a = 0; a < 3; ++a) {
-    *dims[a] = std::max(1, static_cast<int>(extent[a] / cutoff));
+    *dims[a] = static_cast<int>(cells_along(a));
     g.inv_cell[a] = *dims[a] / extent[a];  // cells stretched to tile the span exactly
+    // A periodic axis spans the whole period; wrapping needs at least 3 cells (else whole axis).
+    g.wrap[a] = s.periodic.IsPeriodic(a) && *dims[a] >= 3;
   }
   return g;
 }

@@ -40,6 +40,13 @@ class NeighbourList {
     double max_radius_m = 0;
     PeriodicBox periodic;  // periodic axes: the grid spans the domain and wraps around
   };
+  // At most this many cells per binned particle (and at least 4,096 cells in all): beyond, the
+  // cells are enlarged (MakeGrid). A packed bed has ≈ 0.7 cells per particle and a pour's
+  // loose column a few; a far-flung particle (clamped into a large domain) makes the grid span
+  // the domain, which at a cut-off per cell could ask billions of cells (an int overflow and
+  // gigabytes of cell starts) and pass over all of them at every rebuild. Larger cells only
+  // add candidates: the list is the same.
+  static constexpr double kMaxCellsPerParticle = 16;
 
   // `body` (optional): spheres with the same non-negative body index (members of one clump)
   // are never paired. Slots from `first_fixed` on are fixed spheres (clamped to the count).
@@ -117,8 +124,10 @@ class NeighbourList {
   };
   // Over the first `moving` slots (the rest are fixed spheres).
   Grid MakeGrid(const Settings& s, const std::vector<Vec3>& positions, size_t moving) const;
-  // Over the box [lo, hi] (grown by a cut-off and binning others within reach if asked).
-  Grid MakeGrid(const Settings& s, Vec3 lo, Vec3 hi, bool margin_for_others) const;
+  // Over the box [lo, hi] (grown by a cut-off and binning others within reach if asked), for
+  // about `particles` binned particles.
+  Grid MakeGrid(const Settings& s, Vec3 lo, Vec3 hi, bool margin_for_others,
+                size_t particles) const;
   // Rebuild reference and count, after the rows are filled.
   void Finish(const Settings& s);
   // Fixed spheres out of reach of every moving particle are not binned (cell −1).

@@ -69,7 +69,7 @@ void NeighbourList::Update(const Settings& s, const std::vector<Vec3>& x,
     for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], x[m][a]), hi[a] = std::max(hi[a], x[m][a]);
   }
   const std::vector<Vec3>& p = reference_position_;
-  const Grid grid = MakeGrid(s, lo, hi, true);
+  const Grid grid = MakeGrid(s, lo, hi, true, n);
   BinParticles(grid, p, 0);
 
   // Every partner of every mover (both sides, ascending), up to found_capacity_ each; a mover

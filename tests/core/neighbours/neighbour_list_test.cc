@@ -207,3 +207,29 @@ TEST_CASE("a rebuild is due when a moving sphere moves half the skin, never for 
   x[1].x += 0.00002;
   CHECK(list.NeedsRebuild(x));
 }
+
+TEST_CASE("a far-flung particle in a large domain keeps the cell grid in proportion",
+          "[unit][bad_inputs]") {
+  // A domain of 200 km per axis (within the coordinate limit) and 2 mm spheres: one particle
+  // at the far corner makes the grid span the domain, ≈ 9e7 cut-offs per axis. The grid is
+  // capped at NeighbourList::kMaxCellsPerParticle cells per particle (4,096 at least), and the
+  // list is still exactly the brute-force one, moving or fixed, built or updated.
+  const NeighbourList::Settings huge{{-1e5, -1e5, -1e5}, {1e5, 1e5, 1e5}, 0.0002, 0.001};
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 0.02);
+  std::vector<Vec3> x(400);
+  std::vector<double> r(400, 0.001);
+  for (Vec3& p : x) p = {u(rng), u(rng), u(rng)};
+  x[123] = {9.9e4, -9.9e4, 9.9e4};
+  CheckAgainstBruteForce(huge, x, r);
+  CheckAgainstBruteForce(huge, x, r, 300);  // the stray one among the fixed
+  NeighbourList list;
+  list.Build(huge, x, r);
+  const double max_cells = std::max(4096.0, NeighbourList::kMaxCellsPerParticle * x.size());
+  CHECK(static_cast<double>(list.Heap().other) <= 4.0 * (max_cells + 1) * 1.5);  // + slack
+  NeighbourList moved;
+  for (size_t i = 0; i < 40; ++i) x[i] = x[i] + Vec3{0.0003, 0, 0};
+  moved.Update(huge, x, r, nullptr, x.size(), list, 0.25);
+  REQUIRE(moved.LastMovers() == 40);  // the incremental path, on a grid over the movers
+  CHECK(Listed(moved) == BruteForce(moved.ReferencePositions(), r, huge.skin_m));
+}
