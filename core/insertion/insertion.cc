@@ -10,11 +10,21 @@ namespace demcal::core {
 namespace {
 
 // A dense grid of cells of size >= the largest diameter over the region, holding particle slots.
+// At most kMaxCellsPerParticle cells per particle it may hold (present and to be placed; 4,096
+// at least): beyond, the cells are enlarged. A few particles asked of a region many thousand
+// diameters wide would otherwise ask a cell per diameter cubed, terabytes (larger cells only
+// make IsFree look at more particles, never miss one).
 class OccupancyGrid {
  public:
-  OccupancyGrid(const Vec3& lo, const Vec3& hi, double cell) : origin_(lo), cell_(cell) {
-    for (int a = 0; a < 3; ++a)
-      dims_[a] = std::max(1, static_cast<int>(std::ceil((hi[a] - lo[a]) / cell)));
+  static constexpr double kMaxCellsPerParticle = 16;
+  OccupancyGrid(const Vec3& lo, const Vec3& hi, double cell, double particles) : origin_(lo) {
+    const double max_cells = std::min(1e8, std::max(4096.0, kMaxCellsPerParticle * particles));
+    auto along = [&](int a) {  // in double: the span over a cell may exceed any int
+      return std::max(1.0, std::min(std::ceil((hi[a] - lo[a]) / cell), 1e9));
+    };
+    while (along(0) * along(1) * along(2) > max_cells) cell *= 1.25;
+    cell_ = cell;
+    for (int a = 0; a < 3; ++a) dims_[a] = static_cast<int>(along(a));
     cells_.resize(static_cast<size_t>(dims_[0]) * dims_[1] * dims_[2]);
   }
   void Add(const Vec3& x, uint32_t slot) {
@@ -161,6 +171,16 @@ bool HasClump(const InsertionRequest& q, const ParticleSystem& system) {
   return false;
 }
 
+// The most bodies a request can place: its count, or its mass over the lightest body it can draw
+// (a request bounded by neither fills its region, and that many bodies need that many cells).
+double MostBodies(const InsertionRequest& q, const ParticleSystem& system) {
+  double lightest = std::numeric_limits<double>::infinity();
+  for (const SpeciesDraw& d : q.mixture)
+    lightest = std::min(lightest, DrawMassKg(system, d, d.size->MinDiameter()));
+  const double by_mass = q.max_mass_kg / lightest + static_cast<double>(q.carried.size());
+  return std::min(static_cast<double>(q.max_count), std::isfinite(by_mass) ? by_mass : 1e9);
+}
+
 }  // namespace
 
 InsertionResult InsertRandomNonOverlapping(const InsertionRequest& q, Rng& rng,
@@ -173,7 +193,8 @@ InsertionResult InsertRandomNonOverlapping(const InsertionRequest& q, Rng& rng,
   for (double r : particles.radius_m) max_d = std::max(max_d, 2 * r);
   // Grid over the region grown by one diameter so particles already near it are seen too.
   const Vec3 grow{max_d, max_d, max_d};
-  OccupancyGrid grid(q.region.min_m - grow, q.region.max_m + grow, max_d);
+  OccupancyGrid grid(q.region.min_m - grow, q.region.max_m + grow, max_d,
+                     static_cast<double>(particles.Size()) + MostBodies(q, system));
   for (uint32_t s = 0; s < particles.Size(); ++s) grid.Add(particles.position_m[s], s);
 
   InsertionResult result;

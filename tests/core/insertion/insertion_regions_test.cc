@@ -121,3 +121,23 @@ TEST_CASE("a factory following the heap keeps its clearance above the heap top",
   // The region's bottom is about the clearance above the heap top (within a grain or two).
   CHECK(std::abs(0.012 + report.region_lift_m - (top + 0.008)) < 0.004);
 }
+
+TEST_CASE("a few grains filled into a region 200 km wide are placed and run",
+          "[unit][factory][bad_inputs]") {
+  // One cell per grain diameter over the region would be 1e23 cells; the fill's occupancy grid
+  // and the neighbour grid both cap their cells per particle (insertion.cc, neighbour_list.h).
+  Scene s = Bin();
+  s.walls.clear();
+  s.gravity_m_s2 = {0, 0, 0};
+  s.domain_min_m = {-1e5, -1e5, -1e5};
+  s.domain_max_m = {1e5, 1e5, 1e5};
+  s.fills = {{0, InsertionRegion::Box({-9.9e4, -9.9e4, -9.9e4}, {9.9e4, 9.9e4, 9.9e4}), 20}};
+  Simulation sim(s, {.threads = 1});
+  std::string err;
+  REQUIRE(sim.Initialize(&err));
+  REQUIRE(sim.particles().Size() == 20);
+  const RunSummary run = sim.Run(100 * sim.timestep_s());
+  CHECK(run.ok());
+  CHECK(sim.Heap().Total() < (size_t{64} << 20));  // a few MB: cells in proportion
+  CHECK(sim.particles().Size() == 20);
+}
