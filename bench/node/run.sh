@@ -4,8 +4,8 @@
 # of bench/node/pack.sh, then runs, each part under what is left of BUDGET_S,
 #   1. the 200,000-sphere dense bed and pour, demcal 1..16 threads against LIGGGHTS 1..16 ranks
 #   2. the 20,000-sphere bed and pour, the same
-#   3. `mpirun -np CORES demcal reproduce alizadeh2018 --quick` (the farm), against 1 rank's
-#      model from the same journal (demcal journal-stats)
+#   3. `mpirun -np CORES demcal reproduce alizadeh2018 --quick` (the farm), against the wall-time
+#      model at 1, 2, CORES, 64 and 512 ranks from its journal (demcal journal-stats --model-ranks)
 # and writes each part's output to $OUT (machine.txt, scaling_200k.txt, scaling_20k.txt,
 # farm.txt), so that a part cut short still returns what it measured.
 #
@@ -70,7 +70,7 @@ for part in $PARTS; do
         timeout "$budget" mpirun --bind-to none -np "$ranks" demcal reproduce alizadeh2018 --quick \
           --threads 1 --out "$dir" > "$OUT/farm.txt" 2>&1
         echo "farm rc $? wall $(( $(date +%s) - t0 )) s on $ranks ranks" >> "$OUT/farm.txt"
-        demcal journal-stats "$dir" >> "$OUT/farm.txt" 2>&1
+        demcal journal-stats "$dir" --model-ranks "1,2,$ranks,64,512" >> "$OUT/farm.txt" 2>&1
         cp "$dir/summary.json" "$OUT/farm_summary.json" 2>/dev/null
         note "farm: $(tail -n 1 "$OUT/farm.txt")"
       else
