@@ -35,6 +35,17 @@ struct PhaseTimes {
   std::string Report() const;
 };
 
+// Particles the steps' neighbour rebuilds searched (an incremental rebuild searches only those
+// that moved, NeighbourList::LastMovers) and the moving particles at those rebuilds, summed.
+struct RebuildSearch {
+  uint64_t searched = 0;
+  uint64_t moving = 0;
+  RebuildSearch& operator-=(const RebuildSearch& o) {
+    searched -= o.searched, moving -= o.moving;
+    return *this;
+  }
+};
+
 struct RunSummary {
   Termination termination = Termination::kInvalidScene;
   std::string message = "Run was not called";
@@ -45,6 +56,7 @@ struct RunSummary {
   double timestep_s = 0;
   double final_kinetic_energy_J = 0;
   uint64_t neighbour_rebuilds = 0;  // during this Run() call
+  RebuildSearch rebuild_search;     // during this Run() call
   PhaseTimes phases;                // during this Run() call
   SweepBalance sweep_balance;       // during this Run() call
 

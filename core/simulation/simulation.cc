@@ -314,6 +314,8 @@ void Simulation::Step(bool defer_kick) {
       removed = RemoveSunkParticles();
     }
     RebuildNeighbours(true, removed ? removal_order_ : std::vector<uint32_t>{});
+    rebuild_search_.searched += list_.LastMovers();
+    rebuild_search_.moving += list_.FirstFixed();
     lap(phases_.rebuild_s);
   }
   ComputeForces(t);
@@ -341,6 +343,7 @@ RunSummary Simulation::Run(double duration_s, const Observer& observer) {
   };
   const int64_t n_steps = std::max<int64_t>(0, std::llround(duration_s / dt_));
   const PhaseTimes phases_before = phases_;
+  const RebuildSearch search_before = rebuild_search_;
   const SweepBalance balance_before = forces_.sweep_balance();
   s.termination = Termination::kOk;
   s.message = "completed";
@@ -383,6 +386,8 @@ RunSummary Simulation::Run(double duration_s, const Observer& observer) {
   s.neighbour_rebuilds = list_.Builds() + spare_list_.Builds() - builds_before;
   s.phases = phases_;
   s.phases -= phases_before;
+  s.rebuild_search = rebuild_search_;
+  s.rebuild_search -= search_before;
   s.sweep_balance = forces_.sweep_balance();
   s.sweep_balance -= balance_before;
   return s;

@@ -197,6 +197,7 @@ class Simulation {
   int64_t steps_ = 0;
   bool kick_pending_ = false;  // the last Step deferred its spheres' second half kick
   uint64_t rebuilds_since_reorder_ = 0;
+  RebuildSearch rebuild_search_;  // summed over the steps' rebuilds (RunSummary)
   PhaseTimes phases_;
   double energy_budget_J_ = 0;   // initial KE + PE (+ inserted energy)
   double energy_scale_J_ = 0;    // energy that gravity and the initial state can release

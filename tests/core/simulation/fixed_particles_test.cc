@@ -195,3 +195,48 @@ TEST_CASE("a stream poured onto a fixed base is bit-identical with 1 and 2 threa
   CHECK(result[0].velocity_m_s == result[1].velocity_m_s);
   CHECK(result[0].angular_velocity_rad_s == result[1].angular_velocity_rad_s);
 }
+
+TEST_CASE("a run counts the particles its rebuilds searched: one step at a time as at once",
+          "[unit]") {
+  // RunSummary::rebuild_search sums NeighbourList::LastMovers and FirstFixed over the rebuilds
+  // of the run's steps. Runs of one step each read them off the list after each rebuild; their
+  // sums are one long run's (whose kicks join across steps: the state must agree bit for bit).
+  Scene s = PileOnFixedBase();
+  s.particles.erase(s.particles.begin(), s.particles.begin() + 192);
+  FactorySpec feed;
+  feed.name = "feed";
+  feed.region = InsertionRegion::Cylinder({0.035, 0.035, 0}, 0.008, 0.04, 0.07);
+  feed.species = {0};
+  feed.mass_fractions = {1};
+  feed.mass_rate_kg_s = 0.05;
+  s.factories = {feed};
+  Simulation whole(s, {.threads = 1}), stepped(s, {.threads = 1});
+  std::string err;
+  REQUIRE(whole.Initialize(&err));
+  REQUIRE(stepped.Initialize(&err));
+  const int steps = 4000;
+  const RunSummary run = whole.Run(steps * whole.timestep_s());
+  REQUIRE(run.ok());
+  REQUIRE(run.steps == steps);
+  uint64_t searched = 0, moving = 0, rebuilds = 0;
+  for (int k = 0; k < steps; ++k) {
+    const RunSummary one = stepped.Run(stepped.timestep_s());
+    REQUIRE(one.ok());
+    REQUIRE(one.neighbour_rebuilds <= 1);
+    if (one.neighbour_rebuilds == 0) {
+      CHECK(one.rebuild_search.moving == 0);
+      continue;
+    }
+    ++rebuilds;
+    CHECK(one.rebuild_search.searched == stepped.neighbours().LastMovers());
+    CHECK(one.rebuild_search.moving == stepped.neighbours().FirstFixed());
+    searched += one.rebuild_search.searched, moving += one.rebuild_search.moving;
+  }
+  REQUIRE(rebuilds == run.neighbour_rebuilds);
+  REQUIRE(rebuilds > 20);
+  CHECK(run.rebuild_search.searched == searched);
+  CHECK(run.rebuild_search.moving == moving);
+  CHECK(searched < moving);  // some rebuilds were incremental
+  CHECK(whole.particles().position_m == stepped.particles().position_m);
+  CHECK(whole.particles().velocity_m_s == stepped.particles().velocity_m_s);
+}
