@@ -302,7 +302,8 @@ void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
     }
   }
   // Damped Gauss–Newton: where the full step does not lower χ² (noisy or curved sensitivities
-  // overshoot), half of it is simulated too.
+  // overshoot), half of it is simulated too. A point without a value counts as not lowering it
+  // and is said in the note with its status (a jam is reported as a jam, not as a slow flow).
   std::vector<size_t> pending(work.size());
   std::iota(pending.begin(), pending.end(), 0);
   for (int attempt = 0; attempt < 2 && !pending.empty(); ++attempt) {
@@ -315,6 +316,10 @@ void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
       const double chi2 =
           got[k].ok ? StandardisedResiduals(*f.observations, got[k].mean, f.sigma).squaredNorm()
                     : INFINITY;
+      if (!got[k].ok)
+        AddNote(&w, "re-centred refit point " + candidates[w.candidate].parameters[0].name +
+                        " = " + ValueText(points[k].effects.back().values[0]) +
+                        " had no value (" + got[k].status + ")");
       if (chi2 < w.best_chi2)
         w.best_chi2 = chi2, w.best_point = points[k], w.best_prediction = got[k];
       else

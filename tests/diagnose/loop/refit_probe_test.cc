@@ -105,4 +105,16 @@ TEST_CASE("every coordinate held in a step is named in the note", "[unit]") {
   CHECK(s.work.retake_note.find("held for a refit step, t") != std::string::npos);
 }
 
+TEST_CASE("a re-centred refit point without a value is said in the note", "[unit]") {
+  Setup s;
+  // The Gauss–Newton step from t = 0.3 lands on the truth t = 0.1, which jams; its half, 0.2,
+  // does not (the probes at 0.3 ± 2h are above 0.2).
+  s.model.jam_from = 0.05;
+  s.model.jam_to = 0.15;
+  refits::RecentredRefits(s.model, s.frame, s.fit, {s.effect}, {&s.work});
+  CHECK(s.work.best_point.effects.back().values[0] == Approx(0.2));
+  CHECK(s.work.retake_note.find("re-centred refit point t = 0.1 had no value (jammed)") !=
+        std::string::npos);
+}
+
 }  // namespace demcal::diagnose
