@@ -28,7 +28,8 @@ double Since(Clock::time_point start) {
 // candidate keeps no signature, and its note says why.
 void RetakeSignatures(ForwardModel& model, const std::vector<CandidateEffect>& candidates,
                       const std::vector<int>& remaining, const FitState& fit,
-                      std::vector<Prediction>& probed, std::vector<double>& taken_at) {
+                      std::vector<ModelPoint>& probes, std::vector<Prediction>& probed,
+                      std::vector<double>& taken_at) {
   std::vector<size_t> at;
   std::vector<ModelPoint> points;
   for (size_t i = 0; i < remaining.size(); ++i) {
@@ -41,7 +42,7 @@ void RetakeSignatures(ForwardModel& model, const std::vector<CandidateEffect>& c
   }
   const std::vector<bool> got = EvaluateRetakes(model, at, points, probed);
   for (size_t k = 0; k < at.size(); ++k)
-    if (got[k]) taken_at[at[k]] = points[k].effects.back().values[0];
+    if (got[k]) taken_at[at[k]] = points[k].effects.back().values[0], probes[at[k]] = points[k];
 }
 
 // The candidates of a refit batch with their linearised χ², for the progress log.
@@ -108,6 +109,10 @@ void RefitInside(ForwardModel& model, const Frame& f, const FitState& fit,
     held.back().refit = Refit(fi, candidates[w.candidate].parameters[0], w.signature);
     held.back().simulated = false;
     held.back().retake_note.clear();  // the copy's refits are its own
+    // So are its probes: the signature run and the free refit's finite-difference probes sit
+    // where the bound parameters were free, not held inside.
+    held.back().probe_chi2 = INFINITY;
+    held.back().signature_prediction = Prediction{};
   }
   std::sort(held.begin(), held.end(),
             [](const Work& a, const Work& b) { return a.refit.chi2 < b.refit.chi2; });
@@ -151,7 +156,7 @@ StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>
   std::vector<Prediction> probed = model.Evaluate(probes);
   std::vector<double> taken_at;
   for (int c : remaining) taken_at.push_back(candidates[c].parameters[0].probe);
-  RetakeSignatures(model, candidates, remaining, fit, probed, taken_at);
+  RetakeSignatures(model, candidates, remaining, fit, probes, probed, taken_at);
   out.phases.push_back({"signatures", model.SimulationsRun() - sims0, Since(start)});
   std::vector<Work> work;
   for (size_t i = 0; i < remaining.size(); ++i) {
@@ -168,6 +173,7 @@ StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>
       w.signature = Eigen::VectorXd::Zero(f.n());
     }
     w.refit = Refit(f, candidates[w.candidate].parameters[0], w.signature);
+    KeepSignatureRun(f, probes[i], probed[i], &w);
     work.push_back(w);
   }
   // The shortlist: significant by the linear prediction, best linear ΔBIC first.

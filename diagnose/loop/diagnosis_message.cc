@@ -75,6 +75,42 @@ std::string ScreenText(const Diagnosis& d, const DiagnoseOptions& options) {
   return s.str();
 }
 
+// Beside "gap not explained by the library": the step's best simulated candidate when the data
+// favour it over the base by Schwarz's criterion (ΔBIC < 0) though not at significance/K, with
+// the row its refit moves most toward the data. Not an answer — no effect is named — but a DEM
+// engineer reading "not explained" should learn which mechanism came closest and what to
+// measure again to decide (a gap carried by one row whose simulated response is noisy: the
+// cross-engine `wide_psd`, results_screen.md).
+std::string BestNotNamedText(const Diagnosis& d, const DiagnoseOptions& options,
+                             const std::vector<CandidateEffect>& candidates) {
+  if (d.steps.empty()) return "";
+  const DiagnosisStep& step = d.steps.back();
+  const int best = DecidingEntry(step.ranking, step.entries);
+  if (best < 0 || !step.entries[best].simulated || step.entries[best].control ||
+      !(step.entries[best].evidence.delta_bic < 0) || step.entries[best].values.empty())
+    return "";
+  const RankingEntry& e = step.entries[best];
+  const std::vector<double>& r = step.refit_residuals[best];
+  int row = -1;
+  double gain = 0;
+  for (size_t i = 0; i < d.before.size() && i < r.size(); ++i) {
+    const double g = std::fabs(d.before[i].Residual()) - std::fabs(r[i]);
+    if (g > gain) gain = g, row = static_cast<int>(i);
+  }
+  const EffectParameter& p = candidates[e.candidate].parameters[0];
+  std::ostringstream s;
+  s.precision(3);
+  s << "; the best candidate, not named: " << e.key << " (" << EffectDirection(p, e.values[0])
+    << ", " << p.name << " = " << e.values[0] << "; delta BIC " << e.evidence.delta_bic
+    << ", likelihood-ratio p " << e.evidence.lr_p_value << ", not below significance/K = "
+    << options.significance / static_cast<double>(std::max<size_t>(1, step.entries.size()))
+    << ")";
+  if (row >= 0)
+    s << "; its refit moves " << d.before[row].name << " from " << d.before[row].Residual()
+      << " to " << r[row] << " sigma: more repeats there (or of the runs) would decide";
+  return s.str();
+}
+
 }  // namespace
 
 std::string DiagnosisMessage(const Diagnosis& d, const DiagnoseOptions& options,
@@ -142,7 +178,8 @@ std::string DiagnosisMessage(const Diagnosis& d, const DiagnoseOptions& options,
       << core::NumberText(d.floor_before, 3) << " single-run scatter(s) beyond the fixed "
       << options.discrepancy_floor
       << ", and no effect of the library explains more than that floor "
-      << "allows (gap not explained by the library: " << d.gap_before.summary << ")";
+      << "allows (gap not explained by the library: " << d.gap_before.summary << ")"
+      << BestNotNamedText(d, options, candidates);
   }
   if (d.screened && !d.steps.empty() && d.termination != DiagnosisTermination::kNoMissingEffect)
     m << "; " << ScreenText(d, options);

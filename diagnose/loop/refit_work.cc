@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <sstream>
 
 #include "calibrate/sensitivity_refinement.h"
 
@@ -67,25 +68,79 @@ void Fill(const Frame& f, const Work& w, const std::vector<CandidateEffect>& can
     e->values = w.best_point.effects.back().values;
 }
 
+void KeepSignatureRun(const Frame& f, const ModelPoint& point, const Prediction& run, Work* w) {
+  w->signature_point = point;
+  w->signature_prediction = run;
+  if (!run.ok) return;
+  const double chi2 = StandardisedResiduals(*f.observations, run.mean, f.sigma).squaredNorm();
+  if (chi2 < w->probe_chi2) w->probe_chi2 = chi2, w->probe_point = point, w->probe_prediction = run;
+}
+
+namespace {
+
+std::string ValueText(double v) {
+  std::ostringstream s;
+  s.precision(4);
+  s << v;
+  return s.str();
+}
+
+// A note once: the second Gauss–Newton call repeats a point that had no value (the secant
+// needs a value to move it), which the journal answers without a run.
+void AddNote(Work* w, const std::string& note) {
+  if (w->retake_note.find(note) != std::string::npos) return;
+  w->retake_note += (w->retake_note.empty() ? "" : "; ") + note;
+}
+
+}  // namespace
+
 void SimulateRefits(ForwardModel& model, const Frame& f, const FitState& fit,
                     const std::vector<CandidateEffect>& candidates, std::vector<Work*>& work) {
   std::vector<ModelPoint> points;
+  std::vector<double> scale(work.size(), 1.0);  // the share of the Gauss–Newton step taken
   for (Work* w : work) {
     const ActiveEffect added{w->candidate, {w->refit.t(0)}};
     points.push_back(fit.Step(w->refit.delta, &added));
   }
-  const std::vector<Prediction> got = model.Evaluate(points);
+  std::vector<Prediction> got = model.Evaluate(points);
+  std::vector<size_t> at;  // points without a value, retaken at half the step (header)
+  std::vector<ModelPoint> halves;
+  for (size_t i = 0; i < work.size(); ++i) {
+    if (got[i].ok) continue;
+    const ActiveEffect added{work[i]->candidate, {0.5 * work[i]->refit.t(0)}};
+    halves.push_back(fit.Step(0.5 * work[i]->refit.delta, &added));
+    at.push_back(i);
+  }
+  const std::vector<Prediction> retaken = halves.empty() ? got : model.Evaluate(halves);
+  for (size_t k = 0; k < at.size(); ++k) {
+    Work& w = *work[at[k]];
+    const std::string name = candidates[w.candidate].parameters[0].name;
+    AddNote(&w, "refit point " + name + " = " + ValueText(w.refit.t(0)) + " had no value (" +
+                    got[at[k]].status +
+                    "); at half the step: " + (retaken[k].ok ? "ok" : retaken[k].status));
+    if (!retaken[k].ok) continue;
+    points[at[k]] = halves[k], got[at[k]] = retaken[k], scale[at[k]] = 0.5;
+  }
   for (size_t i = 0; i < work.size(); ++i) {
     Work& w = *work[i];
-    if (!got[i].ok) continue;
+    if (!got[i].ok) {
+      if (!w.simulated && w.signature_prediction.ok) {
+        w.best_chi2 = StandardisedResiduals(*f.observations, w.signature_prediction.mean, f.sigma)
+                          .squaredNorm();
+        w.best_point = w.signature_point, w.best_prediction = w.signature_prediction;
+        w.simulated = true;
+        AddNote(&w, "refitted from its signature run");
+      }
+      continue;
+    }
     const double chi2 = StandardisedResiduals(*f.observations, got[i].mean, f.sigma).squaredNorm();
     if (!w.simulated || chi2 < w.best_chi2) {
       w.best_chi2 = chi2, w.best_point = points[i], w.best_prediction = got[i], w.simulated = true;
     }
-    const double t = w.refit.t(0);
+    const double t = scale[i] * w.refit.t(0);
     if (t != 0) {
-      const Eigen::VectorXd moved =
-          ToVector(got[i].mean) - ToVector(fit.prediction.mean) - fit.jacobian * w.refit.delta;
+      const Eigen::VectorXd moved = ToVector(got[i].mean) - ToVector(fit.prediction.mean) -
+                                    fit.jacobian * (scale[i] * w.refit.delta);
       w.signature = moved / t;
     }
     w.refit = Refit(f, candidates[w.candidate].parameters[0], w.signature);
@@ -247,7 +302,8 @@ void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
     }
   }
   // Damped Gauss–Newton: where the full step does not lower χ² (noisy or curved sensitivities
-  // overshoot), half of it is simulated too.
+  // overshoot), half of it is simulated too. A point without a value counts as not lowering it
+  // and is said in the note with its status (a jam is reported as a jam, not as a slow flow).
   std::vector<size_t> pending(work.size());
   std::iota(pending.begin(), pending.end(), 0);
   for (int attempt = 0; attempt < 2 && !pending.empty(); ++attempt) {
@@ -260,6 +316,10 @@ void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
       const double chi2 =
           got[k].ok ? StandardisedResiduals(*f.observations, got[k].mean, f.sigma).squaredNorm()
                     : INFINITY;
+      if (!got[k].ok)
+        AddNote(&w, "re-centred refit point " + candidates[w.candidate].parameters[0].name +
+                        " = " + ValueText(points[k].effects.back().values[0]) +
+                        " had no value (" + got[k].status + ")");
       if (chi2 < w.best_chi2)
         w.best_chi2 = chi2, w.best_point = points[k], w.best_prediction = got[k];
       else

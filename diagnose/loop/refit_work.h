@@ -41,8 +41,9 @@ struct Work {
   ModelPoint best_point;
   Prediction best_prediction;
   double best_chi2 = 0;
-  // The best of its finite-difference probes, when one fits better than every refit point:
-  // RefineRefits makes it the refit once the re-centred points end (header, RefineRefits).
+  // The best of its simulated probes — the signature run (candidate_step.cc) and the
+  // finite-difference probes — when one fits better than every refit point: RefineRefits makes
+  // it the refit once the re-centred points end (header, RefineRefits).
   ModelPoint probe_point;
   Prediction probe_prediction;
   double probe_chi2 = INFINITY;
@@ -53,7 +54,17 @@ struct Work {
   bool simulated = false;
   bool probe_ok = true;
   std::string probe_status;
+  // The signature run as a simulated point of base + effect (the fit's base parameters, the
+  // effect at the value the signature was taken at); ok false when it had no value.
+  ModelPoint signature_point;
+  Prediction signature_prediction;
 };
+
+// Keeps the signature run aside as a probe of the refit (Work::probe_point): it is a simulated
+// fit of base + effect like any finite-difference probe, and the refit compares maximised
+// likelihoods, so the best simulated point of the candidate is its refit, the base's being the
+// best of every point its calibration simulated.
+void KeepSignatureRun(const Frame& f, const ModelPoint& point, const Prediction& run, Work* w);
 
 Eigen::VectorXd ToVector(const std::vector<double>& v);
 
@@ -78,7 +89,14 @@ std::vector<bool> EvaluateRetakes(ForwardModel& model, const std::vector<size_t>
                                   std::vector<Prediction>& probed);
 
 // Simulates the Gauss–Newton point of each candidate; keeps it when it beats the best so far
-// and corrects the signature by the secant through it.
+// and corrects the signature by the secant through it. A point without a value (a jammed
+// funnel, a run that blew up) is no better than the fit, so, as in damped Gauss–Newton, half
+// the step toward the fit is simulated once in its place; the secant is then taken through
+// the half step. A candidate whose refit points have no value on either try keeps its
+// signature run as its simulated point (and RefineRefits re-centres from there), rather than
+// leaving the ranking on a linearisation the runs could not check: a run without a value is
+// evidence neither for nor against the effect (the data discharged, the simulation did not
+// say how this value would). Each failure is said in the entry's note.
 void SimulateRefits(ForwardModel& model, const Frame& f, const FitState& fit,
                     const std::vector<CandidateEffect>& candidates, std::vector<Work*>& work);
 
@@ -105,8 +123,8 @@ void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
 // profile-likelihood unit, so it is noise), at most `iterations` more each. ΔBIC and the
 // likelihood ratio compare maximised likelihoods: a candidate still far from its minimum after
 // two points (a strongly nonlinear signature, a refit along a valley) would lose to one that
-// happened to converge faster. When the points end, a finite-difference probe that fits better
-// than every refit point becomes the refit: each probe is a simulated fit of base + effect, and
+// happened to converge faster. When the points end, a probe (the signature run, a
+// finite-difference probe) that fits better than every refit point becomes the refit: each probe is a simulated fit of base + effect, and
 // the likelihood ratio and ΔBIC compare maximised likelihoods, the base's being the best of
 // every point its calibration simulated (the `adhesion_coating` twin: refit points 11.05–20.0,
 // a probe 9.11, each with a χ² noise sd of 4.7). The probes do not re-centre the points: a

@@ -10,48 +10,11 @@
 #include "calibrate/sensitivity_refinement.h"
 #include "diagnose/loop/candidate_step.h"
 #include "diagnose/loop/refit_work.h"
+#include "tests/diagnose/loop/jamming_model.h"
 #include "tests/diagnose/loop/one_parameter_fit.h"
 
 namespace demcal::diagnose {
 namespace {
-
-// mean_i = measured_i + a_i (u − u*) + b_i (t − t*), with u the one base parameter and t the
-// effect's: the data are fitted exactly at (u*, t*). A run whose effect value is above `jam_above`
-// or below `jam_below`, or whose base value is outside [u_jam_below, u_jam_above], has no value,
-// as a funnel that jams.
-class JammingModel : public ForwardModel {
- public:
-  std::vector<double> measured{10, 20, 30, 40}, a{1, 1, 1, 1}, b{1, -1, 2, 0};
-  double u_true = 0.5, t_true = 0.1;
-  double jam_above = INFINITY, jam_below = -INFINITY;
-  double u_jam_above = INFINITY, u_jam_below = -INFINITY;
-  int BaseParameters() const override { return 1; }
-  std::vector<std::string> BaseParameterNames() const override { return {"u"}; }
-  BaseCalibration CalibrateBase(int) override { return {}; }
-  int SimulationsRun() const override { return runs_; }
-  std::vector<Prediction> Evaluate(const std::vector<ModelPoint>& points) override {
-    std::vector<Prediction> out;
-    for (const ModelPoint& p : points) {
-      ++runs_;
-      const double u = p.base_unit[0], t = p.effects.empty() ? 0 : p.effects.back().values[0];
-      if (t > jam_above || t < jam_below || u > u_jam_above || u < u_jam_below) {
-        out.push_back({false, "jammed"});
-        continue;
-      }
-      Prediction pr{true, "ok"};
-      for (size_t i = 0; i < measured.size(); ++i) {
-        pr.mean.push_back(measured[i] + a[i] * (u - u_true) + b[i] * (t - t_true));
-        pr.sem.push_back(0.01);
-        pr.spread.push_back(1.0);
-      }
-      out.push_back(pr);
-    }
-    return out;
-  }
-
- private:
-  int runs_ = 0;
-};
 
 struct Setup {
   JammingModel model;
@@ -140,6 +103,18 @@ TEST_CASE("every coordinate held in a step is named in the note", "[unit]") {
   CHECK(s.work.best_point.base_unit[0] == Approx(u0));
   CHECK(s.work.retake_note.find("held for a refit step, u") != std::string::npos);
   CHECK(s.work.retake_note.find("held for a refit step, t") != std::string::npos);
+}
+
+TEST_CASE("a re-centred refit point without a value is said in the note", "[unit]") {
+  Setup s;
+  // The Gauss–Newton step from t = 0.3 lands on the truth t = 0.1, which jams; its half, 0.2,
+  // does not (the probes at 0.3 ± 2h are above 0.2).
+  s.model.jam_from = 0.05;
+  s.model.jam_to = 0.15;
+  refits::RecentredRefits(s.model, s.frame, s.fit, {s.effect}, {&s.work});
+  CHECK(s.work.best_point.effects.back().values[0] == Approx(0.2));
+  CHECK(s.work.retake_note.find("re-centred refit point t = 0.1 had no value (jammed)") !=
+        std::string::npos);
 }
 
 }  // namespace demcal::diagnose
