@@ -86,6 +86,20 @@ Scene PileOnFixedBase() {
   return s;
 }
 
+// The base alone (289 fixed spheres) under a feed's stream.
+Scene StreamOnFixedBase() {
+  Scene s = PileOnFixedBase();
+  s.particles.erase(s.particles.begin(), s.particles.begin() + 192);
+  FactorySpec feed;
+  feed.name = "feed";
+  feed.region = InsertionRegion::Cylinder({0.035, 0.035, 0}, 0.008, 0.04, 0.07);
+  feed.species = {0};
+  feed.mass_fractions = {1};
+  feed.mass_rate_kg_s = 0.05;
+  s.factories = {feed};
+  return s;
+}
+
 }  // namespace
 
 TEST_CASE("fixed-fixed pairs are not listed; every pair with a moving sphere is", "[unit]") {
@@ -165,15 +179,7 @@ TEST_CASE("a pile on a fixed base moves bit-identically with fixed pairs exclude
 TEST_CASE("a stream poured onto a fixed base is bit-identical with 1 and 2 threads", "[unit]") {
   // Factory newcomers are appended after the fixed spheres and must join the moving part; the
   // periodic spatial re-sort keeps the fixed spheres last.
-  Scene s = PileOnFixedBase();
-  s.particles.erase(s.particles.begin(), s.particles.begin() + 192);
-  FactorySpec feed;
-  feed.name = "feed";
-  feed.region = InsertionRegion::Cylinder({0.035, 0.035, 0}, 0.008, 0.04, 0.07);
-  feed.species = {0};
-  feed.mass_fractions = {1};
-  feed.mass_rate_kg_s = 0.05;
-  s.factories = {feed};
+  const Scene s = StreamOnFixedBase();
   Particles result[2];
   for (const int threads : {1, 2}) {
     Simulation sim(s, {.threads = threads});
@@ -201,15 +207,7 @@ TEST_CASE("a run counts the particles its rebuilds searched: one step at a time 
   // RunSummary::rebuild_search sums NeighbourList::LastMovers and FirstFixed over the rebuilds
   // of the run's steps. Runs of one step each read them off the list after each rebuild; their
   // sums are one long run's (whose kicks join across steps: the state must agree bit for bit).
-  Scene s = PileOnFixedBase();
-  s.particles.erase(s.particles.begin(), s.particles.begin() + 192);
-  FactorySpec feed;
-  feed.name = "feed";
-  feed.region = InsertionRegion::Cylinder({0.035, 0.035, 0}, 0.008, 0.04, 0.07);
-  feed.species = {0};
-  feed.mass_fractions = {1};
-  feed.mass_rate_kg_s = 0.05;
-  s.factories = {feed};
+  const Scene s = StreamOnFixedBase();
   Simulation whole(s, {.threads = 1}), stepped(s, {.threads = 1});
   std::string err;
   REQUIRE(whole.Initialize(&err));
