@@ -41,12 +41,13 @@ class NeighbourList {
     PeriodicBox periodic;  // periodic axes: the grid spans the domain and wraps around
   };
   // At most this many cells per binned particle (and at least 4,096 cells in all): beyond, the
-  // cells are enlarged (MakeGrid). A packed bed has ≈ 0.7 cells per particle and a pour's
-  // loose column a few; a far-flung particle (clamped into a large domain) makes the grid span
-  // the domain, which at a cut-off per cell could ask billions of cells (an int overflow and
-  // gigabytes of cell starts) and pass over all of them at every rebuild. Larger cells only
-  // add candidates: the list is the same.
-  static constexpr double kMaxCellsPerParticle = 16;
+  // cells are enlarged (MakeGrid). A packed bed has ≈ 0.7 cells per particle, a pour's column
+  // over a wide base tens (cell_order_test: 48); a far-flung particle (clamped into a large
+  // domain) makes the grid span the domain, which at a cut-off per cell could ask billions of
+  // cells (an int overflow and gigabytes of cell starts) and pass over all of them at every
+  // rebuild. Larger cells add candidates (the list is the same) and change the re-sort's order,
+  // so the cap sits above any geometry a run holds together: 256 B of cell starts per particle.
+  static constexpr double kMaxCellsPerParticle = 64;
 
   // `body` (optional): spheres with the same non-negative body index (members of one clump)
   // are never paired. Slots from `first_fixed` on are fixed spheres (clamped to the count).
