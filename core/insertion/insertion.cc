@@ -6,6 +6,8 @@
 #include <sstream>
 #include <vector>
 
+#include "core/math/bounded_cells.h"
+
 namespace demcal::core {
 namespace {
 
@@ -19,12 +21,9 @@ class OccupancyGrid {
   static constexpr double kMaxCellsPerParticle = 16;
   OccupancyGrid(const Vec3& lo, const Vec3& hi, double cell, double particles) : origin_(lo) {
     const double max_cells = std::min(1e8, std::max(4096.0, kMaxCellsPerParticle * particles));
-    auto along = [&](int a) {  // in double: the span over a cell may exceed any int
-      return std::max(1.0, std::min(std::ceil((hi[a] - lo[a]) / cell), 1e9));
-    };
-    while (along(0) * along(1) * along(2) > max_cells) cell *= 1.25;
-    cell_ = cell;
-    for (int a = 0; a < 3; ++a) dims_[a] = static_cast<int>(along(a));
+    cell_ = CellForAtMost(hi - lo, cell, max_cells, CellRounding::kUp);
+    for (int a = 0; a < 3; ++a)
+      dims_[a] = static_cast<int>(CellsAlong(hi[a] - lo[a], cell_, CellRounding::kUp));
     cells_.resize(static_cast<size_t>(dims_[0]) * dims_[1] * dims_[2]);
   }
   void Add(const Vec3& x, uint32_t slot) {

@@ -1,5 +1,6 @@
 #include "core/neighbours/neighbour_list.h"
 
+#include "core/math/bounded_cells.h"
 #include "core/math/parallel_passes.h"
 #include "core/neighbours/bucket_index.h"
 #include "core/neighbours/neighbour_list_search.h"
@@ -60,15 +61,11 @@ NeighbourList::Grid NeighbourList::MakeGrid(const Settings& s, Vec3 lo, Vec3 hi,
   const Vec3 extent = hi - lo;
   const double max_cells =
       std::min(1e9, std::max(4096.0, kMaxCellsPerParticle * static_cast<double>(particles)));
-  double cell = cutoff;
-  auto cells_along = [&](int a) {  // in double: extent / cell may exceed any int
-    return std::max(1.0, std::min(std::floor(extent[a] / cell), 1e9));
-  };
-  while (cells_along(0) * cells_along(1) * cells_along(2) > max_cells) cell *= 1.25;
+  const double cell = CellForAtMost(extent, cutoff, max_cells, CellRounding::kDown);
   g.origin = lo;
   int* dims[3] = {&g.nx, &g.ny, &g.nz};
   for (int a = 0; a < 3; ++a) {
-    *dims[a] = static_cast<int>(cells_along(a));
+    *dims[a] = static_cast<int>(CellsAlong(extent[a], cell, CellRounding::kDown));
     g.inv_cell[a] = *dims[a] / extent[a];  // cells stretched to tile the span exactly
     // A periodic axis spans the whole period; wrapping needs at least 3 cells (else whole axis).
     g.wrap[a] = s.periodic.IsPeriodic(a) && *dims[a] >= 3;

@@ -2,6 +2,8 @@
 
 #include <limits>
 
+#include "core/math/bounded_cells.h"
+
 namespace demcal::core {
 
 void TriangleGrid::Build(const std::vector<Vec3>& lo, const std::vector<Vec3>& hi, double cell_m) {
@@ -30,17 +32,12 @@ void TriangleGrid::Build(const std::vector<Vec3>& lo, const std::vector<Vec3>& h
 
   // Enlarge the cells until the grid has a bounded number of them.
   const double max_cells = std::max(64.0, 16.0 * static_cast<double>(n));
-  auto cells_for = [&](double c) {
-    double total = 1;
-    for (int a = 0; a < 3; ++a) total *= std::max(1.0, std::ceil(size[a] / c));
-    return total;
-  };
-  while (cells_for(cell) > max_cells) cell *= 1.25;
+  cell = CellForAtMost(size, cell, max_cells, CellRounding::kUp);
 
   cell_m_ = cell;
   inv_cell_ = 1.0 / cell;
   origin_ = box_lo;
-  for (int a = 0; a < 3; ++a) dims_[a] = static_cast<int>(std::max(1.0, std::ceil(size[a] / cell)));
+  for (int a = 0; a < 3; ++a) dims_[a] = static_cast<int>(CellsAlong(size[a], cell, CellRounding::kUp));
   // The boxes' own upper corner, not the last cell's: a query above a flat mesh (one cell thick,
   // a cell being a triangle long) then visits nothing instead of every triangle of the layer.
   extent_hi_ = box_hi;
