@@ -6,6 +6,7 @@
 #include <numbers>
 #include <variant>
 
+#include "core/bodies/contact_multiplicity.h"
 #include "core/bodies/unit_clump.h"
 #include "core/contact/normal_model.h"
 
@@ -65,34 +66,39 @@ double SphereRayleighTime(const Material& m, double radius_m) {
          (0.1631 * m.poisson_ratio + 0.8766);
 }
 
-// Smallest member radius of a species' grain per unit of its size-distribution diameter: 1/2 for
-// a sphere; for a clump, whose size is the equivalent-volume diameter, the smallest member
-// sphere's radius at unit size (UnitDiameterClumpMembers, as the engine places it). A shape that
-// does not build leaves 1/2: validation reports it.
-double MinMemberRadiusPerDiameter(const Species& sp) {
+// The radius whose Rayleigh time a species' grain takes, per unit of its size-distribution
+// diameter: 1/2 for a sphere; for a clump, whose size is the equivalent-volume diameter, the
+// smallest member sphere's radius at unit size (UnitDiameterClumpMembers, as the engine places
+// it) times ClumpStepFactor, which shortens the step where members nearly coincide
+// (core/bodies/contact_multiplicity.h). A shape that does not build leaves 1/2: validation
+// reports it.
+double StepRadiusPerDiameter(const Species& sp) {
   if (sp.clump_shape.empty()) return 0.5;
   std::vector<ClumpSphere> members;
   std::string ignored;  // a shape that makes no clump is refused where the scene is checked
   if (!UnitDiameterClumpMembers(sp.clump_shape, &members, &ignored)) return 0.5;
   double smallest = std::numeric_limits<double>::infinity();
   for (const ClumpSphere& m : members) smallest = std::min(smallest, m.radius_m);
-  return smallest;
+  const double unit_volume_m3 = std::numbers::pi / 6;  // the union at unit equivalent diameter
+  return smallest * ClumpStepFactor(members, unit_volume_m3);
 }
 }  // namespace
 
 // Over every sphere that touches, clump members included, as LIGGGHTS' check does: a member
 // smaller than its grain's equivalent sphere rings faster, and with the grain's size as the
-// scale a compact chain (members close together, several in one contact) ran unstable.
+// scale a compact chain (members close together, several in one contact) ran unstable; members
+// that nearly coincide shorten it further (StepRadiusPerDiameter).
 double RayleighTime(const Scene& scene) {
+  std::vector<double> radius_per_diameter;  // per species; a clump's costs a mass integration
+  for (const Species& sp : scene.species) radius_per_diameter.push_back(StepRadiusPerDiameter(sp));
   double t = std::numeric_limits<double>::infinity();
-  for (const Species& sp : scene.species)
-    t = std::min(t, SphereRayleighTime(scene.materials[sp.material],
-                                       MinMemberRadiusPerDiameter(sp) * sp.size.MinDiameter()));
+  for (size_t i = 0; i < scene.species.size(); ++i)
+    t = std::min(t, SphereRayleighTime(scene.materials[scene.species[i].material],
+                                       radius_per_diameter[i] * scene.species[i].size.MinDiameter()));
   for (const ParticleSpec& p : scene.particles)
     if (p.diameter_m > 0)
       t = std::min(t, SphereRayleighTime(scene.materials[scene.species[p.species].material],
-                                         MinMemberRadiusPerDiameter(scene.species[p.species]) *
-                                             p.diameter_m));
+                                         radius_per_diameter[p.species] * p.diameter_m));
   return t;
 }
 

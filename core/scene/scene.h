@@ -85,7 +85,8 @@ struct Scene {
 
 // Rayleigh time of the scene's stiffest, smallest sphere (docs/physics.md §1.5):
 // Δt_R = π R sqrt(ρ/G) / (0.1631 ν + 0.8766), minimised over species and placed particles, with
-// R a clump's smallest member sphere.
+// R a clump's smallest member sphere, shortened where its members nearly coincide and several
+// touch at one point (core/bodies/contact_multiplicity.h).
 double RayleighTime(const Scene& scene);
 
 // The time step a run of the scene takes: time.timestep_s if set, else time.rayleigh_fraction ×

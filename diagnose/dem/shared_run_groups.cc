@@ -18,9 +18,7 @@ uint64_t PreparedSceneDigest(const calibrate::RunGroup& g, const calibrate::Para
   std::string why;
   if (!g.space.Apply(space.FromUnit(unit), g.condition, &model, &why)) return 0;
   if (g.prepare) g.prepare(&model);
-  const double dt = model.time.timestep_s > 0
-                        ? model.time.timestep_s
-                        : model.time.rayleigh_fraction * core::RayleighTime(model);
+  const double dt = core::TimeStep(model);
   core::Fnv1a64 h;
   for (const core::FingerprintPart& p :
        core::SceneFingerprint(model, dt, core::NeighbourSkin(model)))
