@@ -53,3 +53,14 @@ TEST_CASE("Rayleigh time of a clump: its smallest member sphere, not its equival
   placed.particles.back().diameter_m = 0.002;
   CHECK(RayleighTime(placed) == Approx(RayleighTime(pair)).epsilon(1e-9));
 }
+
+TEST_CASE("Rayleigh time of a clump whose members coincide: shortened by the springs at one point",
+          "[core][timestep]") {
+  // Three equal members on one centre: the union is one sphere of the grain's diameter, three
+  // springs act at each contact point (nine between two such grains) on that sphere's mass, so
+  // the step is a third of the sphere's (core/bodies/contact_multiplicity.h).
+  Scene stacked = Glass(0.002);
+  stacked.species[0].clump_shape = {{{0, 0, 0}, 0.5}, {{0, 0, 0}, 0.5}, {{0, 0, 0}, 0.5}};
+  CHECK(RayleighTime(stacked) == Approx(RayleighTime(Glass(0.002)) / 3).epsilon(1e-9));
+  CHECK(TimeStep(stacked) == Approx(0.2 * RayleighTime(Glass(0.002)) / 3).epsilon(1e-9));
+}
