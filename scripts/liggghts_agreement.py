@@ -1,6 +1,8 @@
-"""Engine agreement where the laws are the same, and the metric port's check; called by
-scripts/make_liggghts_datasets.py (--agreement BUILD_DIR [--agreement-rolling off|cdt],
---check-port DEMCAL_AOR_OUT_DIR).
+"""Engine agreement where the laws are the same, and the metric port's check:
+  python3 scripts/liggghts_agreement.py --agreement BUILD_DIR [--agreement-rolling off|cdt]
+                                        [--replicates N]
+  python3 scripts/liggghts_agreement.py --check-port DEMCAL_AOR_OUT_DIR
+It reads the datasets' recipe (scripts/make_liggghts_datasets.py) and writes beside its data.
 
 Agreement, rolling off (default): no rolling resistance in either engine (demcal
 `contact_model.rolling = "none"`, LIGGGHTS `gran model hertz tangential history`). Rolling cdt:
@@ -14,7 +16,7 @@ offset's own standard error in those units, sqrt(1/n_L + 1/n_D). Written to
 datasets/liggghts_crossengine/agreement.csv (rolling off) or agreement_cdt.csv (rolling cdt) and
 printed as a Markdown table.
 """
-import json, math, os, struct, subprocess, tempfile, time
+import argparse, json, math, os, struct, subprocess, sys, tempfile, time
 
 import make_liggghts_datasets as mk
 import liggghts_measure as measure
@@ -152,3 +154,20 @@ def check_port(out_dir, log):
             worst = max(worst, diff / (1.0 if k == "angle_deg" else 1e-3))
             print(f"r{run['replicate']} {k}: demcal {run[k]:.6g}  port {got[k]:.6g}")
     print(f"largest difference: {worst:.2e} (deg for angles, mm for lengths)")
+
+
+def cli():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    what = ap.add_mutually_exclusive_group(required=True)
+    what.add_argument("--agreement", metavar="BUILD_DIR")
+    what.add_argument("--check-port", metavar="DEMCAL_AOR_OUT_DIR")
+    ap.add_argument("--replicates", type=int, default=mk.REPLICATES)
+    ap.add_argument("--agreement-rolling", choices=["off", "cdt"], default="off",
+                    help="off: no rolling resistance in either engine; cdt: LIGGGHTS cdt against "
+                         "demcal cdt_relative at the base coefficients")
+    log = lambda s: print(time.strftime("%H:%M:%S ") + s, file=sys.stderr, flush=True)  # noqa: E731
+    return main(ap.parse_args(), log)
+
+
+if __name__ == "__main__":
+    cli()

@@ -4,9 +4,8 @@
 measured; demcal did not make them.
 
   python3 scripts/make_liggghts_datasets.py [--cases control,adhesion,...] [--replicates 4]
-  python3 scripts/make_liggghts_datasets.py --agreement BUILD_DIR   # rolling off in both engines
-  python3 scripts/make_liggghts_datasets.py --agreement BUILD_DIR --agreement-rolling cdt
-  python3 scripts/make_liggghts_datasets.py --check-port DEMCAL_AOR_OUT_DIR
+The engines side by side where their laws agree, and the heap metric's port:
+scripts/liggghts_agreement.py.
 
 Recipe (datasets/liggghts_crossengine/README.md):
  1. The model of examples/diagnose/aor_bp_heap.json (rig 1: the 16 mm slot box),
@@ -271,16 +270,8 @@ def main():
     ap.add_argument("--cases", default=",".join(CASES))
     ap.add_argument("--replicates", type=int, default=REPLICATES)
     ap.add_argument("--provenance", default=PROVENANCE)
-    ap.add_argument("--agreement", metavar="BUILD_DIR")
-    ap.add_argument("--check-port", metavar="DEMCAL_AOR_OUT_DIR")
-    ap.add_argument("--agreement-rolling", choices=["off", "cdt"], default="off",
-                    help="off: no rolling resistance in either engine; cdt: LIGGGHTS cdt against "
-                         "demcal cdt_relative at the base coefficients")
     a = ap.parse_args()
     log = lambda s: print(time.strftime("%H:%M:%S ") + s, file=sys.stderr, flush=True)  # noqa: E731
-    if a.check_port or a.agreement:
-        import liggghts_agreement
-        return liggghts_agreement.main(a, log)
     for case in a.cases.split(","):
         if case not in CASES:
             sys.exit(f"--cases: unknown case '{case}' (known: {', '.join(CASES)})")
