@@ -29,11 +29,13 @@
 namespace demcal::core {
 
 // Tangent points closer than this many of the smaller member radius count as one point (the
-// weight falls linearly to 0 there). 0.3: on rig 3 (docs/physics.md §1.5) 3-sphere chains with
-// neighbouring members 0.156 radii apart ended non_finite in 3 of 4 runs at their members' step,
-// and 0.31 apart in none of 4; the milder heaps of workflow/reproduce/aspect_bounds.h failed
-// only below 0.10.
-inline constexpr double kCoincidentSpacing = 0.3;
+// weight falls linearly to 0 there). Two members a distance s apart both press on a partner of
+// their size once the overlap δ exceeds the gap s²/(4r) the second one stands back, i.e. within
+// s < 2√(rδ), the contact patch's diameter. 0.5 is that diameter at δ = 6 % of r, the overlap of
+// a 1 m/s impact at the soft stiffness (×0.01) of the quick fidelities. Measured on rig 3
+// (docs/physics.md §1.5): 3-sphere chains with members 0.26-0.31 radii apart ended non_finite
+// at their members' step and ran at half of it; a 0.3 cut-off left them unstable.
+inline constexpr double kCoincidentSpacing = 0.5;
 
 // The most member springs that act at one contact point of the clump `members` (any frame and
 // size): 1 for a sphere or for members apart by kCoincidentSpacing or more, up to n for n

@@ -23,7 +23,7 @@
 // 0.36) and 2.0 (1 of 3), and with the Rayleigh time of the smallest member sphere, which the
 // engine now takes (core/scene/scene.cc), both gave heaps 3 of 3: the bounds are conservative.
 // The engine's own step rule for members that nearly coincide (core/bodies/contact_multiplicity.h)
-// shortens the step of the shortest chains searched to 0.55-0.70 of their members'.
+// shortens the step of the shortest chains searched to 0.40-0.62 of their members'.
 // The workflow file is checked against both bounds (workflow_file.cc); the search uses them as
 // each count's bracket (shape_search.h). Scale-free: the chain is normalised to the species' size.
 //

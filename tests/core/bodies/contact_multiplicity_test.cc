@@ -47,9 +47,9 @@ TEST_CASE("coincident members: k springs at one point on one sphere's mass", "[c
 
 TEST_CASE("unequal members touch a common tangent plane closer than their centres stand",
           "[core][timestep]") {
-  // Radii 1 and 0.5, centres 0.55 apart: the outer tangent points are √(0.55² − 0.5²) = 0.229
-  // apart, 0.458 of the smaller radius: past the rule, one spring per point.
-  const std::vector<ClumpSphere> apart = {{{0, 0, 0}, 1.0}, {{0.55, 0, 0}, 0.5}};
+  // Radii 1 and 0.5, centres 0.7 apart: the outer tangent points are √(0.7² − 0.5²) = 0.490
+  // apart, 0.980 of the smaller radius: past the rule, one spring per point.
+  const std::vector<ClumpSphere> apart = {{{0, 0, 0}, 1.0}, {{0.7, 0, 0}, 0.5}};
   CHECK(ContactMultiplicity(apart) == Approx(1).margin(1e-12));
   // Centres 0.501 apart: nearly internally tangent, the points √(0.501² − 0.25) = 0.0316 apart
   // (0.0632 of the smaller radius): 1 + (1 − 0.0632/0.15) springs.
@@ -71,6 +71,11 @@ TEST_CASE("near-spherical chains get a shorter step, elongated ones keep their m
   const double f = ClumpStepFactor(near.spheres, near.clump_volume_m3);
   CHECK(f < 0.1155 / 0.2);
   CHECK(f >= 1.0 / 3);  // three members give three springs at most, on more than one's mass
+  // Aspect 1.177 (members 0.26 radii apart) still blew up at 0.918 of the member's step in a
+  // diagnosis's refit (μs 0.84) and ran at half of it: the rule must ask for less than 0.918.
+  ShapeApproximation wider;
+  REQUIRE(ApproximateEllipsoid({1.1769, 1, 1}, 3, &wider, &error));
+  CHECK(ClumpStepFactor(wider.spheres, wider.clump_volume_m3) < 0.918);
   // A 3:1 chain of 5 spheres, the elongated grains calibrated in the main job, is unchanged.
   ShapeApproximation chain;
   REQUIRE(ApproximateEllipsoid({3, 1, 1}, 5, &chain, &error));
