@@ -88,6 +88,7 @@ void NeighbourList::BinParticles(const Grid& grid, const std::vector<Vec3>& x, s
       cell_of_particle_[i] = i < moving || within_reach(x[i]) ? grid.CellOf(x[i]) : -1;
   });
   BucketIndex(cell_of_particle_, cells, cell_start_, cell_particles_);
+  cell_particles_.resize(cell_particles_.size() + kGatherRun, 0);
 }
 
 bool NeighbourList::SearchOnce(const Grid& grid, const Settings& s, const std::vector<Vec3>& x,

@@ -153,7 +153,8 @@ class NeighbourList {
   // cell binning scratch (reused between builds)
   std::vector<int> cell_of_particle_;
   std::vector<uint32_t> cell_start_;
-  std::vector<uint32_t> cell_particles_;
+  std::vector<uint32_t> cell_particles_;  // then kGatherRun spare entries (ForEachForwardCandidate)
+  static constexpr uint32_t kGatherRun = 16;
   std::vector<uint8_t> fixed_rows_;  // per row of cells (z, y): holds a binned fixed sphere
   // Periodic grids: rows found in one search, up to row_capacity_ partners per particle, sized
   // from the last build's longest row; a row that overflows sends the build to a count-then-fill
