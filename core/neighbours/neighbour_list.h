@@ -100,7 +100,7 @@ class NeighbourList {
     return {VectorBytes(row_start_, reference_position_, cell_of_particle_,
                         cell_particles_, row_scratch_, is_mover_, new_slot_, movers_) +
                 VectorBytes(found_, found_count_, incoming_start_),
-            VectorBytes(partner_, incoming_), VectorBytes(cell_start_)};
+            VectorBytes(partner_, incoming_) + BlockBytes(), VectorBytes(cell_start_, fixed_rows_)};
   }
 
   // Checkpointing: the list and its rebuild reference (cell scratch is rebuilt on demand).
@@ -137,6 +137,11 @@ class NeighbourList {
   void ForEachCandidate(const Grid& grid, size_t i, const std::vector<Vec3>& x,
                         const std::vector<double>& r, const std::vector<int>* body, double skin,
                         Visit&& visit) const;
+  // Each moving pair from one side only; grids with no periodic axis (neighbour_list_search.h).
+  template <class Visit>
+  void ForEachForwardCandidate(const Grid& grid, size_t i, const std::vector<Vec3>& x,
+                               const std::vector<double>& r, const std::vector<int>* body,
+                               double skin, Visit&& visit) const;
 
   std::vector<uint32_t> row_start_{0};
   std::vector<uint32_t> partner_;
@@ -148,11 +153,26 @@ class NeighbourList {
   // cell binning scratch (reused between builds)
   std::vector<int> cell_of_particle_;
   std::vector<uint32_t> cell_start_;
-  std::vector<uint32_t> cell_particles_;
-  // Rows found in one search: up to row_capacity_ partners per particle, sized from the last
-  // build's longest row; a row that overflows sends the build to a count-then-fill search.
+  std::vector<uint32_t> cell_particles_;  // then kGatherRun spare entries (ForEachForwardCandidate)
+  static constexpr uint32_t kGatherRun = 16;
+  std::vector<uint8_t> fixed_rows_;  // per row of cells (z, y): holds a binned fixed sphere
+  // Periodic grids: rows found in one search, up to row_capacity_ partners per particle, sized
+  // from the last build's longest row; a row that overflows sends the build to a count-then-fill
+  // search.
   bool SearchOnce(const Grid& grid, const Settings& s, const std::vector<Vec3>& x,
                   const std::vector<double>& r, const std::vector<int>* body);
+  // The rows of a build on a grid with no periodic axis: the half-stencil search, each pair
+  // listed in its lower slot's row (neighbour_list.cc).
+  void SearchForward(const Grid& grid, const Settings& s, const std::vector<Vec3>& x,
+                     const std::vector<double>& r, const std::vector<int>* body);
+  void MarkFixedRows(const Grid& grid);
+  static constexpr size_t kSearchBlock = 2048;  // particles per buffer of SearchForward
+  std::vector<std::vector<uint32_t>> block_found_;
+  size_t BlockBytes() const {
+    size_t bytes = VectorBytes(block_found_);
+    for (const auto& b : block_found_) bytes += VectorBytes(b);
+    return bytes;
+  }
   std::vector<uint32_t> row_scratch_;
   uint32_t row_capacity_ = 32;
   // Update() scratch: movers, their partners on both sides, partners gained by kept rows.

@@ -1,6 +1,7 @@
 #pragma once
 // Internal to the neighbour list (neighbour_list.cc, neighbour_list_update.cc): the cell of a
-// point and the candidate search over the 27 cells around a particle.
+// point and the candidate searches over the cells around a particle.
+#include <algorithm>
 #include <cmath>
 
 #include "core/neighbours/neighbour_list.h"
@@ -85,6 +86,78 @@ void NeighbourList::ForEachCandidate(const Grid& grid, size_t i, const std::vect
         visit_run(first, last);
       }
     }
+  }
+}
+
+// Half-stencil search of a full build on a grid with no periodic axis: each pair of moving
+// particles is visited from one side only, so a search reads 5 rows of three x-adjacent cells
+// instead of 9 (in a loose column, under one particle per cell, a row's bounds and the loop's
+// exit cost more than its candidates). Rows are ordered by (z, y): i visits its own row with
+// j > i (as the full search does), the four rows after it whole (j < i included: the caller
+// files such a pair under row j), and of the four rows before it only fixed partners
+// (j ≥ first_fixed_, never searched themselves), and only in rows that hold any (fixed_rows_).
+// The same distance test as ForEachCandidate: the same pairs.
+template <class Visit>
+void NeighbourList::ForEachForwardCandidate(const Grid& grid, size_t i,
+                                            const std::vector<Vec3>& x,
+                                            const std::vector<double>& r,
+                                            const std::vector<int>* body, double skin,
+                                            Visit&& visit) const {
+  const int own_body = body ? (*body)[i] : -1;
+  const int c = cell_of_particle_[i];
+  const int hx = c % grid.nx, hy = (c / grid.nx) % grid.ny, hz = c / (grid.nx * grid.ny);
+  const int x_lo = std::max(hx - 1, 0), x_hi = std::min(hx + 1, grid.nx - 1);
+  auto visit_row = [&](int row, uint32_t min_j) {
+    const uint32_t first = cell_start_[row * grid.nx + x_lo];
+    const uint32_t last = cell_start_[row * grid.nx + x_hi + 1];
+    for (uint32_t s = first; s < last; ++s) {
+      const uint32_t j = cell_particles_[s];
+      if (j < min_j || (own_body >= 0 && (*body)[j] == own_body)) continue;
+      const double reach = r[i] + r[j] + skin;
+      if (Norm2(x[i] - x[j]) < reach * reach) visit(j);
+    }
+  };
+  // Rows of at most kGatherRun particles are copied whole into one buffer (kGatherRun indices
+  // whatever the row holds: cell_particles_ ends in that many spare entries) and tested in one
+  // loop without branches on the candidates: one loop exit per particle instead of one per row,
+  // whose trip counts (0, 1, 2, … in a loose column) no predictor follows. Longer rows (a dense
+  // bed of small spheres) are visited as they are.
+  uint32_t gathered[5 * kGatherRun];
+  uint32_t count = 0, own_count = 0;
+  auto gather = [&](int row) {
+    const uint32_t first = cell_start_[row * grid.nx + x_lo];
+    const uint32_t last = cell_start_[row * grid.nx + x_hi + 1];
+    if (last - first > kGatherRun) return false;
+    std::copy_n(cell_particles_.data() + first, kGatherRun, gathered + count);
+    count += last - first;
+    return true;
+  };
+  const uint32_t own_min = static_cast<uint32_t>(i) + 1;
+  for (int dz = -1; dz <= 1; ++dz) {
+    const int z = hz + dz;
+    if (z < 0 || z >= grid.nz) continue;
+    for (int dy = -1; dy <= 1; ++dy) {
+      const int y = hy + dy;
+      if (y < 0 || y >= grid.ny) continue;
+      const int row = z * grid.ny + y;
+      if (dz == 0 && dy == 0) {
+        if (count == 0 && gather(row)) own_count = count;  // the own row comes first
+        else visit_row(row, own_min);
+      } else if (dz > 0 || (dz == 0 && dy > 0)) {
+        if (!gather(row)) visit_row(row, 0);
+      } else if (fixed_rows_[row]) {
+        visit_row(row, first_fixed_);
+      }
+    }
+  }
+  const Vec3 xi = x[i];
+  const double ri = r[i];
+  for (uint32_t k = 0; k < count; ++k) {
+    const uint32_t j = gathered[k];
+    const double reach = ri + r[j] + skin;
+    const bool near = Norm2(xi - x[j]) < reach * reach;
+    if (near & ((k >= own_count) | (j > i)) && !(own_body >= 0 && (*body)[j] == own_body))
+      visit(j);
   }
 }
 

@@ -170,6 +170,24 @@ TEST_CASE("cell list handles a domain smaller than one cut-off", "[unit]") {
   CheckAgainstBruteForce(tiny, x, r);
 }
 
+TEST_CASE("cell list matches brute force in rows of cells both short and crowded", "[unit]") {
+  // A full build gathers a row of three cells into one buffer when it holds at most 16 spheres
+  // and visits longer rows one by one: small spheres on a grid sized by the largest one crowd
+  // the cells, so both kinds of row and both kinds of partner (moving, fixed) are met here.
+  const NeighbourList::Settings settings{{0, 0, 0}, {0.03, 0.03, 0.03}, 0.001, 0.004};
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 0.03), radius(0.0005, 0.004);
+  for (const size_t n : {size_t{60}, size_t{400}, size_t{3000}}) {
+    std::vector<Vec3> x(n);
+    std::vector<double> r(n);
+    for (size_t i = 0; i < n; ++i) x[i] = {u(rng), u(rng), u(rng)}, r[i] = radius(rng);
+    for (const size_t first_fixed : {n, n / 2, size_t{1}}) {
+      INFO(n << " spheres, first fixed slot " << first_fixed);
+      CheckAgainstBruteForce(settings, x, r, first_fixed);
+    }
+  }
+}
+
 TEST_CASE("cell list leaves out fixed-fixed pairs and only those", "[unit]") {
   // Fixed spheres in the slots from first_fixed on: the oracle drops pairs with both there.
   const NeighbourList::Settings settings{{0, 0, 0}, {0.05, 0.05, 0.05}, 0.001, 0.003};
