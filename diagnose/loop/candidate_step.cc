@@ -134,6 +134,22 @@ void RefitInside(ForwardModel& model, const Frame& f, const FitState& fit,
   out->inside_residuals = rows.refit_residuals;
 }
 
+// The fit a simulated refit leads to: its best point and prediction, its sensitivities (the
+// re-estimated ones when it has them) with its signature as one more fitted coordinate.
+FitState RefittedFit(const Frame& f, const FitState& fit, const Work& w,
+                     const std::vector<CandidateEffect>& candidates) {
+  FitState next;
+  next.point = w.best_point;
+  next.prediction = w.best_prediction;
+  next.jacobian.resize(f.n(), f.fitted + 1);
+  next.jacobian << (w.jacobian.size() ? w.jacobian : fit.jacobian), w.signature;
+  next.lower = fit.lower;
+  next.upper = fit.upper;
+  next.lower.push_back(candidates[w.candidate].parameters[0].lower);
+  next.upper.push_back(candidates[w.candidate].parameters[0].upper);
+  return next;
+}
+
 }  // namespace
 
 StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>& observations,
@@ -253,14 +269,9 @@ StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>
                                   observations, out.step.entries[win].key, out.step.entries[t].key);
   }
   out.has_winner = true;
-  out.next.point = w.best_point;
-  out.next.prediction = w.best_prediction;
-  out.next.jacobian.resize(f.n(), f.fitted + 1);
-  out.next.jacobian << (w.jacobian.size() ? w.jacobian : fit.jacobian), w.signature;
-  out.next.lower = fit.lower;
-  out.next.upper = fit.upper;
-  out.next.lower.push_back(candidates[w.candidate].parameters[0].lower);
-  out.next.upper.push_back(candidates[w.candidate].parameters[0].upper);
+  out.next = RefittedFit(f, fit, w, candidates);
+  if (out.step.ranking.tied >= 0)
+    out.tied_fit = RefittedFit(f, fit, work[out.step.ranking.tied], candidates);
   return out;
 }
 

@@ -16,7 +16,8 @@ namespace demcal::diagnose {
 struct StepOutcome {
   DiagnosisStep step;
   bool has_winner = false;
-  FitState next;  // the winner's refitted fit (valid when has_winner)
+  FitState next;      // the winner's refitted fit (valid when has_winner)
+  FitState tied_fit;  // the refitted fit of the entry tied with it (valid when ranking.tied >= 0)
   std::vector<PhaseTime> phases;
   // Per entry: its signature per unit of its parameter (raw units), secant-corrected by its
   // refits.

@@ -74,9 +74,10 @@ bool MechanismNamed(const Diagnosis& d, const std::vector<CandidateEffect>& cand
   return false;
 }
 
-// `after_fit` is what the "after" figures describe: the fit with the named effects, or, for a
+// `after_fit` is what the "after" figures describe: the fit with the named effects; for a
 // model-form answer that re-values a modelled parameter, that re-valued fit (the base model's
-// own mechanism at the value the data ask for), so χ²/dof after says how well the answer fits.
+// own mechanism at the value the data ask for); for "not told apart", the worse tied refit. So
+// χ²/dof after says how well the answer fits.
 void Finish(const std::vector<Observation>& observations, const FitState& fit,
             const FitState& after_fit, const DiagnoseOptions& options,
             const std::vector<CandidateEffect>& candidates, Diagnosis* d) {
@@ -111,6 +112,23 @@ bool RevaluesOnly(const DiagnosisStep& step, const std::vector<CandidateEffect>&
   return true;
 }
 
+// Of the tied refits, the one whose gap test gives the larger χ²/dof: "not told apart: X or Y"
+// offers either effect, so the fit it promises is the worse one. Fills each one's χ²/dof.
+FitState WorseTiedFit(const std::vector<const FitState*>& tied,
+                      const std::vector<Observation>& observations,
+                      const DiagnoseOptions& options, std::vector<double>* chi2_per_dof) {
+  const FitState* worse = tied.front();
+  double worst = -1;
+  for (const FitState* t : tied) {
+    const GapReport g =
+        TestGap(WithPrediction(observations, t->prediction, options.discrepancy_floor),
+                t->Fitted(), {options.significance});
+    chi2_per_dof->push_back(g.chi2_per_dof);
+    if (g.chi2_per_dof > worst) worst = g.chi2_per_dof, worse = t;
+  }
+  return *worse;
+}
+
 }  // namespace
 
 Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observations,
@@ -141,7 +159,9 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
     return d;
   }
   FitState fit = StartingFit(d.base, static_cast<int>(observations.size()));
-  FitState revalued_fit;  // the winner's refit when the answer is a re-valuation (model form)
+  // The fit "after" describes when it is not the named effects': the winner's refit for a
+  // re-valuation (model form), the worse tied refit for "not told apart".
+  FitState answer_fit;
   d.before = WithPrediction(observations, fit.prediction, options.discrepancy_floor);
   d.gap_before = TestGap(d.before, fit.Fitted(), {options.significance});
   d.floor_before = EstimatedFloor(d.before, fit.Fitted());
@@ -210,7 +230,7 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
       d.termination = d.named.empty() ? DiagnosisTermination::kModelFormOffset
                                       : DiagnosisTermination::kGapRemains;
       if (d.named.empty()) {
-        revalued_fit = s.next;
+        answer_fit = s.next;
         d.after_revalued = true;
       }
       break;
@@ -221,6 +241,12 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
       d.not_told_apart = {s.step.entries[s.step.ranking.winner].candidate,
                           s.step.entries[s.step.ranking.tied].candidate};
       d.separating = s.step.separating;
+      // After a named effect the tie is the next step's question; "after" stays the named fit.
+      if (d.named.empty()) {
+        d.after_tied = true;
+        answer_fit = WorseTiedFit({&s.next, &s.tied_fit}, observations, options,
+                                    &d.tied_chi2_per_dof_after);
+      }
       break;
     }
     if (!s.has_winner) {
@@ -239,7 +265,8 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
     d.termination = gap ? DiagnosisTermination::kGapRemains : DiagnosisTermination::kEffectFound;
     if (progress) progress("with " + Names(d.named, candidates) + ": " + g.summary);
   }
-  Finish(observations, fit, d.after_revalued ? revalued_fit : fit, options, candidates, &d);
+  Finish(observations, fit, d.after_revalued || d.after_tied ? answer_fit : fit, options,
+         candidates, &d);
   d.simulations = model.SimulationsRun();
   d.simulations_reused = model.SimulationsReused();
   d.wall_time_s = std::chrono::duration<double>(Clock::now() - start).count();

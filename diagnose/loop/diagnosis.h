@@ -132,7 +132,14 @@ struct Diagnosis {
   // True when the answer is a model-form offset that re-values a modelled parameter: `after`,
   // `gap_after` and `floor_after` then describe the winner's re-valued refit, not final_point.
   bool after_revalued = false;
-  std::vector<Observation> after;  // at the final point, or at the re-valued fit
+  // True when the answer is "not told apart" between two effects with nothing named: `after`,
+  // `gap_after` and `floor_after` then describe the tied refit that fits worse, since the answer
+  // offers either effect and closes the gap only as far as the worse of them
+  // (docs/diagnose/ranking.md). tied_chi2_per_dof_after: χ²/dof of the gap test at each tied
+  // refit, in the order of not_told_apart.
+  bool after_tied = false;
+  std::vector<double> tied_chi2_per_dof_after;
+  std::vector<Observation> after;  // at the final point, the re-valued fit or the worse tie
   GapReport gap_after;
   int fitted_parameters_after = 0;
   std::vector<PhaseTime> phases;

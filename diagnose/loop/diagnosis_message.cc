@@ -111,6 +111,16 @@ std::string BestNotNamedText(const Diagnosis& d, const DiagnoseOptions& options,
   return s.str();
 }
 
+// The gap after either tied effect; the answer's "after" is the worse (diagnosis.h).
+std::string TiedAfterText(const Diagnosis& d, const std::vector<CandidateEffect>& candidates) {
+  if (!d.after_tied) return "";
+  std::string s = "; with either effect the gap is chi2/dof ";
+  for (size_t k = 0; k < d.tied_chi2_per_dof_after.size() && k < d.not_told_apart.size(); ++k)
+    s += (k ? " and " : "") + core::NumberText(d.tied_chi2_per_dof_after[k], 3) + " (" +
+         candidates[d.not_told_apart[k]].key + ")";
+  return s + "; after the worse: " + d.gap_after.summary;
+}
+
 }  // namespace
 
 std::string DiagnosisMessage(const Diagnosis& d, const DiagnoseOptions& options,
@@ -151,7 +161,8 @@ std::string DiagnosisMessage(const Diagnosis& d, const DiagnoseOptions& options,
              d.bound.verdict == BoundVerdict::kNotToldApart) {
     m << "not told apart: " << d.bound_note << "; " << d.separating.description;
   } else if (d.termination == DiagnosisTermination::kNotToldApart) {
-    m << "not told apart: " << TieText(d, candidates) << "; " << d.separating.description;
+    m << "not told apart: " << TieText(d, candidates) << "; " << d.separating.description
+      << TiedAfterText(d, candidates);
   } else if (d.termination == DiagnosisTermination::kGapRemains) {
     m << "added " << Signed(d, d.final_point, candidates) << " but a gap remains ("
       << d.gap_after.summary << "), not explained by the library";

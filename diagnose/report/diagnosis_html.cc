@@ -82,7 +82,9 @@ bool WriteDiagnosisHtml(const std::string& path, const DiagnosisRunInfo& info, c
                        "this floor allows (docs/diagnose.md).",
                    syn);
   report.Paragraph("Before: " + d.gap_before.summary + ". After" +
-                       (d.after_revalued ? " (the re-valued modelled parameter)" : "") + ": " +
+                       (d.after_revalued ? " (the re-valued modelled parameter)"
+                        : d.after_tied ? " (the worse of the two effects not told apart)"
+                                       : "") + ": " +
                        d.gap_after.summary + ".",
                    syn);
   report.Section("Gap before and after", syn);

@@ -229,7 +229,14 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
   }
   j["revalued_parameters"] = revalued;
   j["chi2_per_dof_after"] = Number(d.gap_after.chi2_per_dof);
-  j["after_fit"] = d.after_revalued ? "revalued_parameters" : "named_effects";
+  j["after_fit"] = d.after_revalued ? "revalued_parameters"
+                  : d.after_tied   ? "not_told_apart_worse"
+                                   : "named_effects";
+  Json tied_after = Json::array();  // each tied refit's χ²/dof; "after" is the larger
+  for (size_t k = 0; k < d.tied_chi2_per_dof_after.size() && k < d.not_told_apart.size(); ++k)
+    tied_after.push_back({{"effect", info.candidates[d.not_told_apart[k]].key},
+                          {"chi2_per_dof_after", Number(d.tied_chi2_per_dof_after[k])}});
+  j["not_told_apart_after"] = tied_after;
   const size_t tried = d.steps.empty() ? info.candidates.size() : d.steps.front().entries.size();
   j["discrepancy_floor"] = {
       {"fixed_single_run_scatters", info.options.discrepancy_floor},
