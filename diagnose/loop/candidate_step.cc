@@ -45,6 +45,59 @@ void RetakeSignatures(ForwardModel& model, const std::vector<CandidateEffect>& c
     if (got[k]) taken_at[at[k]] = points[k].effects.back().values[0], probes[at[k]] = points[k];
 }
 
+// A response that is not linear across the fit makes a slope taken on one side a poor guide to
+// the other: a heap's angle hardly rises with more rolling resistance than the base assumes
+// (it saturates) yet falls steeply with less. A candidate whose linearised refit lands on the
+// other side of its signature run (the refit value's sign opposite to the value the signature
+// was taken at) has its signature taken again on that side, at minus that value clipped to the
+// range, one run per such candidate. Its refit is then the better of the two one-sided refits,
+// each held to its own side of the fit (the response modelled as two half-lines meeting at the
+// fit), and the signature, the run and `taken_at` are that side's.
+void SignatureOnRefitSide(ForwardModel& model, const Frame& f, const FitState& fit,
+                          const std::vector<CandidateEffect>& candidates,
+                          std::vector<ModelPoint>& probes, std::vector<Prediction>& probed,
+                          std::vector<double>& taken_at, std::vector<Work>& work) {
+  std::vector<size_t> at;
+  std::vector<ModelPoint> points;
+  for (size_t i = 0; i < work.size(); ++i) {
+    const EffectParameter& e = candidates[work[i].candidate].parameters[0];
+    const double other = std::clamp(-taken_at[i], e.lower, e.upper);
+    if (!probed[i].ok || taken_at[i] != e.probe || other == 0 || work[i].refit.t.size() == 0 ||
+        work[i].refit.t[0] * taken_at[i] >= 0)
+      continue;
+    const ActiveEffect added{work[i].candidate, {other}};
+    points.push_back(fit.Step(Eigen::VectorXd::Zero(f.fitted), &added));
+    at.push_back(i);
+  }
+  if (points.empty()) return;
+  const std::vector<Prediction> got = model.Evaluate(points);
+  for (size_t k = 0; k < at.size(); ++k) {
+    const size_t i = at[k];
+    if (!got[k].ok) continue;
+    Work& w = work[i];
+    const double other = points[k].effects.back().values[0];
+    const Eigen::VectorXd signature =
+        (ToVector(got[k].mean) - ToVector(fit.prediction.mean)) / other;
+    EffectParameter same = candidates[w.candidate].parameters[0], across = same;
+    (taken_at[i] > 0 ? same.lower : same.upper) = 0;
+    (other > 0 ? across.lower : across.upper) = 0;
+    const LinearRefitResult refit_across = Refit(f, across, signature);
+    const ModelPoint first_point = w.signature_point;
+    const Prediction first_run = w.signature_prediction;
+    KeepSignatureRun(f, points[k], got[k], &w);  // a simulated fit of base + effect, as any probe
+    if (refit_across.chi2 >= Refit(f, same, w.signature).chi2) {
+      w.signature_point = first_point, w.signature_prediction = first_run;
+      continue;
+    }
+    w.signature = signature;
+    w.refit = refit_across;
+    w.retake_note = "signature taken on the side the refit asks for, at " +
+                    std::to_string(other) + " (the run at " + std::to_string(taken_at[i]) +
+                    " put the linearised refit on this side)";
+    taken_at[i] = other, probes[i] = points[k], probed[i] = got[k];
+  }
+}
+
 // The candidates of a refit batch with their linearised χ², for the progress log.
 std::string Listed(const std::vector<Work*>& batch, const std::vector<CandidateEffect>& candidates) {
   std::ostringstream s;
@@ -192,6 +245,7 @@ StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>
     KeepSignatureRun(f, probes[i], probed[i], &w);
     work.push_back(w);
   }
+  SignatureOnRefitSide(model, f, fit, candidates, probes, probed, taken_at, work);
   // The shortlist: significant by the linear prediction, best linear ΔBIC first.
   std::vector<Work*> linear;
   for (Work& w : work)

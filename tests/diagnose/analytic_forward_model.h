@@ -79,17 +79,23 @@ class AnalyticForwardModel final : public ForwardModel {
   // every effect nonlinear, acting as v + c·v² (0: linear).
   // `angle_saturation` s > 0: the angle stops rising with mu above s (a heap whose grains roll
   // rather than slide), the other observables still respond.
+  // `rolling_angle_above` scales rolling's change of the angle for values above 0 (0: the angle
+  // no longer rises with more rolling resistance than the base's, yet falls with less).
   static double Exact(int i, double mu, const std::vector<std::pair<int, double>>& effects,
-                      double curvature = 0, double angle_saturation = 0) {
+                      double curvature = 0, double angle_saturation = 0,
+                      double rolling_angle_above = 1) {
     const int k = Kind(i);
     const double mu_k = k == 0 && angle_saturation > 0 ? std::min(mu, angle_saturation) : mu;
     double y =
         std::vector<double>{20, 0.012, 4e-3}[k] + mu_k * std::vector<double>{50, 5e-3, -5e-3}[k];
-    for (const auto& [e, v] : effects) y += EffectChange(e, k, Coating(i), v + curvature * v * v);
+    for (const auto& [e, v] : effects)
+      y += (e == 1 && k == 0 && v > 0 ? rolling_angle_above : 1) *
+           EffectChange(e, k, Coating(i), v + curvature * v * v);
     return y;
   }
   double curvature = 0;
   double angle_saturation = 0;
+  double rolling_angle_above = 1;
   bool shared_scenes = false;
   // An effect no candidate has: grows with the square of the coating, only in the flow.
   static double Foreign(int i, double v) {
@@ -110,7 +116,8 @@ class AnalyticForwardModel final : public ForwardModel {
         // shared_scenes: one simulated heap per kind read by every coating row (the noise draw
         // of the kind, not of the row), as a DEM base whose coating changes nothing runs once.
         pr.mean.push_back(
-            Exact(i, 0.2 + 0.8 * p.base_unit[0], effects, curvature, angle_saturation) +
+            Exact(i, 0.2 + 0.8 * p.base_unit[0], effects, curvature, angle_saturation,
+                  rolling_angle_above) +
             s / std::sqrt(replicates) *
                 calibrate::testing::Normal(seed, shared_scenes ? Kind(i) : i));
         pr.sem.push_back(s / std::sqrt(replicates));
@@ -200,7 +207,8 @@ inline std::vector<Observation> MakeObservations(AnalyticForwardModel* model, do
   for (int i = 0; i < AnalyticForwardModel::Count(); ++i) {
     const int k = AnalyticForwardModel::Kind(i);
     const double y =
-        AnalyticForwardModel::Exact(i, mu, hidden, model->curvature, model->angle_saturation) +
+        AnalyticForwardModel::Exact(i, mu, hidden, model->curvature, model->angle_saturation,
+                                    model->rolling_angle_above) +
         AnalyticForwardModel::Foreign(i, foreign) +
         offset_scatters * kScatter[k] * calibrate::testing::Normal(noise_seed + 7919, i) +
         kUncertainty[k] * calibrate::testing::Normal(noise_seed, i);

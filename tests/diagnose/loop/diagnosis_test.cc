@@ -66,6 +66,24 @@ TEST_CASE("diagnosis names a weakened effect with its sign", "[unit]") {
   }
 }
 
+TEST_CASE("a signature retaken on the side the refit asks for finds less rolling resistance",
+          "[unit]") {
+  // More rolling resistance than the base's only lifts the heap (its angle has saturated); less
+  // lowers the angle steeply. The signature at the probe (+0.2) shows no angle change, so its
+  // linear refit cannot lower the angle: taken again at -0.2, the refit finds the truth.
+  for (uint64_t seed : {1, 2, 3}) {
+    INFO("noise seed " << seed);
+    AnalyticForwardModel model;
+    model.rolling_angle_above = 0;
+    const std::vector<Observation> obs = testing::MakeObservations(&model, 0.5, {{1, -0.2}}, seed);
+    const Diagnosis d = Diagnose(model, obs, testing::Candidates(), DiagnoseOptions{});
+    REQUIRE(Named(d) == "rolling");
+    CHECK(d.final_point.effects.at(0).values[0] == Approx(-0.2).margin(0.05));
+    CHECK(d.message.find("less rolling resistance than assumed") != std::string::npos);
+    CHECK_FALSE(d.gap_after.gap_detected);
+  }
+}
+
 TEST_CASE("an unsettled base calibration gets more budget, and nothing is ranked on it", "[unit]") {
   AnalyticForwardModel model;
   model.settle_at_scale = 2;  // settles with twice the study's budget
