@@ -112,6 +112,19 @@ BoundCheck CheckBound(const StepOutcome& step, const FitState& fit,
   } else {
     s << b.parameters << alternative << " or " << effect << " fit about equally (BIC gap "
       << j.bic_gap << " under the common floor, within " << j.within << ")";
+    // The step's best effect may fit better than both without outranking them beyond their
+    // noise (JudgeBound): dropping it would hide the best fit the step found, so it is named as
+    // a third explanation level with them.
+    if (step.has_winner) {
+      const RankingEntry& w = step.step.entries[step.step.ranking.winner];
+      if (w.simulated && !w.control && w.evidence.significant && w.candidate != e.candidate &&
+          w.chi2_per_dof < e.chi2_per_dof) {
+        b.also_candidate = w.candidate;
+        s << ", or " << Value(w, candidates[w.candidate]) << ", which fits better than both "
+          << "(chi2/dof " << w.chi2_per_dof << " against " << e.chi2_per_dof
+          << ") but not beyond their noise";
+      }
+    }
     // The two explanations' predictions; the bound parameter's own sensitivity stands for
     // "beyond its range" beside the effect's signature, the other fitted parameters as they are.
     const Eigen::MatrixXd Js = sigma.cwiseInverse().asDiagonal() * fit.jacobian;

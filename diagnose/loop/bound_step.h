@@ -27,6 +27,9 @@ struct BoundCheck {
   double effect_value = 0;    // its refitted parameter
   std::vector<double> effect_base_unit;  // and base parameters (unit cube)
   double effect_chi2_per_dof = 0;
+  // kNotToldApart: the step's own significant winner when it fits better than the effect of the
+  // tie without outranking both beyond their noise: a third explanation level with them (−1: none).
+  int also_candidate = -1;
   SeparatingMeasurement separating;  // kNotToldApart: between the effect and the bound
   std::string parameters;            // "mu_s_BP_BP beyond its lower bound"
   std::string text;                  // the verdict's sentence

@@ -211,6 +211,7 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
       if (b.judgement.verdict == BoundVerdict::kNotToldApart) {
         d.termination = DiagnosisTermination::kNotToldApart;
         d.not_told_apart = {b.effect_candidate};
+        if (b.also_candidate >= 0) d.not_told_apart.push_back(b.also_candidate);
         d.separating = b.separating;
         break;
       }

@@ -41,6 +41,26 @@ TEST_CASE("a base on its bound with a weak hidden effect is not told apart from 
   }
 }
 
+TEST_CASE("a bound tie keeps the step's better-fitting effect as a third explanation", "[unit]") {
+  // Two effects hidden, rolling −0.1 and polydispersity +0.3 (noise seed 2): the μ-only fit
+  // stops on its bound; the rolling refit with μ inside ties with the bound, and polydispersity,
+  // the step's significant winner, fits better than both (χ²/dof 1.13 against 1.81) without
+  // outranking them beyond their noise. Without the third explanation the answer dropped the
+  // best fit the step found and named only "μ beyond its bound or rolling".
+  testing::AnalyticForwardModel model;
+  const std::vector<Observation> obs =
+      testing::MakeObservations(&model, 0.22, {{1, -0.1}, {3, 0.3}}, 2);
+  const Diagnosis d = Diagnose(model, obs, testing::Candidates(), DiagnoseOptions{});
+  REQUIRE(d.base_at_bound.size() == 1);
+  CHECK(d.bound.verdict == BoundVerdict::kNotToldApart);
+  CHECK(d.termination == DiagnosisTermination::kNotToldApart);
+  REQUIRE(d.not_told_apart.size() == 2);
+  CHECK(testing::Candidates()[d.not_told_apart[0]].key == "rolling");
+  CHECK(testing::Candidates()[d.not_told_apart[1]].key == "polydispersity");
+  CHECK(d.message.find("or polydispersity") != std::string::npos);
+  CHECK(d.message.find("which fits better than both") != std::string::npos);
+}
+
 TEST_CASE("a base on its bound with a strong hidden effect names it", "[unit]") {
   // μ 0.25 and rolling −0.2: a gap at the bound that the rolling refit closes with μ inside,
   // ΔBIC about 27 better than the bound: the evidence rules the bound out.
