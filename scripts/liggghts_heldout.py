@@ -108,3 +108,49 @@ def specs(a, cases, base, bundled_out, seed_base, noise_seed):
                           "seed_base": a.seed_base, "noise_seed": a.noise_seed, "out": out,
                           "held_out": held_out, "variant": bool(varied)})
     return out_specs
+
+
+def self_test():
+    """The flags' checks on made-up cases (no LIGGGHTS run)."""
+    import argparse
+    cases = {"control": (None, {}, None), "rolling_low": ("rolling_resistance", {"mur_pp": 0.05}, "-"),
+             "wall": ("wall_friction", {"mu_pw": 0.9}, "+")}
+    base = {"mur_pp": 0.2, "mu_pw": 0.42}
+
+    def run(argv, bundled="/repo/bundled"):
+        ap = argparse.ArgumentParser()
+        ap.add_argument("--cases", default="control")
+        add_arguments(ap, bundled, 100, 200)
+        return specs(ap.parse_args(argv), cases, base, bundled, 100, 200)
+
+    def fails(argv, needle):
+        try:
+            run(argv)
+        except SystemExit as e:
+            assert needle in str(e), (argv, str(e))
+            return
+        raise AssertionError(f"{argv} was accepted")
+
+    default = run([])[0]
+    assert not default["held_out"] and not default["variant"] and default["seed_base"] == 100
+    s = run(["--out", "/tmp/x", "--cases", "rolling_low", "--change", "mur_pp=0.1", "--name", "rl"])[0]
+    assert (s["name"], s["change"], s["sign"], s["held_out"]) == ("rl", {"mur_pp": 0.1}, "-", True)
+    assert run(["--out", "/tmp/x", "--cases", "rolling_low", "--change", "mur_pp=0.3"])[0]["sign"] == "+"
+    assert run(["--out", "/tmp/x", "--cases", "wall", "--change", "mu_pw=0.3"])[0]["sign"] == "-"
+    assert not run(["--out", "/tmp/x"])[0]["variant"]  # only --out: the bundled recipe text
+    fails(["--seed-base", "5"], "--seed-base: held-out data need --out")
+    fails(["--out", "/tmp/x", "--change", "mur_pp=0.1"], "case 'control' does not change 'mur_pp'")
+    fails(["--out", "/tmp/x", "--cases", "rolling_low", "--change", "mur_pp=1.5"], "allowed: a number in (0, 1]")
+    fails(["--out", "/tmp/x", "--cases", "rolling_low", "--change", "mur_pp=0.2"], "is the base value")
+    fails(["--out", "/tmp/x", "--cases", "rolling_low", "--change", "mur_pp"], "is not KEY=JSON")
+    fails(["--out", "/tmp/x", "--cases", "rolling_low,wall", "--name", "a"], "exactly one case")
+    fails(["--out", "/tmp/x", "--name", "../a"], "letters, digits and underscores")
+    fails(["--out", "/tmp/x", "--cases", "nope"], "unknown case 'nope'")
+    print("liggghts_heldout self-test: pass")
+
+
+if __name__ == "__main__":
+    import sys
+    if sys.argv[1:] != ["--self-test"]:
+        raise SystemExit("usage: python3 scripts/liggghts_heldout.py --self-test (the flags: make_liggghts_datasets.py)")
+    self_test()
