@@ -4,6 +4,8 @@
 #   bash bench/diagnose_cases.sh [OUT_DIR]                 # all 19 cases, --quick --threads 2
 #   CASES="crossengine_control diagnose_none" THREADS=1 bash bench/diagnose_cases.sh /tmp/dc
 #   DEMCAL=/path/to/demcal bash bench/diagnose_cases.sh    # another build's binary
+#   STUDY_DIR=/tmp/heldout/studies CASES="crossengine_control_s300k_cdt_relative" \
+#     bash bench/diagnose_cases.sh /tmp/heldout/diag       # studies elsewhere (held-out datasets)
 #
 # A case whose folder holds `done` is skipped, so a killed run resumes with the next case.
 # Each case folder: run/ (the diagnosis, docs/diagnose.md "Outputs"), time.txt (/usr/bin/time -v),
@@ -14,6 +16,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 out=${1:-$root/out/diagnose_cases}
 demcal=${DEMCAL:-$root/build/apps/demcal}
 threads=${THREADS:-2}
+study_dir=${STUDY_DIR:-examples/diagnose}   # relative to the repository, or absolute
 [ -x "$demcal" ] || { echo "no demcal binary at $demcal (build first, or set DEMCAL)" >&2; exit 2; }
 [ -x /usr/bin/time ] || { echo "/usr/bin/time is missing (apt-get install time)" >&2; exit 2; }
 
@@ -35,7 +38,7 @@ for c in $CASES; do
   rm -rf "$dir" && mkdir -p "$dir"
   echo "$c: started $(date -u +%FT%TZ), load $(cut -d' ' -f1 /proc/loadavg)" | tee -a "$out/log.txt" >&2
   rc=0
-  /usr/bin/time -v -o "$dir/time.txt" "$demcal" diagnose "examples/diagnose/$c.json" --out "$dir/run" \
+  /usr/bin/time -v -o "$dir/time.txt" "$demcal" diagnose "$study_dir/$c.json" --out "$dir/run" \
     --quick --threads "$threads" > "$dir/stdout.txt" 2> "$dir/stderr.txt" || rc=$?
   echo "$c: ended $(date -u +%FT%TZ), exit $rc, load $(cut -d' ' -f1 /proc/loadavg)" | tee -a "$out/log.txt" >&2
   touch "$dir/done"

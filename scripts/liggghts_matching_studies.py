@@ -49,19 +49,22 @@ def write_experiment(name):
     write(os.path.join(EXAMPLES, matching_name(name)), exp)
 
 
-def write_study(case):
-    study = json.load(open(os.path.join(EXAMPLES, f"crossengine_{case}.json")))
+def write_study(case, folder=EXAMPLES, where=None):
+    """folder/crossengine_<case>_cdt_relative.json from folder/crossengine_<case>.json (an experiment
+    file given by an absolute path keeps its folder)."""
+    study = json.load(open(os.path.join(folder, f"crossengine_{case}.json")))
     for target in study["targets"]:
         target["experiment_file"] = matching_name(target["experiment_file"])
+    where = where or f"case {case} of datasets/liggghts_crossengine/"
     study["description"] = (
-        f"Diagnosis on OTHER-ENGINE data: LIGGGHTS-made (not measured, not made by demcal), case {case} "
-        "of datasets/liggghts_crossengine/, with the base on the data's own rolling law: demcal "
+        f"Diagnosis on OTHER-ENGINE data: LIGGGHTS-made (not measured, not made by demcal), {where}, "
+        "with the base on the data's own rolling law: demcal "
         f"cdt_relative (LIGGGHTS' cdt) at {mk.BASE['mur_pp']} between grains and {mk.BASE['mur_pw']} "
         "against the walls, BP-BP sliding friction fitted; rig 1 (16 mm slot heap) at 0, 1.5 and 3 wt% "
         "PEG, rig 2 (12.5 mm slot heap) at 0 and 3 wt%, the funnel and rig 3 (the narrow funnel) at 0 wt%. "
         "Written by "
         "scripts/liggghts_matching_studies.py. Run with --quick, the fidelity the data were made at.")
-    write(os.path.join(EXAMPLES, f"crossengine_{case}{SUFFIX}.json"), study)
+    write(os.path.join(folder, f"crossengine_{case}{SUFFIX}.json"), study)
 
 
 def main():

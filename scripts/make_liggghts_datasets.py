@@ -4,6 +4,17 @@
 measured; demcal did not make them.
 
   python3 scripts/make_liggghts_datasets.py [--cases control,adhesion,...] [--replicates 4]
+Held-out datasets (other strengths and seeds, never in the repository; scripts/liggghts_heldout.py):
+  python3 scripts/make_liggghts_datasets.py --out /tmp/heldout --seed-base 300000 --noise-seed 777 \
+      --cases wide_psd --change 'diameter_range_m=[0.00025,0.0006]' --name wide_psd_narrower
+ --out DIR       case folders there; outside datasets/liggghts_crossengine also DIR/studies/
+                 crossengine_<name>.json (absolute paths) and its _cdt_relative variant
+ --seed-base N, --noise-seed N   SEED_BASE and NOISE_SEED below
+ --change KEY=JSON   override one key the case's hidden change already has (repeatable); the sign
+                 in truth.json follows the value against the base for cdt mur_pp and mu_pw
+ --name NAME     the case folder's name (one case)
+ Any of these but --out needs an --out outside the bundled folder. The defaults reproduce the
+ bundled tables bit for bit.
 The engines side by side where their laws agree, and the heap metric's port:
 scripts/liggghts_agreement.py.
 
@@ -32,6 +43,7 @@ import argparse, csv, json, math, os, random, resource, subprocess, sys, tempfil
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import liggghts_decks as decks  # noqa: E402
+import liggghts_heldout as heldout  # noqa: E402
 import liggghts_measure as measure  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -73,10 +85,11 @@ def experiment(name):
     return json.load(open(os.path.join(ROOT, "examples", "diagnose", name)))
 
 
-def model_for(exp, case, coating, rolling_off=False):
+def model_for(exp, case, coating, rolling_off=False, change=None):
     q = exp["quick_fidelity"]
     m = decks.Model(exp, q["size_scale"], q["stiffness_scale"])
-    change = CASES[case][1] if case else {}
+    if change is None:
+        change = CASES[case][1] if case else {}
     m.mu_pp = BASE["sliding_friction"]
     m.rolling, m.mur_pp, m.mur_pw = change.get("rolling", BASE["rolling"]), change.get("mur_pp", BASE["mur_pp"]), BASE["mur_pw"]
     if rolling_off:
@@ -89,8 +102,8 @@ def model_for(exp, case, coating, rolling_off=False):
     return m
 
 
-def seeds(case_index, cond, rep):
-    return decks.primes_from(SEED_BASE + 1000 * (100 * case_index + 10 * cond + rep), 8)
+def seeds(case_index, cond, rep, seed_base=SEED_BASE):
+    return decks.primes_from(seed_base + 1000 * (100 * case_index + 10 * cond + rep), 8)
 
 
 RUN_LIMIT_S = 1800  # wall clock per run on a loaded machine; LIGGGHTS can hang after an ERROR
@@ -172,36 +185,42 @@ def mean_sd(runs, key):
     return mu, (math.sqrt(sum((x - mu) ** 2 for x in v) / (len(v) - 1)) if len(v) > 1 else None), len(v)
 
 
-def simulate(case, replicates, log):
+def simulate(spec, replicates, log):
     """Every run of a case: list of (rig or 'funnel', coating, replicate, result)."""
+    case, change = spec["case"], spec["change"]
     ci = list(CASES).index(case)
-    adhesive = "ced_J_m3_per_wt_pct" in CASES[case][1]
+    adhesive = "ced_J_m3_per_wt_pct" in change
     runs = []
     for r_i, (rig, (name, _)) in enumerate(RIGS.items()):
         exp = experiment(name)
         levels = (COATINGS if rig == "slot" else RIG2_COATINGS) if adhesive else [None]
         for w in levels:
             for rep in range(replicates):
-                res = heap_run(model_for(exp, case, w or 0.0), exp["aor"], seeds(ci, 3 * r_i + round((w or 0) / 1.5), rep))
+                res = heap_run(model_for(exp, case, w or 0.0, change=change), exp["aor"],
+                               seeds(ci, 3 * r_i + round((w or 0) / 1.5), rep, spec["seed_base"]))
                 runs.append((rig, w, rep, res))
                 log(f"{case} {rig} w={w} r{rep}: {res['status']} {res.get('angle_deg')} cpu {res['cpu_s']:.1f} s")
     for rig, (name, _, cond) in FUNNELS.items():
         exp = experiment(name)
         for rep in range(replicates):
-            res = funnel_run(model_for(exp, case, 0.0), exp["discharge"], seeds(ci, cond, rep))
+            res = funnel_run(model_for(exp, case, 0.0, change=change), exp["discharge"],
+                             seeds(ci, cond, rep, spec["seed_base"]))
             runs.append((rig, 0.0, rep, res))
             log(f"{case} {rig} r{rep}: {res['status']} {res.get('discharge_time_s')} cpu {res['cpu_s']:.1f} s")
     return runs
 
 
-def write_case(case, runs, replicates, provenance):
-    ci = list(CASES).index(case)
-    rng = random.Random(NOISE_SEED + ci)
-    out_dir = os.path.join(OUT, case)
+def write_case(spec, runs, replicates, provenance):
+    case, ci = spec["name"], list(CASES).index(spec["case"])
+    rng = random.Random(spec["noise_seed"] + ci)
+    out_dir = os.path.join(spec["out"], case)
     os.makedirs(out_dir, exist_ok=True)
     recipe = (f"LIGGGHTS-MADE (other engine, not measured): {VERSION}, quick-fidelity scene of examples/diagnose, "
               f"case {case}; mean of {replicates} replicates plus seeded Gaussian noise of the stated uncertainty; "
               f"scripts/make_liggghts_datasets.py")
+    if spec["variant"]:
+        recipe += (f"; HELD-OUT variant of case {spec['case']} (seed base {spec['seed_base']}, noise seed "
+                   f"{spec['noise_seed']}; its truth.json gives the change)")
     rows, noise_free, notes = [], {}, []
     for rig, (name, test) in RIGS.items():
         depth = experiment(name)["aor"]["depth_m"]
@@ -231,38 +250,56 @@ def write_case(case, runs, replicates, provenance):
             vals = ",".join("" if r.get(k) is None else f"{r[k]:.6g}" for k in HEAP_OBS + FUNNEL_OBS)
             lv = "all" if w is None else f"{w:g}"
             f.write(f'{g},{lv},{rep},{r["status"]},{vals},{r.get("particles", "")},{r["cpu_s"]:.2f},{r["wall_s"]:.1f},"{r["message"]}"\n')
-    effect, change, sign = CASES[case]
-    json.dump({"case": case, "engine": VERSION, "hidden_effect": effect, "sign": sign, "liggghts_change": change,
-               "base": BASE, "noise_free": noise_free, "notes": notes, "recipe": recipe},
-              open(os.path.join(out_dir, "truth.json"), "w"), indent=2)
+    truth = {"case": case, "engine": VERSION, "hidden_effect": CASES[spec["case"]][0], "sign": spec["sign"],
+             "liggghts_change": spec["change"], "base": BASE, "noise_free": noise_free, "notes": notes,
+             "recipe": recipe}
+    if spec["held_out"]:
+        truth.update({"made_from_case": spec["case"], "seed_base": spec["seed_base"],
+                      "noise_seed": spec["noise_seed"],
+                      "noise_rng_seed": spec["noise_seed"] + ci, "replicates": replicates})
+    json.dump(truth, open(os.path.join(out_dir, "truth.json"), "w"), indent=2)
     for n in notes:
         print(f"{case}: {n}", file=sys.stderr)
 
 
-def write_study(case):
-    """examples/diagnose/crossengine_<case>.json: the twins' study (diagnose_none.json: mu_s fitted,
-    its optimiser and replicates) over every row the case's table holds: both heaps and both funnels."""
-    study = json.load(open(os.path.join(ROOT, "examples", "diagnose", "diagnose_none.json")))
+def write_study(spec):
+    """The twins' study (diagnose_none.json: mu_s fitted, its optimiser and replicates) over every row
+    the case's table holds: both heaps and both funnels. Bundled cases: examples/diagnose/
+    crossengine_<case>.json, paths relative to it; held-out ones: OUT/studies/crossengine_<name>.json
+    with absolute paths (the study loader resolves a relative path against the study's folder), and
+    its matching-law variant (scripts/liggghts_matching_studies.py)."""
+    case, examples = spec["name"], os.path.join(ROOT, "examples", "diagnose")
+    study = json.load(open(os.path.join(examples, "diagnose_none.json")))
     files = {test: name for name, test in RIGS.values()}
     files.update({test: name for name, test, _ in FUNNELS.values()})
+    if spec["held_out"]:
+        files = {test: os.path.join(examples, name) for test, name in files.items()}
+    table = os.path.join(spec["out"], case, "measurements.csv")
     targets = []
-    with open(os.path.join(OUT, case, "measurements.csv")) as f:
+    with open(table) as f:
         for row in csv.DictReader(f):
             w = float(row["coating_PEG_wt_pct"])
             targets.append({"experiment_file": files[row["test"]], "observable": row["observable"],
                             "measurement": {"material": "BP", "conditions": {
                                 "coating_PEG_wt_pct": int(w) if w == int(w) else w, "test": row["test"]}}})
+    where = (f"held-out case {case} in {spec['out']}" if spec["held_out"] else
+             f"case {case} of datasets/liggghts_crossengine/")
     study["description"] = (f"Diagnosis on OTHER-ENGINE data: LIGGGHTS-made (not measured, not made by demcal), "
-                            f"case {case} of datasets/liggghts_crossengine/ (scripts/make_liggghts_datasets.py). "
+                            f"{where} (scripts/make_liggghts_datasets.py). "
                             "Base model as the twins' studies: BP spheres, BP-BP sliding friction fitted; rig 1 "
                             "(16 mm slot heap) at 0, 1.5 and 3 wt% PEG, rig 2 (12.5 mm slot heap) at 0 and 3 wt%, "
                             "the funnel and rig 3 (the narrow funnel: 4 g, 21 mm top, 12.5 mm orifice, 10 degree "
                             "half-angle) at 0 wt%. Run with --quick, the fidelity the data were made at.")
-    study["measurements"] = f"../../datasets/liggghts_crossengine/{case}/measurements.csv"
+    study["measurements"] = table if spec["held_out"] else f"../../datasets/liggghts_crossengine/{case}/measurements.csv"
     study["targets"] = targets
-    path = os.path.join(ROOT, "examples", "diagnose", f"crossengine_{case}.json")
+    folder = os.path.join(spec["out"], "studies") if spec["held_out"] else examples
+    os.makedirs(folder, exist_ok=True)
+    path = os.path.join(folder, f"crossengine_{case}.json")
     json.dump(study, open(path, "w"), indent=2)
     open(path, "a").write("\n")
+    if spec["held_out"]:
+        import liggghts_matching_studies as matching  # it imports this module: imported here, when used
+        matching.write_study(case, folder, where)
 
 
 def main():
@@ -270,15 +307,15 @@ def main():
     ap.add_argument("--cases", default=",".join(CASES))
     ap.add_argument("--replicates", type=int, default=REPLICATES)
     ap.add_argument("--provenance", default=PROVENANCE)
+    heldout.add_arguments(ap, OUT, SEED_BASE, NOISE_SEED)
     a = ap.parse_args()
     log = lambda s: print(time.strftime("%H:%M:%S ") + s, file=sys.stderr, flush=True)  # noqa: E731
-    for case in a.cases.split(","):
-        if case not in CASES:
-            sys.exit(f"--cases: unknown case '{case}' (known: {', '.join(CASES)})")
-        runs = simulate(case, a.replicates, log)
-        write_case(case, runs, a.replicates, a.provenance)
-        write_study(case)
-        log(f"{case}: written to {os.path.join(OUT, case)}")
+    wall = decks.Model(experiment(RIGS["slot"][0]), 1.0, 1.0).mu_pw  # every rig's: 0.42
+    for spec in heldout.specs(a, CASES, {**BASE, "mu_pw": wall}, OUT, SEED_BASE, NOISE_SEED):
+        runs = simulate(spec, a.replicates, log)
+        write_case(spec, runs, a.replicates, a.provenance)
+        write_study(spec)
+        log(f"{spec['name']}: written to {os.path.join(spec['out'], spec['name'])}")
 
 
 if __name__ == "__main__":
