@@ -96,14 +96,16 @@ def verdict(diagnosis, hidden, sign):
 
 def answer_text(d):
     term = d["termination"]
+    revalued = "re-valued " + " or ".join(
+        f"{r['effect']} {r['value']:+.3g}" for r in d["revalued_parameters"])
+    beside = f" (with {revalued})" if d["revalued_parameters"] else ""
     if d["named_effects_signed"]:
         effects = ", ".join(f"{e['effect']} {e['value']:+.3g}" for e in d["named_effects_signed"])
-        return f"{term}: {effects}"
+        return f"{term}: {effects}{beside}"
     if term == "not_told_apart":
-        return f"{term}: " + " or ".join(d["not_told_apart"])
+        return f"{term}: " + " or ".join(d["not_told_apart"]) + beside
     if d["revalued_parameters"]:
-        return f"{term}: re-valued " + " or ".join(
-            f"{r['effect']} {r['value']:+.3g}" for r in d["revalued_parameters"])
+        return f"{term}: {revalued}"
     return term
 
 

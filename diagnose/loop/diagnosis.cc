@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include "core/math/number_text.h"
 #include "diagnose/loop/base_fit.h"
@@ -67,6 +68,13 @@ std::string Names(const std::vector<int>& named, const std::vector<CandidateEffe
   return s;
 }
 
+// Whether candidate c re-values a modelled parameter already re-valued (revaluation.h).
+bool Revalued(const Diagnosis& d, int c) {
+  for (const ActiveEffect& a : d.revalued)
+    if (a.candidate == c) return true;
+  return false;
+}
+
 // Whether candidate c is another law of a mechanism already named.
 bool MechanismNamed(const Diagnosis& d, const std::vector<CandidateEffect>& candidates, int c) {
   for (int n : d.named)
@@ -74,10 +82,9 @@ bool MechanismNamed(const Diagnosis& d, const std::vector<CandidateEffect>& cand
   return false;
 }
 
-// `after_fit` is what the "after" figures describe: the fit with the named effects; for a
-// model-form answer that re-values a modelled parameter, that re-valued fit (the base model's
-// own mechanism at the value the data ask for); for "not told apart", the worse tied refit. So
-// χ²/dof after says how well the answer fits.
+// `after_fit` is what the "after" figures describe: the fit with the named effects and the
+// re-valued parameters (the base model's own mechanisms at the values the data ask for); for
+// "not told apart", the worse tied refit. So χ²/dof after says how well the answer fits.
 void Finish(const std::vector<Observation>& observations, const FitState& fit,
             const FitState& after_fit, const DiagnoseOptions& options,
             const std::vector<CandidateEffect>& candidates, Diagnosis* d) {
@@ -89,27 +96,56 @@ void Finish(const std::vector<Observation>& observations, const FitState& fit,
   d->message = DiagnosisMessage(*d, options, candidates);
 }
 
-// The re-valuation rule (revaluation.h): true, with d->revalued and its note filled, when the
-// step's winner, and its tie if it has one, only re-value modelled parameters.
-bool RevaluesOnly(const DiagnosisStep& step, const std::vector<CandidateEffect>& candidates,
+// "wall_friction (more wall friction: delta_mu_w = 0.49; delta BIC -92.4)".
+std::string AddedTieText(const RankingEntry& e, const EffectParameter& p) {
+  return e.key + " (" + EffectDirection(p, e.values[0]) + ": " + p.name + " = " +
+         core::NumberText(e.values[0], 3) + (p.unit.empty() ? "" : " " + p.unit) +
+         "; delta BIC " + core::NumberText(e.evidence.delta_bic, 3) + ")";
+}
+
+// The re-valuation rule (revaluation.h): the step's entry whose refit joins the fit as a
+// re-valued modelled parameter, with d->revalued and its note filled; −1 when the answer is not
+// a re-valuation. Without a tie: the winner, when it re-values a modelled parameter. With one
+// (RevaluationOfTie): the winner when both re-value (both listed), or the one that is less than
+// assumed when the other adds a mechanism (that one kept in d->revaluation_tie).
+int RevaluedEntry(const DiagnosisStep& step, const std::vector<CandidateEffect>& candidates,
                   Diagnosis* d) {
-  std::vector<int> at = {step.ranking.winner};
-  if (step.ranking.tied >= 0) at.push_back(step.ranking.tied);
-  for (int i : at) {
-    const RankingEntry& e = step.entries[i];
-    if (e.values.empty() || !IsRevaluation(candidates[e.candidate].parameters[0], e.values[0]))
-      return false;
+  const int w = step.ranking.winner, t = step.ranking.tied;
+  auto parameter = [&](int i) -> const EffectParameter& {
+    return candidates[step.entries[i].candidate].parameters[0];
+  };
+  auto value = [&](int i) { return step.entries[i].values.empty() ? NAN : step.entries[i].values[0]; };
+  int revalued = -1, added_tie = -1;
+  std::vector<int> listed;
+  if (t < 0) {
+    if (IsRevaluation(parameter(w), value(w))) revalued = w, listed = {w};
+  } else {
+    const int which = RevaluationOfTie(parameter(w), value(w), parameter(t), value(t));
+    if (which >= 0) {
+      revalued = which == 0 ? w : t;
+      const int other = which == 0 ? t : w;
+      if (IsRevaluation(parameter(other), value(other)))
+        listed = {revalued, other};
+      else
+        listed = {revalued}, added_tie = other;
+    }
   }
+  if (revalued < 0) return -1;
   std::string note;
-  for (int i : at) {
+  for (int i : listed) {
     const RankingEntry& e = step.entries[i];
     d->revalued.push_back({e.candidate, e.values});
     note += (note.empty() ? "" : "; or ") +
-            RevaluationText(e.key, candidates[e.candidate].parameters[0], e.values[0],
-                            e.chi2_per_dof);
+            RevaluationText(e.key, parameter(i), e.values[0], e.chi2_per_dof);
   }
-  d->revaluation_note = note;
-  return true;
+  if (added_tie >= 0) {
+    const RankingEntry& e = step.entries[added_tie];
+    d->revaluation_tie = {e.candidate, e.values};
+    note += "; an added effect fitted within noise of it, " + AddedTieText(e, parameter(added_tie)) +
+            ", tried again with the re-valued parameter in the fit";
+  }
+  d->revaluation_note += (d->revaluation_note.empty() ? "" : "; then ") + note;
+  return revalued;
 }
 
 // Of the tied refits, the one whose gap test gives the larger χ²/dof: "not told apart: X or Y"
@@ -159,8 +195,8 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
     return d;
   }
   FitState fit = StartingFit(d.base, static_cast<int>(observations.size()));
-  // The fit "after" describes when it is not the named effects': the winner's refit for a
-  // re-valuation (model form), the worse tied refit for "not told apart".
+  // The fit "after" describes when it is not the fit's own: the worse tied refit for "not told
+  // apart".
   FitState answer_fit;
   d.before = WithPrediction(observations, fit.prediction, options.discrepancy_floor);
   d.gap_before = TestGap(d.before, fit.Fitted(), {options.significance});
@@ -181,12 +217,15 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
   // whose answer changes only on a candidate significant by its own test at α/K.
   d.screened = options.screen && !gap && settled.bounds.empty() && d.base.settled &&
                d.termination == DiagnosisTermination::kNoMissingEffect;
+  // Re-valued parameters taken into the fit (revaluation.h): they count against max_effects
+  // as the named effects do, so a diagnosis makes at most max_effects steps beyond the base.
+  int revalued_steps = 0;
   while ((gap || ((bound_probe || d.screened) && d.steps.empty())) &&
-         static_cast<int>(d.named.size()) < options.max_effects) {
+         static_cast<int>(d.named.size()) + revalued_steps < options.max_effects) {
     std::vector<int> remaining;
     for (int c = 0; c < static_cast<int>(candidates.size()); ++c)
       if (std::find(d.named.begin(), d.named.end(), c) == d.named.end() &&
-          !MechanismNamed(d, candidates, c))
+          !MechanismNamed(d, candidates, c) && !Revalued(d, c))
         remaining.push_back(c);
     if (remaining.empty()) break;
     const auto step_start = Clock::now();
@@ -227,14 +266,21 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
       d.control_note = s.step.ranking.message;
       break;
     }
-    if (s.has_winner && RevaluesOnly(s.step, candidates, &d)) {
-      d.termination = d.named.empty() ? DiagnosisTermination::kModelFormOffset
-                                      : DiagnosisTermination::kGapRemains;
-      if (d.named.empty()) {
-        answer_fit = s.next;
-        d.after_revalued = true;
-      }
-      break;
+    if (const int revalued = s.has_winner ? RevaluedEntry(s.step, candidates, &d) : -1;
+        revalued >= 0) {
+      // The re-valuation's refit becomes the fit: the base model's own mechanism at the value the
+      // data ask for. A gap left beyond it is the next step's question (an effect missing
+      // beside the offset); none left: the answer is the offset, or the effects named before.
+      fit = revalued == s.step.ranking.winner ? s.next : s.tied_fit;
+      ++revalued_steps;
+      gap = TestGap(WithPrediction(observations, fit.prediction, options.discrepancy_floor),
+                    fit.Fitted(), {options.significance})
+                .gap_detected;
+      d.termination = !d.named.empty() ? (gap ? DiagnosisTermination::kGapRemains
+                                              : DiagnosisTermination::kEffectFound)
+                                       : DiagnosisTermination::kModelFormOffset;
+      if (progress) progress("re-valued: " + d.revaluation_note);
+      continue;
     }
     if (s.has_winner && s.step.ranking.tied >= 0) {
       d.termination =
@@ -266,8 +312,9 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
     d.termination = gap ? DiagnosisTermination::kGapRemains : DiagnosisTermination::kEffectFound;
     if (progress) progress("with " + Names(d.named, candidates) + ": " + g.summary);
   }
-  Finish(observations, fit, d.after_revalued || d.after_tied ? answer_fit : fit, options,
-         candidates, &d);
+  // With nothing named, "after" is the re-valued fit (model form) unless a tie followed it.
+  d.after_revalued = !d.revalued.empty() && d.named.empty() && !d.after_tied;
+  Finish(observations, fit, d.after_tied ? answer_fit : fit, options, candidates, &d);
   d.simulations = model.SimulationsRun();
   d.simulations_reused = model.SimulationsReused();
   d.wall_time_s = std::chrono::duration<double>(Clock::now() - start).count();

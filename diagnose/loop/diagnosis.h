@@ -125,12 +125,17 @@ struct Diagnosis {
   SeparatingMeasurement separating;  // the measurement that would tell them apart
   std::string control_note;          // why the control guard held (a model-form offset)
   // The best-ranked effects that only re-value a modelled parameter (revaluation.h), with
-  // their refitted values: a model-form offset, not named; empty when none.
+  // their refitted values: a model-form offset, not named; empty when none. The winner's refit
+  // joins the fit (final_point), and the loop goes on while a gap remains beside it.
   std::vector<ActiveEffect> revalued;
   std::string revaluation_note;
-  ModelPoint final_point;  // the base with the named effects (never a re-valued parameter)
-  // True when the answer is a model-form offset that re-values a modelled parameter: `after`,
-  // `gap_after` and `floor_after` then describe the winner's re-valued refit, not final_point.
+  // An added effect that fitted within noise of a re-valuation that is less of a modelled
+  // mechanism than assumed (RevaluationSettlesTie): not named, tried again on the re-valued
+  // fit when a gap remains there. candidate −1: none.
+  ActiveEffect revaluation_tie{-1, {}};
+  ModelPoint final_point;  // the base with the re-valued parameters and the named effects
+  // True when the answer re-values modelled parameters and names nothing: `after`, `gap_after`
+  // and `floor_after` then describe the re-valued fit (final_point).
   bool after_revalued = false;
   // True when the answer is "not told apart" between two effects with nothing named: `after`,
   // `gap_after` and `floor_after` then describe the tied refit that fits worse, since the answer

@@ -31,7 +31,7 @@ std::string TieText(const Diagnosis& d, const std::vector<CandidateEffect>& cand
   return s.str();
 }
 
-// "rolling_resistance (less rolling resistance than assumed, delta_mu_r = -0.06)" per added
+// "rolling_resistance (less rolling resistance than assumed, delta_mu_r = -0.06)" per named
 // effect; an effect whose law was not told apart from another of its mechanism is preceded by
 // "adhesion, law not told apart: sjkr_cohesion or jkr_adhesion; the better fit: ".
 std::string Signed(const Diagnosis& d, const ModelPoint& point,
@@ -39,6 +39,8 @@ std::string Signed(const Diagnosis& d, const ModelPoint& point,
   std::ostringstream s;
   s.precision(3);
   for (const ActiveEffect& a : point.effects) {
+    if (std::find(d.named.begin(), d.named.end(), a.candidate) == d.named.end())
+      continue;  // a re-valued modelled parameter: model form, said apart (RevaluedText)
     const CandidateEffect& c = candidates[a.candidate];
     const EffectParameter& p = c.parameters[0];
     s << (s.tellp() > 0 ? " + " : "");
@@ -121,6 +123,13 @@ std::string TiedAfterText(const Diagnosis& d, const std::vector<CandidateEffect>
   return s + "; after the worse: " + d.gap_after.summary;
 }
 
+// Beside an answer that names effects or a tie: the re-valued modelled parameters in the fit.
+std::string RevaluedText(const Diagnosis& d) {
+  if (d.revaluation_note.empty()) return "";
+  return "; with a re-valued modelled parameter in the fit (model form, not named): " +
+         d.revaluation_note;
+}
+
 }  // namespace
 
 std::string DiagnosisMessage(const Diagnosis& d, const DiagnoseOptions& options,
@@ -155,14 +164,14 @@ std::string DiagnosisMessage(const Diagnosis& d, const DiagnoseOptions& options,
            "see where the fit goes";
     }
   } else if (d.termination == DiagnosisTermination::kEffectFound) {
-    m << "missing effect: " << Signed(d, d.final_point, candidates) << "; after adding it "
-      << d.gap_after.summary;
+    m << "missing effect: " << Signed(d, d.final_point, candidates) << RevaluedText(d)
+      << "; after adding it " << d.gap_after.summary;
   } else if (d.termination == DiagnosisTermination::kNotToldApart &&
              d.bound.verdict == BoundVerdict::kNotToldApart) {
     m << "not told apart: " << d.bound_note << "; " << d.separating.description;
   } else if (d.termination == DiagnosisTermination::kNotToldApart) {
     m << "not told apart: " << TieText(d, candidates) << "; " << d.separating.description
-      << TiedAfterText(d, candidates);
+      << RevaluedText(d) << TiedAfterText(d, candidates);
   } else if (d.termination == DiagnosisTermination::kGapRemains) {
     m << "added " << Signed(d, d.final_point, candidates) << " but a gap remains ("
       << d.gap_after.summary << "), not explained by the library";
@@ -170,9 +179,7 @@ std::string DiagnosisMessage(const Diagnosis& d, const DiagnoseOptions& options,
       m << "; next, not told apart: " << TieText(d, candidates) << "; "
         << d.separating.description;
     if (!d.control_note.empty()) m << "; " << d.control_note;
-    if (!d.revaluation_note.empty())
-      m << "; next, a re-valued modelled parameter (model form, not named): "
-        << d.revaluation_note;
+    m << RevaluedText(d);
   } else if (!d.revaluation_note.empty()) {
     m << "model-form offset: the data re-value a parameter the base model already has ("
       << d.revaluation_note

@@ -9,6 +9,15 @@ bool IsRevaluation(const EffectParameter& p, double value) {
   return p.assumed > 0 && std::isfinite(value) && std::abs(value) <= p.assumed;
 }
 
+int RevaluationOfTie(const EffectParameter& first, double first_value,
+                     const EffectParameter& second, double second_value) {
+  const bool a = IsRevaluation(first, first_value), b = IsRevaluation(second, second_value);
+  if (a && b) return 0;
+  if (a && first_value < 0) return 0;
+  if (b && second_value < 0) return 1;
+  return -1;
+}
+
 std::string RevaluationText(const std::string& key, const EffectParameter& p, double value,
                             double chi2_per_dof) {
   std::ostringstream s;

@@ -34,6 +34,22 @@ namespace demcal::diagnose {
 // True when `value` of `p` re-values a modelled parameter: p.assumed > 0 and |value| ≤ assumed.
 bool IsRevaluation(const EffectParameter& p, double value);
 
+// Two effects not told apart, `first` (the better fit) at `first_value` and `second` at
+// `second_value`: which of them, if either, makes the answer a re-valuation rather than "not
+// told apart". 0: the first, when it re-values a modelled parameter and the second re-values
+// one too (both say "an assumed value is off"); 0 or 1: the one that is *less* of a modelled
+// mechanism than assumed (IsRevaluation, value < 0) when the other adds a mechanism; −1: the
+// tie stays. Why the second case, either way round: another engine's law or a real powder's
+// behaviour makes an offset in what the model has about certain, a missing mechanism only
+// possible, so an added mechanism is named (or offered as one of two) only when it fits
+// better than "less of what the model has" by more than the tie margin; it is tried again with
+// the re-valued parameter in the fit, where it must explain what the offset leaves
+// (diagnosis.h). A re-valuation that is *more* of a modelled mechanism (up to twice), tied with
+// an added one, stays a tie: that is what a missing mechanism acting the same way looks like
+// (elongated grains steepen a heap as more rolling resistance does).
+int RevaluationOfTie(const EffectParameter& first, double first_value,
+                     const EffectParameter& second, double second_value);
+
 // "less rolling resistance than assumed: delta_mu_r = -0.063 against the assumed 0.1 (chi2/dof
 // 0.23 with it)": the re-valuation in words.
 std::string RevaluationText(const std::string& key, const EffectParameter& p, double value,

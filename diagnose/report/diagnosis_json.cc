@@ -195,6 +195,8 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
   Json named = Json::array(), signed_effects = Json::array();
   for (int c : d.named) named.push_back(info.candidates[c].key);
   for (const ActiveEffect& a : d.final_point.effects) {
+    if (std::find(d.named.begin(), d.named.end(), a.candidate) == d.named.end())
+      continue;  // a re-valued modelled parameter: revalued_parameters
     const EffectParameter& p = info.candidates[a.candidate].parameters[0];
     signed_effects.push_back({{"effect", info.candidates[a.candidate].key},
                               {"parameter", p.name},
@@ -228,6 +230,18 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
                         {"direction", EffectDirection(p, a.values[0])}});
   }
   j["revalued_parameters"] = revalued;
+  // An added effect that fitted within noise of a re-valuation of less than assumed
+  // (revaluation.h, RevaluationSettlesTie): not named, tried again on the re-valued fit.
+  if (d.revaluation_tie.candidate >= 0 && !d.revaluation_tie.values.empty()) {
+    const EffectParameter& p = info.candidates[d.revaluation_tie.candidate].parameters[0];
+    j["revaluation_tied_with"] = {{"effect", info.candidates[d.revaluation_tie.candidate].key},
+                                  {"parameter", p.name},
+                                  {"unit", p.unit},
+                                  {"value", Number(d.revaluation_tie.values[0])},
+                                  {"direction", EffectDirection(p, d.revaluation_tie.values[0])}};
+  } else {
+    j["revaluation_tied_with"] = nullptr;
+  }
   j["chi2_per_dof_after"] = Number(d.gap_after.chi2_per_dof);
   j["after_fit"] = d.after_revalued ? "revalued_parameters"
                   : d.after_tied   ? "not_told_apart_worse"
@@ -322,13 +336,18 @@ Json DiagnosedParamsJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
     Json values = Json::object();
     for (size_t k = 0; k < a.values.size() && k < c.parameters.size(); ++k)
       values[c.parameters[k].name] = Number(a.values[k]);
-    effects.push_back({{"effect", c.key}, {"description", c.description}, {"values", values}});
+    const bool named = std::find(d.named.begin(), d.named.end(), a.candidate) != d.named.end();
+    effects.push_back({{"effect", c.key},
+                       {"description", c.description},
+                       {"role", named ? "named" : "revalued"},
+                       {"values", values}});
   }
   return {{"format", "demcal-params/1"},
           {"parameters", base},
           {"effects", effects},
           {"note",
-           "base parameters of the study refitted with the named effects (docs/diagnose.md); "
+           "base parameters of the study refitted with the named effects and the re-valued "
+           "modelled parameters (role; docs/diagnose.md); "
            "effect values are increments on the experiment files' model"},
           {"provenance",
            {{"study", info.study},

@@ -42,6 +42,8 @@ inline double EffectChange(int e, int kind, double w, double v) {
     case 6:  // decoy: shape's signature plus a little adhesion's, saturating at its probe 0.1
       return std::min(v, 0.1) *
              (std::vector<double>{10, 6e-3, -5e-4}[kind] + 0.02 * w * std::vector<double>{40, 2e-3, -2e-4}[kind]);
+    case 7:  // slip: an added mechanism that moves everything nearly as less rolling does
+      return v * std::vector<double>{-29, -3.9e-3, 1.1e-4}[kind];
   }
   return 0;
 }
@@ -63,6 +65,17 @@ inline std::vector<CandidateEffect> Candidates() {
 inline std::vector<CandidateEffect> AmbiguousCandidates() {
   std::vector<CandidateEffect> c = Candidates();
   c.push_back({"roughness", "", {{"t", "", 0, 1, 0.2, "more roughness", ""}}});
+  return c;
+}
+
+// The ambiguous library with rolling declared as re-valuing the base's assumed 0.3, the decoy
+// (index 6), and "slip" (index 7), an added mechanism (assumed 0) whose signature is within a
+// few per cent of less rolling resistance: the two cannot be told apart on these observables.
+inline std::vector<CandidateEffect> SlipCandidates() {
+  std::vector<CandidateEffect> c = AmbiguousCandidates();
+  c[1].parameters[0].assumed = 0.3;
+  c.push_back({"decoy", "", {{"t", "", 0, 2, 0.1}}});
+  c.push_back({"slip", "", {{"t", "", 0, 1, 0.2, "more slip", ""}}});
   return c;
 }
 
