@@ -1,5 +1,6 @@
 #include "diagnose/report/diagnosis_html.h"
 
+#include <algorithm>
 #include <sstream>
 
 #include "diagnose/report/diagnosis_plots.h"
@@ -34,7 +35,16 @@ bool GapTable(const Diagnosis& d, bool synthetic, workflow::HtmlReport* report,
   return report->Table(t, error);
 }
 
-bool RankingTable(const DiagnosisRunInfo& info, const DiagnosisStep& s,
+// What became of a step's winner: named, re-valued (model form, joins the fit) or neither (a
+// tie, the control guard).
+std::string WinnerTag(const Diagnosis& d, int candidate) {
+  if (std::find(d.named.begin(), d.named.end(), candidate) != d.named.end()) return " (named)";
+  for (const ActiveEffect& a : d.revalued)
+    if (a.candidate == candidate) return " (re-valued, not named)";
+  return " (best, not named)";
+}
+
+bool RankingTable(const DiagnosisRunInfo& info, const Diagnosis& d, const DiagnosisStep& s,
                   workflow::HtmlReport* report, std::string* error) {
   workflow::HtmlTable t{
       s.ranking.message,
@@ -44,7 +54,7 @@ bool RankingTable(const DiagnosisRunInfo& info, const DiagnosisStep& s,
   for (int i : s.ranking.order) {
     const RankingEntry& e = s.entries[i];
     const EffectParameter& p = info.candidates[e.candidate].parameters[0];
-    t.rows.push_back({std::to_string(rank++) + (i == s.ranking.winner ? " (named)" : ""), e.key,
+    t.rows.push_back({std::to_string(rank++) + (i == s.ranking.winner ? WinnerTag(d, e.candidate) : ""), e.key,
                       p.name + " = " + (e.values.empty() ? "" : Num(e.values[0], 3)) + " " + p.unit,
                       e.values.empty() ? "" : EffectDirection(p, e.values[0]),
                       e.simulated ? "simulated" : "linearised", Num(e.chi2_per_dof, 3),
@@ -103,7 +113,7 @@ bool WriteDiagnosisHtml(const std::string& path, const DiagnosisRunInfo& info, c
   }
   for (size_t k = 0; k < d.steps.size(); ++k) {
     report.Section("Candidate effects, step " + std::to_string(k + 1), syn);
-    if (!RankingTable(info, d.steps[k], &report, error)) return false;
+    if (!RankingTable(info, d, d.steps[k], &report, error)) return false;
     std::vector<std::string> carried;
     for (const ObservableShare& o : d.steps[k].carried)
       carried.push_back(o.observable + ": χ² gain over the runner-up " +

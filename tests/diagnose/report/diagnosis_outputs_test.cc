@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "core/io/scratch_dir.h"
@@ -113,6 +114,41 @@ TEST_CASE("diagnosis.json gives the screen's directed p beside the omnibus p", "
     return;
   }
   FAIL("no dataset without a gap named shape");
+}
+
+}  // namespace demcal::diagnose
+
+namespace demcal::diagnose {
+
+TEST_CASE("a re-valued parameter and a named effect reach the outputs apart", "[unit]") {
+  // Shape (added) and less rolling resistance than an assumed 0.3 (re-valued) together
+  // (revaluation_test.cc): the named effect in named_effects_signed, the re-valued one in
+  // revalued_parameters only, both in diagnosed_params.json with their roles, and the report
+  // tags each step's winner with what became of it.
+  ScratchDir dir("diagnosis_outputs_revalued");
+  testing::AnalyticForwardModel model;
+  const std::vector<Observation> obs =
+      testing::MakeObservations(&model, 0.5, {{1, -0.25}, {2, 0.6}}, 1);
+  std::vector<CandidateEffect> candidates = testing::Candidates();
+  candidates[1].parameters[0].assumed = 0.3;
+  const Diagnosis d = Diagnose(model, obs, candidates, DiagnoseOptions{});
+  const nlohmann::json j = Written(dir, "both", candidates, d);
+  CHECK(j["termination"] == "effect_found");
+  REQUIRE(j["named_effects_signed"].size() == 1);
+  CHECK(j["named_effects_signed"][0]["effect"] == "shape");
+  REQUIRE(j["revalued_parameters"].size() == 1);
+  CHECK(j["revalued_parameters"][0]["effect"] == "rolling");
+  CHECK(j["revaluation_tied_with"].is_null());
+  CHECK(j["after_fit"] == "named_effects");
+  const nlohmann::json params = ReadJson(dir.str("both/diagnosed_params.json"));
+  REQUIRE(params["effects"].size() == 2);
+  std::set<std::string> roles;
+  for (const nlohmann::json& e : params["effects"])
+    roles.insert(e["effect"].get<std::string>() + ":" + e["role"].get<std::string>());
+  CHECK(roles == std::set<std::string>{"shape:named", "rolling:revalued"});
+  const std::string html = Text(dir.str("both/report.html"));
+  CHECK(html.find("(named)") != std::string::npos);
+  CHECK(html.find("(re-valued, not named)") != std::string::npos);
 }
 
 }  // namespace demcal::diagnose
