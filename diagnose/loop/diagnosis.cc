@@ -114,7 +114,9 @@ int RevaluedEntry(const DiagnosisStep& step, const std::vector<CandidateEffect>&
   auto parameter = [&](int i) -> const EffectParameter& {
     return candidates[step.entries[i].candidate].parameters[0];
   };
-  auto value = [&](int i) { return step.entries[i].values.empty() ? NAN : step.entries[i].values[0]; };
+  auto value = [&](int i) {
+    return step.entries[i].values.empty() ? NAN : step.entries[i].values[0];
+  };
   int revalued = -1, added_tie = -1;
   std::vector<int> listed;
   if (t < 0) {
@@ -141,8 +143,9 @@ int RevaluedEntry(const DiagnosisStep& step, const std::vector<CandidateEffect>&
   if (added_tie >= 0) {
     const RankingEntry& e = step.entries[added_tie];
     d->revaluation_tie = {e.candidate, e.values};
-    note += "; an added effect fitted within noise of it, " + AddedTieText(e, parameter(added_tie)) +
-            ", tried again with the re-valued parameter in the fit";
+    note += "; an added effect fitted within noise of it, " +
+            AddedTieText(e, parameter(added_tie)) +
+            ", tried again only where a gap remains with the re-valued parameter in the fit";
   }
   d->revaluation_note += (d->revaluation_note.empty() ? "" : "; then ") + note;
   return revalued;

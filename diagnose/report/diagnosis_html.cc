@@ -54,12 +54,13 @@ bool RankingTable(const DiagnosisRunInfo& info, const Diagnosis& d, const Diagno
   for (int i : s.ranking.order) {
     const RankingEntry& e = s.entries[i];
     const EffectParameter& p = info.candidates[e.candidate].parameters[0];
-    t.rows.push_back({std::to_string(rank++) + (i == s.ranking.winner ? WinnerTag(d, e.candidate) : ""), e.key,
-                      p.name + " = " + (e.values.empty() ? "" : Num(e.values[0], 3)) + " " + p.unit,
-                      e.values.empty() ? "" : EffectDirection(p, e.values[0]),
-                      e.simulated ? "simulated" : "linearised", Num(e.chi2_per_dof, 3),
-                      Num(e.evidence.delta_bic, 3), Num(e.evidence.lr_p_value, 3),
-                      Num(e.evidence.floor, 3), Num(e.signature_match, 3), e.note});
+    t.rows.push_back(
+        {std::to_string(rank++) + (i == s.ranking.winner ? WinnerTag(d, e.candidate) : ""), e.key,
+         p.name + " = " + (e.values.empty() ? "" : Num(e.values[0], 3)) + " " + p.unit,
+         e.values.empty() ? "" : EffectDirection(p, e.values[0]),
+         e.simulated ? "simulated" : "linearised", Num(e.chi2_per_dof, 3),
+         Num(e.evidence.delta_bic, 3), Num(e.evidence.lr_p_value, 3), Num(e.evidence.floor, 3),
+         Num(e.signature_match, 3), e.note});
   }
   return report->Table(t, error);
 }
