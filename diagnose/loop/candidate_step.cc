@@ -301,7 +301,13 @@ StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>
   }
   out.step.ranking = RankCandidates(out.step.entries);
   out.step.simulations = model.SimulationsRun() - sims0;
-  if (out.step.ranking.winner < 0) return out;
+  if (out.step.ranking.winner < 0) {
+    if (const int a = out.step.ranking.set_aside; a >= 0 && !out.step.entries[a].control) {
+      out.has_set_aside = true;
+      out.set_aside_fit = RefittedFit(f, fit, work[a], candidates);
+    }
+    return out;
+  }
   const int win = out.step.ranking.winner;
   const Work& w = work[win];
   int runner = -1;

@@ -18,6 +18,10 @@ struct StepOutcome {
   bool has_winner = false;
   FitState next;      // the winner's refitted fit (valid when has_winner)
   FitState tied_fit;  // the refitted fit of the entry tied with it (valid when ranking.tied >= 0)
+  // The refit of the winner the control guard set aside (ranking.set_aside, not a control):
+  // the loop takes it into the fit when it only re-values a modelled parameter.
+  bool has_set_aside = false;
+  FitState set_aside_fit;
   std::vector<PhaseTime> phases;
   // Per entry: its signature per unit of its parameter (raw units), secant-corrected by its
   // refits.

@@ -151,6 +151,23 @@ int RevaluedEntry(const DiagnosisStep& step, const std::vector<CandidateEffect>&
   return revalued;
 }
 
+// The control guard's set-aside winner (ranking.h), when it only re-values a modelled
+// parameter: true, with d->revalued and its note filled (the control that fitted about as well
+// said beside it).
+bool SetAsideRevalues(const DiagnosisStep& step, const std::vector<CandidateEffect>& candidates,
+                      Diagnosis* d) {
+  const int a = step.ranking.set_aside;
+  const RankingEntry& e = step.entries[a];
+  const EffectParameter& p = candidates[e.candidate].parameters[0];
+  if (e.control || e.values.empty() || !IsRevaluation(p, e.values[0])) return false;
+  d->revalued.push_back({e.candidate, e.values});
+  d->revaluation_note += (d->revaluation_note.empty() ? "" : "; then ") +
+                         RevaluationText(e.key, p, e.values[0], e.chi2_per_dof) +
+                         "; a control fitted about as well (" + step.ranking.message +
+                         "), both re-tune the base model";
+  return true;
+}
+
 // Of the tied refits, the one whose gap test gives the larger χ²/dof: "not told apart: X or Y"
 // offers either effect, so the fit it promises is the worse one. Fills each one's χ²/dof.
 FitState WorseTiedFit(const std::vector<const FitState*>& tied,
@@ -264,17 +281,11 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
     const DiagnosisTermination nothing = d.screened && first
                                              ? DiagnosisTermination::kNoMissingEffect
                                              : DiagnosisTermination::kModelFormOffset;
-    if (s.step.ranking.control_first) {
-      d.termination = d.named.empty() ? nothing : DiagnosisTermination::kGapRemains;
-      d.control_note = s.step.ranking.message;
-      break;
-    }
-    if (const int revalued = s.has_winner ? RevaluedEntry(s.step, candidates, &d) : -1;
-        revalued >= 0) {
-      // The re-valuation's refit becomes the fit: the base model's own mechanism at the value the
-      // data ask for. A gap left beyond it is the next step's question (an effect missing
-      // beside the offset); none left: the answer is the offset, or the effects named before.
-      fit = revalued == s.step.ranking.winner ? s.next : s.tied_fit;
+    // A re-valuation's refit becomes the fit: the base model's own mechanism at the value the
+    // data ask for. A gap left beyond it is the next step's question (an effect missing beside
+    // the offset); none left: the answer is the offset, or the effects named before.
+    auto take_revalued = [&](const FitState& revalued_fit) {
+      fit = revalued_fit;
       ++revalued_steps;
       gap = TestGap(WithPrediction(observations, fit.prediction, options.discrepancy_floor),
                     fit.Fitted(), {options.significance})
@@ -283,6 +294,22 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
                                               : DiagnosisTermination::kEffectFound)
                                        : DiagnosisTermination::kModelFormOffset;
       if (progress) progress("re-valued: " + d.revaluation_note);
+    };
+    if (s.step.ranking.control_first) {
+      d.control_note = s.step.ranking.message;
+      // With a gap, the winner the guard set aside, when it only re-values a modelled
+      // parameter, re-tunes the base model as the control does and fits better: it joins the
+      // fit (nothing named), and the next step asks what is missing beside the offset.
+      if (gap && s.has_set_aside && SetAsideRevalues(s.step, candidates, &d)) {
+        take_revalued(s.set_aside_fit);
+        continue;
+      }
+      d.termination = d.named.empty() ? nothing : DiagnosisTermination::kGapRemains;
+      break;
+    }
+    if (const int revalued = s.has_winner ? RevaluedEntry(s.step, candidates, &d) : -1;
+        revalued >= 0) {
+      take_revalued(revalued == s.step.ranking.winner ? s.next : s.tied_fit);
       continue;
     }
     if (s.has_winner && s.step.ranking.tied >= 0) {

@@ -36,6 +36,7 @@ Ranking RankCandidates(const std::vector<RankingEntry>& entries) {
                                                            : control_level;
     if (control >= 0) {
       r.control_first = true;
+      r.set_aside = r.winner;
       m << "the control " << entries[control].key
         << " (a copy of a fitted parameter) explains the gap as well as "
         << "any effect (delta BIC " << entries[control].evidence.delta_bic

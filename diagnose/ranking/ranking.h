@@ -54,6 +54,7 @@ struct Ranking {
   int tied = -1;               // an entry not told apart from the winner (−1: none)
   int same_mechanism = -1;     // another law of the winner's mechanism, not told apart from it
   bool control_first = false;  // the control ranked first, or level with the winner: no effect
+  int set_aside = -1;          // the winner the control guard set aside (−1: none)
   std::string message;
 };
 

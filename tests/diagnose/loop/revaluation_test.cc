@@ -198,3 +198,33 @@ TEST_CASE("a re-valued parameter joins the fit: an effect and an offset both ans
 }
 
 }  // namespace demcal::diagnose
+namespace demcal::diagnose {
+
+TEST_CASE("a re-valuation the control guard set aside joins the fit, nothing named", "[unit]") {
+  // A constructed situation (one noise draw; the stand-in rarely makes it): the base
+  // calibration stopped off its optimum (u 0.42 for 0.375) and a little less rolling resistance
+  // than assumed (−0.05 of 0.3), so re-tuning μ (the control) fits about as well as the rolling
+  // refit. The guard names nothing; the rolling refit, a re-tuning of the base model as the
+  // control is and the better fit, joins the fit, so that a next step would ask what is missing
+  // beside it.
+  testing::AnalyticForwardModel model;
+  model.base_stop_unit = 0.42;
+  const std::vector<Observation> obs = testing::MakeObservations(&model, 0.5, {{1, -0.05}}, 1);
+  const Diagnosis d = Diagnose(model, obs, WithAssumedRolling(), DiagnoseOptions{});
+  REQUIRE_FALSE(d.steps.empty());
+  const Ranking& r = d.steps[0].ranking;
+  REQUIRE(r.control_first);
+  REQUIRE(r.set_aside >= 0);
+  CHECK(d.steps[0].entries[r.set_aside].key == "rolling");
+  CHECK(d.termination == DiagnosisTermination::kModelFormOffset);
+  CHECK(d.named.empty());
+  REQUIRE(d.revalued.size() == 1);
+  CHECK(d.revalued[0].candidate == 1);
+  CHECK(d.revalued[0].values[0] == Approx(-0.05).margin(0.02));
+  REQUIRE(d.final_point.effects.size() == 1);
+  CHECK(d.final_point.effects[0].candidate == 1);
+  CHECK(d.after_revalued);
+  CHECK(d.message.find("a control fitted about as well") != std::string::npos);
+}
+
+}  // namespace demcal::diagnose
