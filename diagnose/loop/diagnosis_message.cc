@@ -91,6 +91,8 @@ std::string BestNotNamedText(const Diagnosis& d, const DiagnoseOptions& options,
   if (best < 0 || !step.entries[best].simulated || step.entries[best].control ||
       !(step.entries[best].evidence.delta_bic < 0) || step.entries[best].values.empty())
     return "";
+  for (const ActiveEffect& a : d.revalued)
+    if (a.candidate == step.entries[best].candidate) return "";  // said as the re-valuation
   const RankingEntry& e = step.entries[best];
   const std::vector<double>& r = step.refit_residuals[best];
   int row = -1;
@@ -187,6 +189,9 @@ std::string DiagnosisMessage(const Diagnosis& d, const DiagnoseOptions& options,
          "engine's, a real powder's) fits the same, so no missing effect is named; calibrate "
          "that parameter in the base to measure it (base: "
       << d.gap_before.summary << "; re-valued: " << d.gap_after.summary << ")";
+    if (d.gap_after.gap_detected)
+      m << "; a gap remains beside the re-valued parameter, not explained by the library"
+        << BestNotNamedText(d, options, candidates);
   } else if (!d.control_note.empty()) {
     m << "model-form offset / no missing effect: " << d.control_note << " (discrepancy floor "
       << core::NumberText(d.floor_before, 3) << " single-run scatter(s) beyond the fixed "
