@@ -68,13 +68,6 @@ std::string Names(const std::vector<int>& named, const std::vector<CandidateEffe
   return s;
 }
 
-// Whether candidate c re-values a modelled parameter already re-valued (revaluation.h).
-bool Revalued(const Diagnosis& d, int c) {
-  for (const ActiveEffect& a : d.revalued)
-    if (a.candidate == c) return true;
-  return false;
-}
-
 // Whether candidate c is another law of a mechanism already named.
 bool MechanismNamed(const Diagnosis& d, const std::vector<CandidateEffect>& candidates, int c) {
   for (int n : d.named)
@@ -101,6 +94,11 @@ std::string AddedTieText(const RankingEntry& e, const EffectParameter& p) {
   return e.key + " (" + EffectDirection(p, e.values[0]) + ": " + p.name + " = " +
          core::NumberText(e.values[0], 3) + (p.unit.empty() ? "" : " " + p.unit) +
          "; delta BIC " + core::NumberText(e.evidence.delta_bic, 3) + ")";
+}
+
+// Adds one step's re-valuation note to the diagnosis' ("; then " after an earlier one).
+void AppendRevaluationNote(const std::string& note, Diagnosis* d) {
+  d->revaluation_note += (d->revaluation_note.empty() ? "" : "; then ") + note;
 }
 
 // The re-valuation rule (revaluation.h): the step's entry whose refit joins the fit as a
@@ -147,7 +145,7 @@ int RevaluedEntry(const DiagnosisStep& step, const std::vector<CandidateEffect>&
             AddedTieText(e, parameter(added_tie)) +
             ", tried again only where a gap remains with the re-valued parameter in the fit";
   }
-  d->revaluation_note += (d->revaluation_note.empty() ? "" : "; then ") + note;
+  AppendRevaluationNote(note, d);
   return revalued;
 }
 
@@ -161,10 +159,10 @@ bool SetAsideRevalues(const DiagnosisStep& step, const std::vector<CandidateEffe
   const EffectParameter& p = candidates[e.candidate].parameters[0];
   if (e.control || e.values.empty() || !IsRevaluation(p, e.values[0])) return false;
   d->revalued.push_back({e.candidate, e.values});
-  d->revaluation_note += (d->revaluation_note.empty() ? "" : "; then ") +
-                         RevaluationText(e.key, p, e.values[0], e.chi2_per_dof) +
-                         "; a control fitted about as well (" + step.ranking.message +
-                         "), both re-tune the base model";
+  AppendRevaluationNote(RevaluationText(e.key, p, e.values[0], e.chi2_per_dof) +
+                            "; a control fitted about as well (" + step.ranking.message +
+                            "), both re-tune the base model",
+                        d);
   return true;
 }
 
@@ -244,8 +242,7 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
          static_cast<int>(d.named.size()) + revalued_steps < options.max_effects) {
     std::vector<int> remaining;
     for (int c = 0; c < static_cast<int>(candidates.size()); ++c)
-      if (std::find(d.named.begin(), d.named.end(), c) == d.named.end() &&
-          !MechanismNamed(d, candidates, c) && !Revalued(d, c))
+      if (!d.Named(c) && !MechanismNamed(d, candidates, c) && !d.Revalued(c))
         remaining.push_back(c);
     if (remaining.empty()) break;
     const auto step_start = Clock::now();

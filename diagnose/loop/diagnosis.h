@@ -46,6 +46,7 @@
 //   d.termination;  // kNoMissingEffect, kEffectFound, kNotToldApart, kModelFormOffset, ...
 //
 // Thread-safety: runs on the calling thread; the model parallelises.
+#include <algorithm>
 #include <functional>
 #include <string>
 #include <vector>
@@ -130,7 +131,7 @@ struct Diagnosis {
   std::vector<ActiveEffect> revalued;
   std::string revaluation_note;
   // An added effect that fitted within noise of a re-valuation that is less of a modelled
-  // mechanism than assumed (RevaluationSettlesTie): not named, tried again on the re-valued
+  // mechanism than assumed (RevaluationOfTie): not named, tried again on the re-valued
   // fit when a gap remains there. candidate −1: none.
   ActiveEffect revaluation_tie{-1, {}};
   ModelPoint final_point;  // the base with the re-valued parameters and the named effects
@@ -150,6 +151,13 @@ struct Diagnosis {
   std::vector<PhaseTime> phases;
   int simulations = 0, simulations_reused = 0;
   double wall_time_s = 0;
+
+  // Whether candidate c was named, or re-values a modelled parameter (in `revalued`).
+  bool Named(int c) const { return std::find(named.begin(), named.end(), c) != named.end(); }
+  bool Revalued(int c) const {
+    return std::any_of(revalued.begin(), revalued.end(),
+                       [c](const ActiveEffect& a) { return a.candidate == c; });
+  }
 };
 
 using DiagnoseProgress = std::function<void(const std::string& line)>;

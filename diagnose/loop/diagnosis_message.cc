@@ -39,7 +39,7 @@ std::string Signed(const Diagnosis& d, const ModelPoint& point,
   std::ostringstream s;
   s.precision(3);
   for (const ActiveEffect& a : point.effects) {
-    if (std::find(d.named.begin(), d.named.end(), a.candidate) == d.named.end())
+    if (!d.Named(a.candidate))
       continue;  // a re-valued modelled parameter: model form, said apart (RevaluedText)
     const CandidateEffect& c = candidates[a.candidate];
     const EffectParameter& p = c.parameters[0];
@@ -91,8 +91,7 @@ std::string BestNotNamedText(const Diagnosis& d, const DiagnoseOptions& options,
   if (best < 0 || !step.entries[best].simulated || step.entries[best].control ||
       !(step.entries[best].evidence.delta_bic < 0) || step.entries[best].values.empty())
     return "";
-  for (const ActiveEffect& a : d.revalued)
-    if (a.candidate == step.entries[best].candidate) return "";  // said as the re-valuation
+  if (d.Revalued(step.entries[best].candidate)) return "";  // said as the re-valuation
   const RankingEntry& e = step.entries[best];
   const std::vector<double>& r = step.refit_residuals[best];
   int row = -1;

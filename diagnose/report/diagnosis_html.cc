@@ -38,10 +38,9 @@ bool GapTable(const Diagnosis& d, bool synthetic, workflow::HtmlReport* report,
 // What became of a step's winner: named, re-valued (model form, joins the fit) or neither (a
 // tie, the control guard).
 std::string WinnerTag(const Diagnosis& d, int candidate) {
-  if (std::find(d.named.begin(), d.named.end(), candidate) != d.named.end()) return " (named)";
-  for (const ActiveEffect& a : d.revalued)
-    if (a.candidate == candidate) return " (re-valued, not named)";
-  return " (best, not named)";
+  return d.Named(candidate)      ? " (named)"
+         : d.Revalued(candidate) ? " (re-valued, not named)"
+                                 : " (best, not named)";
 }
 
 bool RankingTable(const DiagnosisRunInfo& info, const Diagnosis& d, const DiagnosisStep& s,

@@ -195,7 +195,7 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
   Json named = Json::array(), signed_effects = Json::array();
   for (int c : d.named) named.push_back(info.candidates[c].key);
   for (const ActiveEffect& a : d.final_point.effects) {
-    if (std::find(d.named.begin(), d.named.end(), a.candidate) == d.named.end())
+    if (!d.Named(a.candidate))
       continue;  // a re-valued modelled parameter: revalued_parameters
     const EffectParameter& p = info.candidates[a.candidate].parameters[0];
     signed_effects.push_back({{"effect", info.candidates[a.candidate].key},
@@ -336,10 +336,9 @@ Json DiagnosedParamsJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
     Json values = Json::object();
     for (size_t k = 0; k < a.values.size() && k < c.parameters.size(); ++k)
       values[c.parameters[k].name] = Number(a.values[k]);
-    const bool named = std::find(d.named.begin(), d.named.end(), a.candidate) != d.named.end();
     effects.push_back({{"effect", c.key},
                        {"description", c.description},
-                       {"role", named ? "named" : "revalued"},
+                       {"role", d.Named(a.candidate) ? "named" : "revalued"},
                        {"values", values}});
   }
   return {{"format", "demcal-params/1"},

@@ -21,10 +21,12 @@ std::vector<CandidateEffect> WithAssumedRolling() {
   return c;
 }
 
-Diagnosis Run(const std::vector<std::pair<int, double>>& hidden, uint64_t seed) {
+// The stand-in's diagnosis of data with `hidden` effects (candidate, value) and noise `seed`.
+Diagnosis Run(const std::vector<std::pair<int, double>>& hidden, uint64_t seed,
+              const std::vector<CandidateEffect>& candidates = WithAssumedRolling()) {
   testing::AnalyticForwardModel model;
   const std::vector<Observation> obs = testing::MakeObservations(&model, 0.5, hidden, seed);
-  return Diagnose(model, obs, WithAssumedRolling(), DiagnoseOptions{});
+  return Diagnose(model, obs, candidates, DiagnoseOptions{});
 }
 
 }  // namespace
@@ -122,23 +124,19 @@ TEST_CASE("a tie is a model-form offset only when both re-value; else it stays n
           "[unit]") {
   for (uint64_t seed : {1, 2, 3}) {
     INFO("noise seed " << seed);
-    testing::AnalyticForwardModel model;
     // Rolling at +0.35, as in the not-told-apart test of diagnosis_test.cc (a tie with
     // roughness in every draw), here declared as re-valuing an assumed 0.5.
-    const std::vector<Observation> obs = testing::MakeObservations(&model, 0.5, {{1, 0.35}}, seed);
     std::vector<CandidateEffect> both = testing::AmbiguousCandidates();
     both[1].parameters[0].assumed = 0.5;
     both[5].parameters[0].assumed = 0.5;
-    const Diagnosis d = Diagnose(model, obs, both, DiagnoseOptions{});
+    const Diagnosis d = Run({{1, 0.35}}, seed, both);
     CHECK(d.termination == DiagnosisTermination::kModelFormOffset);
     CHECK(d.named.empty());
     CHECK(d.revalued.size() == 2);
 
     std::vector<CandidateEffect> one = both;
     one[5].parameters[0].assumed = 0;  // roughness is a mechanism the base lacks
-    testing::AnalyticForwardModel again;
-    const std::vector<Observation> obs2 = testing::MakeObservations(&again, 0.5, {{1, 0.35}}, seed);
-    const Diagnosis e = Diagnose(again, obs2, one, DiagnoseOptions{});
+    const Diagnosis e = Run({{1, 0.35}}, seed, one);
     CHECK(e.termination == DiagnosisTermination::kNotToldApart);
     CHECK(e.revalued.empty());
   }
@@ -155,9 +153,7 @@ TEST_CASE("less than assumed, tied with an added effect, is the offset; the effe
   // rule the answer was "not told apart: rolling or slip" on data with no added mechanism.
   for (uint64_t seed : {1, 2, 3}) {
     INFO("noise seed " << seed);
-    testing::AnalyticForwardModel model;
-    const std::vector<Observation> obs = testing::MakeObservations(&model, 0.5, {{1, -0.25}}, seed);
-    const Diagnosis d = Diagnose(model, obs, testing::SlipCandidates(), DiagnoseOptions{});
+    const Diagnosis d = Run({{1, -0.25}}, seed, testing::SlipCandidates());
     const DiagnosisStep& first = d.steps.front();
     REQUIRE(first.ranking.tied >= 0);  // the situation the rule is for
     CHECK(d.termination == DiagnosisTermination::kModelFormOffset);
