@@ -197,6 +197,18 @@ void RefineSensitivities(Batch& batch, CandidateEvaluator& evaluator, const Para
   }
 }
 
+// The local crossing of a one-parameter, one-target search that matched no candidate, with its
+// value and σ in SI (σ through the unit-to-SI slope at the crossing).
+void FitCrossing(const ParameterSpace& space, CalibrationSummary* s) {
+  std::vector<Sample> samples;
+  for (const Candidate& c : s->candidates) samples.push_back({c.unit, c.trial});
+  s->local_crossing = FitLocalCrossing(samples);
+  if (!s->local_crossing.fitted) return;
+  const std::vector<double> unit{s->local_crossing.unit};
+  s->local_crossing_value = space.FromUnit(unit)[0];
+  s->local_crossing_sigma = SiPerUnit(space, unit)[0] * s->local_crossing.unit_sigma;
+}
+
 }  // namespace
 
 CalibrationSummary Calibrate(CandidateEvaluator& evaluator, const ParameterSpace& space,
@@ -254,6 +266,7 @@ CalibrationSummary Calibrate(CandidateEvaluator& evaluator, const ParameterSpace
     Analyse(space, targets, options, r, &s);
     RefineSensitivities(batch, evaluator, space, targets, options, r, &s);
   }
+  if (!any_within && space.Size() == 1 && targets.size() == 1) FitCrossing(space, &s);
   return s;
 }
 

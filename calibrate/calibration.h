@@ -19,11 +19,13 @@
 // Thread-safety: Calibrate runs on the calling thread; the evaluator parallelises.
 #include <Eigen/Dense>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "calibrate/candidate_evaluator.h"
 #include "calibrate/identifiability.h"
+#include "calibrate/local_crossing.h"
 #include "calibrate/optimiser.h"
 #include "calibrate/parameter_space.h"
 #include "calibrate/response_surface.h"
@@ -91,6 +93,12 @@ struct CalibrationSummary {
   int replicates_reused = 0;  // found in the journal (resumed work)
   int refinement_points = 0;  // candidates added after the optimiser to sharpen J (also in candidates)
   std::string journal_error;  // first failure to write the journal ("" if none)
+  // One parameter and one target, no candidate within noise: the crossing of a line through the
+  // candidates around the measurement (local_crossing.h), and its value and σ in SI (NaN: not
+  // fitted). Offered beside the best candidate; termination and best are the optimiser's.
+  LocalCrossing local_crossing;
+  double local_crossing_value = std::numeric_limits<double>::quiet_NaN();
+  double local_crossing_sigma = std::numeric_limits<double>::quiet_NaN();
 
   bool ok() const { return best >= 0 && termination == Termination::kWithinNoise; }
   std::string BriefReport(const ParameterSpace& space) const;

@@ -12,6 +12,9 @@ std::string CalibrationSummary::BriefReport(const ParameterSpace& space) const {
   out << "calibration: " << TerminationName(termination) << " (" << message << "), " << candidates.size()
       << " candidates in " << batches << " batches, " << replicates_run << " replicate runs (+"
       << replicates_reused << " from the journal)\n";
+  if (local_crossing.fitted)
+    out << "local crossing: " << space.parameters[0].name << " = " << local_crossing_value
+        << " +- " << local_crossing_sigma << ", " << local_crossing.message << "\n";
   if (best < 0) return out.str();
   out << "best: " << space.Describe(candidates[best].parameters) << "\n";
   for (const TargetResidual& t : residuals)

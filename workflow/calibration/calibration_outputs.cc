@@ -107,6 +107,13 @@ Json ResultJson(const CalibrationRunInfo& info, const CalibrationSummary& s) {
                              {"values", MatrixJson(s.jacobian)}, {"sigma", MatrixJson(s.jacobian_sigma)},
                              {"note", s.jacobian_note}};
   j["identifiability"] = IdentifiabilityJson(s.identifiability);
+  const calibrate::LocalCrossing& lc = s.local_crossing;
+  j["local_crossing"] = {{"fitted", lc.fitted}, {"matched", lc.matched},
+                         {"value", NumOrNull(s.local_crossing_value)},
+                         {"sigma", NumOrNull(s.local_crossing_sigma)}, {"points", lc.points},
+                         {"chi_square", lc.chi_square}, {"dof", lc.dof},
+                         {"residual_sigma_in_uncertainties", NumOrNull(lc.fitted ? lc.residual_sigma : NAN)},
+                         {"message", lc.message}};
   j["candidate_targets"] = GainsJson(info.gains);
   j["journal_error"] = s.journal_error.empty() ? Json(nullptr) : Json(s.journal_error);
   return j;

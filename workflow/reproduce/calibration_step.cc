@@ -73,6 +73,9 @@ void FillOutcome(const StudyFile& study, const CalibrationResult& r, Calibration
     o->sem = t.sem;
   }
   if (!study.targets.empty()) o->provenance = study.targets[0].provenance;
+  o->local_crossing = r.summary.local_crossing;
+  o->local_value = r.summary.local_crossing_value;
+  o->local_sigma = r.summary.local_crossing_sigma;
 }
 
 }  // namespace
@@ -82,7 +85,10 @@ nlohmann::json CalibrationOutcome::ToJson() const {
           {"value", NumOrNull(value)}, {"sigma", NumOrNull(sigma)}, {"measured", NumOrNull(measured)},
           {"uncertainty", NumOrNull(uncertainty)}, {"simulated", NumOrNull(simulated)},
           {"sem", NumOrNull(sem)}, {"provenance", provenance}, {"clump_count", clump_count},
-          {"result_dir", result_dir}};
+          {"result_dir", result_dir},
+          {"local_crossing", {{"fitted", local_crossing.fitted}, {"matched", local_crossing.matched},
+                              {"value", NumOrNull(local_value)}, {"sigma", NumOrNull(local_sigma)},
+                              {"message", local_crossing.message}}}};
 }
 
 bool CheckCalibrationStep(const CalibrationStep& step, std::string* error) {

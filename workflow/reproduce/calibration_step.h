@@ -11,10 +11,12 @@
 //   CalibrationStep step{.dir = ctx.StageDir("species") + "/BP", ...};
 //   CalibrationOutcome o;
 //   if (!RunCalibrationStep(ctx, step, &o, &error)) ...;   // false only for bad input / outputs
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "calibrate/local_crossing.h"
 #include "calibrate/termination.h"
 #include "workflow/reproduce/reproduce_context.h"
 
@@ -44,6 +46,10 @@ struct CalibrationOutcome {
   std::string provenance;        // of the measurement row: measured, inferred, synthetic
   int clump_count = 0;           // chosen count (0: no loop)
   std::string result_dir;        // where result.json is (dir, or dir/clumps_<n>)
+  // No candidate within noise: the line through the candidates around the crossing
+  // (calibrate/local_crossing.h), its value and σ in SI (NaN: not fitted).
+  calibrate::LocalCrossing local_crossing;
+  double local_value = NAN, local_sigma = NAN;
   nlohmann::json ToJson() const;
 };
 

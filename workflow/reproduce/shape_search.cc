@@ -44,7 +44,9 @@ bool WriteCountExperiment(const WorkflowSpecies& s, int count, const std::string
   return true;
 }
 
-ShapeSearchRow RowOf(const WorkflowSpecies& s, int count, const CalibrationOutcome& o) {
+}  // namespace
+
+ShapeSearchRow ShapeRowOf(const WorkflowSpecies& s, int count, const CalibrationOutcome& o) {
   const AspectRatioSearch& a = s.aspect_ratio;
   ShapeSearchRow row;
   row.count = count;
@@ -67,8 +69,25 @@ ShapeSearchRow RowOf(const WorkflowSpecies& s, int count, const CalibrationOutco
   row.termination = calibrate::TerminationName(o.termination);
   row.message = o.message;
   row.result_dir = o.result_dir;
+  const calibrate::LocalCrossing& line = o.local_crossing;
+  if (count >= 2 && !row.within_noise && line.matched) {
+    row.aspect_ratio = o.local_value;
+    row.aspect_sigma = o.local_sigma;
+    row.aspect_at_bound = o.local_value <= row.aspect_min || o.local_value >= row.aspect_max;
+    row.angle_deg = o.measured;  // the line's value at its crossing
+    row.angle_sem_deg = line.residual_sigma * o.uncertainty;
+    row.cost = 0;
+    row.within_noise = row.local_fit = true;
+    row.message = "aspect ratio " + line.message + "; the search: " + o.message;
+  } else if (count >= 2 && line.fitted) {
+    row.message += "; a line through the candidates around the crossing puts it at aspect ratio " +
+                   core::NumberText(o.local_value) + " ± " + core::NumberText(o.local_sigma) +
+                   ", " + line.message;
+  }
   return row;
 }
+
+namespace {
 
 // Heaps and wall time of a count's calibration, from its result.json (rank 0 wrote it; every
 // rank takes rank 0's copy).
@@ -92,7 +111,8 @@ std::string RowText(const ShapeSearchRow& r) {
   std::string text = std::to_string(r.count) + (r.count == 1 ? " sphere" : " spheres");
   if (r.count >= 2) text += " at aspect ratio " + core::NumberText(r.aspect_ratio);
   return text + " (" + Deg(r.angle_deg) + " ± " + Deg(r.angle_sem_deg) + " deg against " +
-         Deg(r.measured_deg) + " ± " + Deg(r.uncertainty_deg) + ")";
+         Deg(r.measured_deg) + " ± " + Deg(r.uncertainty_deg) +
+         (r.local_fit ? ", by a line through the candidates around the crossing" : "") + ")";
 }
 
 std::string Note(const WorkflowSpecies& s, const ShapeSearch& out) {
@@ -156,6 +176,7 @@ nlohmann::json ShapeSearch::TableJson() const {
                              {"angle_sem_deg", NumOrNull(r.angle_sem_deg)},
                              {"cost", NumOrNull(r.cost)},
                              {"within_noise", r.within_noise},
+                             {"local_fit", r.local_fit},
                              {"agrees", r.within_noise},
                              {"termination", r.termination},
                              {"note", row_note},
@@ -202,7 +223,7 @@ bool RunShapeSearch(const ReproduceContext& ctx, size_t k, const std::string& di
     CalibrationOutcome o;
     if (!RunCalibrationStep(ctx, ShapeStep(w, k, n, experiment, count_dir), &o, error))
       return false;
-    out->rows.push_back(RowOf(s, n, o));
+    out->rows.push_back(ShapeRowOf(s, n, o));
     ReadCost(&out->rows.back());
     if (out->rows.back().within_noise) out->chosen = n;
   }

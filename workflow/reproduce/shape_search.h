@@ -9,7 +9,10 @@
 // cut to the chains that are grains (aspect_bounds.h): from the shortest chain whose spheres stand
 // apart (DistinctAspectLimit) to the longest whose spheres still touch (ConnectedAspectLimit).
 // The first count whose calibrated shape matches the angle within noise is kept and the larger
-// counts are not run: the smallest count that matches, at a bounded cost.
+// counts are not run: the smallest count that matches, at a bounded cost. A count matches when
+// one candidate does, or, when the candidates bracket the measurement but each scatters more
+// than it, when a straight line through those around the crossing meets the measurement as
+// precisely as it is known (calibrate/local_crossing.h): the shape kept is then the crossing.
 //
 // Each count is one calibration (calibration_step.h) in <dir>/clumps_<n>/ with its own journal
 // (a rerun resumes it), run on a copy of the species' experiment file with the property held and
@@ -40,6 +43,9 @@ struct ShapeSearchRow {
   double measured_deg = 0, uncertainty_deg = 0;  // the species' measured angle ± u
   double cost = 0;             // ((angle − measured) / uncertainty)², dimensionless
   bool within_noise = false;
+  // Matched by the line through the candidates around the crossing (calibrate/local_crossing.h),
+  // no one candidate: aspect ratio and σ are the line's crossing, the angle its value there.
+  bool local_fit = false;
   std::string termination, message;
   int heaps = 0;               // heap simulations run or reused from the journal
   double wall_time_s = 0;      // of the count's calibration in this run
@@ -63,6 +69,11 @@ struct ShapeSearch {
 // the held property for count 1), in `dir`. The whole-workflow check parses it too.
 CalibrationStep ShapeStep(const WorkflowFile& w, size_t k, int count,
                           const std::string& experiment_file, const std::string& dir);
+
+// The Fig. 3 row of species s at `count` from its calibration's outcome: the best candidate's
+// shape and angle, or, where no candidate matched and the line through those around the
+// crossing did, the line's crossing (local_fit).
+ShapeSearchRow ShapeRowOf(const WorkflowSpecies& s, int count, const CalibrationOutcome& o);
 
 bool RunShapeSearch(const ReproduceContext& ctx, size_t k, const std::string& dir,
                     ShapeSearch* out, std::string* error);

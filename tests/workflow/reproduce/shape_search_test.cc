@@ -79,5 +79,55 @@ TEST_CASE("aspect-ratio search: a count's bracket is the workflow range cut to i
   CHECK(one.max_evaluations == 1);
 }
 
+TEST_CASE("aspect-ratio search: a count no candidate matched, matched by the line through its "
+          "candidates", "[unit][shape]") {
+  WorkflowFile w = testing_twin::TwinWorkflow("unused.csv", {1, 2, 3});
+  w.species[0].semi_axes.clear();
+  w.species[0].aspect_ratio = {
+      .min = 1.0, .max = 3.5, .start = 2.0, .max_evaluations = 6, .enabled = true};
+  CalibrationOutcome o;
+  o.termination = calibrate::Termination::kBudget;
+  o.message = "budget used up before a match within noise";
+  const double bound = ConnectedAspectLimit(3, 1.0, 3.5);
+  o.value = bound, o.sigma = 0.04;  // the best candidate: the bound, 33.3 ± 1.1 deg
+  o.measured = 31, o.uncertainty = 1, o.simulated = 33.3, o.sem = 1.1;
+  SECTION("the line as precise as the measurement: its crossing is the shape kept") {
+    o.local_crossing.fitted = o.local_crossing.matched = true;
+    o.local_crossing.residual_sigma = 0.8;
+    o.local_crossing.message = "matched within noise by a straight line through the 5 candidates";
+    o.local_value = 2.85, o.local_sigma = 0.03;
+    const ShapeSearchRow row = ShapeRowOf(w.species[0], 3, o);
+    CHECK(row.within_noise);
+    CHECK(row.local_fit);
+    CHECK(row.aspect_ratio == 2.85);
+    CHECK(row.aspect_sigma == 0.03);
+    CHECK_FALSE(row.aspect_at_bound);
+    CHECK(row.angle_deg == 31);         // the line's value at its crossing
+    CHECK(row.angle_sem_deg == 0.8);    // its standard error there, in degrees
+    CHECK(row.cost == 0);
+    CHECK(row.message.find("straight line") != std::string::npos);
+  }
+  SECTION("the line coarser than the measurement: the best candidate stays, the line is said") {
+    o.local_crossing.fitted = true;
+    o.local_crossing.residual_sigma = 2.1;
+    o.local_crossing.message = "estimated by a straight line through the 4 candidates";
+    o.local_value = 2.84, o.local_sigma = 0.03;
+    const ShapeSearchRow row = ShapeRowOf(w.species[0], 3, o);
+    CHECK_FALSE(row.within_noise);
+    CHECK_FALSE(row.local_fit);
+    CHECK(row.aspect_ratio == bound);
+    CHECK(row.aspect_at_bound);
+    CHECK(row.angle_deg == 33.3);
+    CHECK(row.message.find("puts it at aspect ratio 2.84") != std::string::npos);
+  }
+  SECTION("a sphere has no shape to fit") {
+    o.local_crossing.fitted = o.local_crossing.matched = true;
+    o.local_value = 0.5;
+    const ShapeSearchRow row = ShapeRowOf(w.species[0], 1, o);
+    CHECK_FALSE(row.local_fit);
+    CHECK_FALSE(row.within_noise);
+  }
+}
+
 }  // namespace
 }  // namespace demcal::workflow
