@@ -93,13 +93,12 @@ HtmlTable AspectRatioTable(const std::string& species, const nlohmann::json& row
          sphere ? "1 (sphere)"
                 : Fmt(row.value("aspect_ratio", nlohmann::json()), "%.2f") +
                       (sigma.is_number() ? " ± " + Fmt(sigma, "%.2f") : "") +
-                      (row.value("aspect_at_bound", false) ? " (at bound)" : ""),
+                      (row.value("aspect_at_bound", false) ? " (at bound)" : "") +
+                      (row.value("local_fit", false) ? " (line)" : ""),
          Fmt(row.value("angle_deg", nlohmann::json()), "%.1f") +
              (sem.is_number() ? " ± " + Fmt(sem, "%.1f") : ""),
          Fmt(row.value("cost", nlohmann::json()), "%.3g"),
-         row.value("within_noise", false) ? (row.value("local_fit", false) ? "yes (line)" : "yes")
-                                          : "no",
-         std::to_string(row.value("heaps", 0)),
+         row.value("within_noise", false) ? "yes" : "no", std::to_string(row.value("heaps", 0)),
          Fmt(row.value("wall_time_s", nlohmann::json()), "%.0f"), row.value("termination", ""),
          row.value("note", "")});
   }

@@ -43,8 +43,9 @@ struct ShapeSearchRow {
   double measured_deg = 0, uncertainty_deg = 0;  // the species' measured angle ± u
   double cost = 0;             // ((angle − measured) / uncertainty)², dimensionless
   bool within_noise = false;
-  // Matched by the line through the candidates around the crossing (calibrate/local_crossing.h),
-  // no one candidate: aspect ratio and σ are the line's crossing, the angle its value there.
+  // No candidate matched; the row is the line through the candidates around the crossing
+  // (calibrate/local_crossing.h): aspect ratio and σ its crossing, the angle its value there
+  // with its standard error; within_noise when that is no coarser than the measurement.
   bool local_fit = false;
   std::string termination, message;
   int heaps = 0;               // heap simulations run or reused from the journal
@@ -71,8 +72,8 @@ CalibrationStep ShapeStep(const WorkflowFile& w, size_t k, int count,
                           const std::string& experiment_file, const std::string& dir);
 
 // The Fig. 3 row of species s at `count` from its calibration's outcome: the best candidate's
-// shape and angle, or, where no candidate matched and the line through those around the
-// crossing did, the line's crossing (local_fit).
+// shape and angle, or, where no candidate matched and a line through those around the crossing
+// was fitted, the line's crossing (local_fit).
 ShapeSearchRow ShapeRowOf(const WorkflowSpecies& s, int count, const CalibrationOutcome& o);
 
 bool RunShapeSearch(const ReproduceContext& ctx, size_t k, const std::string& dir,

@@ -107,18 +107,25 @@ TEST_CASE("aspect-ratio search: a count no candidate matched, matched by the lin
     CHECK(row.cost == 0);
     CHECK(row.message.find("straight line") != std::string::npos);
   }
-  SECTION("the line coarser than the measurement: the best candidate stays, the line is said") {
+  SECTION("the line coarser than the measurement: its crossing, not matched") {
     o.local_crossing.fitted = true;
-    o.local_crossing.residual_sigma = 2.1;
+    o.local_crossing.residual_sigma = 1.01;
     o.local_crossing.message = "estimated by a straight line through the 4 candidates";
-    o.local_value = 2.84, o.local_sigma = 0.03;
+    o.local_value = 2.83, o.local_sigma = 0.013;
     const ShapeSearchRow row = ShapeRowOf(w.species[0], 3, o);
     CHECK_FALSE(row.within_noise);
+    CHECK(row.local_fit);
+    CHECK(row.aspect_ratio == 2.83);
+    CHECK(row.angle_sem_deg == 1.01);
+    CHECK(row.message.find("estimated by a straight line") != std::string::npos);
+  }
+  SECTION("no line: the best candidate") {
+    const ShapeSearchRow row = ShapeRowOf(w.species[0], 3, o);
     CHECK_FALSE(row.local_fit);
     CHECK(row.aspect_ratio == bound);
     CHECK(row.aspect_at_bound);
     CHECK(row.angle_deg == 33.3);
-    CHECK(row.message.find("puts it at aspect ratio 2.84") != std::string::npos);
+    CHECK(row.cost == Approx(2.3 * 2.3));
   }
   SECTION("a sphere has no shape to fit") {
     o.local_crossing.fitted = o.local_crossing.matched = true;
