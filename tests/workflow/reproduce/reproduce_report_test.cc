@@ -205,7 +205,12 @@ TEST_CASE("reproduce report: the Fig. 3 table with the calibrated aspect ratio p
      "agrees": false, "termination": "out_of_reach",
      "note": "best aspect ratio at a bound (upper bound 2: ...), still not within noise",
      "heaps": 6,
-     "wall_time_s": 130}])json");
+     "wall_time_s": 130},
+    {"count": 3, "aspect_ratio": 2.825, "aspect_ratio_sigma": 0.009, "aspect_at_bound": false,
+     "angle_deg": 31.0, "angle_sem_deg": 0.74, "cost": 0.0, "within_noise": true,
+     "local_fit": true, "agrees": true, "termination": "budget",
+     "note": "aspect ratio matched within noise by a straight line through the 6 candidates",
+     "heaps": 28, "wall_time_s": 120}])json");
   DemcalValues v;
   v["aspect_ratio_EP"] = {.mean = 2.0, .sem = 0.21};
   const std::vector<SummaryRow> rows = BuildSummaryRows(w.reference, v);
@@ -221,6 +226,9 @@ TEST_CASE("reproduce report: the Fig. 3 table with the calibrated aspect ratio p
   CHECK(html.find("<td>46.2</td>", fig3) != std::string::npos);
   CHECK(html.find("best aspect ratio at a bound (upper bound 2", fig3) !=
         std::string::npos);
+  // A count matched by the line through its candidates says so beside its aspect ratio.
+  CHECK(html.find("<td>2.83 ± 0.01 (line)</td>", fig3) != std::string::npos);
+  CHECK(html.find("matched within noise by a straight line", fig3) != std::string::npos);
   CHECK(report.md.find("| spheres | aspect ratio a/c [-] | angle demcal [deg] | cost (Σ z²) | "
                        "within noise | heaps | wall [s] |") != std::string::npos);
   // The paper states no aspect ratio: the summary row is demcal's alone.

@@ -104,7 +104,7 @@ TEST_CASE("the clumps workflow calibrates each species' aspect ratio; bad ones a
     CHECK(s.aspect_ratio.enabled);
     CHECK(s.aspect_ratio.min == 1.0);
     CHECK(s.aspect_ratio.max == 3.5);
-    CHECK(s.aspect_ratio.max_evaluations == 6);
+    CHECK(s.aspect_ratio.max_evaluations == 8);
     CHECK(s.semi_axes.empty());  // the shape is calibrated, not given
   }
   std::ifstream in(clumps);
