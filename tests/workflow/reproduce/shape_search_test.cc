@@ -91,33 +91,36 @@ TEST_CASE("aspect-ratio search: a count no candidate matched, matched by the lin
   const double bound = ConnectedAspectLimit(3, 1.0, 3.5);
   o.value = bound, o.sigma = 0.04;  // the best candidate: the bound, 33.3 ± 1.1 deg
   o.measured = 31, o.uncertainty = 1, o.simulated = 33.3, o.sem = 1.1;
-  SECTION("the line as precise as the measurement: its crossing is the shape kept") {
-    o.local_crossing.fitted = o.local_crossing.matched = true;
-    o.local_crossing.residual_sigma = 0.8;
-    o.local_crossing.message = "matched within noise by a straight line through the 5 candidates";
-    o.local_value = 2.85, o.local_sigma = 0.03;
-    const ShapeSearchRow row = ShapeRowOf(w.species[0], 3, o);
-    CHECK(row.within_noise);
-    CHECK(row.local_fit);
-    CHECK(row.aspect_ratio == 2.85);
-    CHECK(row.aspect_sigma == 0.03);
-    CHECK_FALSE(row.aspect_at_bound);
-    CHECK(row.angle_deg == 31);         // the line's value at its crossing
-    CHECK(row.angle_sem_deg == 0.8);    // its standard error there, in degrees
-    CHECK(row.cost == 0);
-    CHECK(row.message.find("straight line") != std::string::npos);
-  }
-  SECTION("the line coarser than the measurement: its crossing, not matched") {
+  // The row when the calibration's line was fitted: crossing a ± σ, standard error there.
+  auto row_with_line = [&](bool matched, double residual_sigma, double a, double sigma) {
     o.local_crossing.fitted = true;
-    o.local_crossing.residual_sigma = 1.01;
-    o.local_crossing.message = "estimated by a straight line through the 4 candidates";
-    o.local_value = 2.83, o.local_sigma = 0.013;
-    const ShapeSearchRow row = ShapeRowOf(w.species[0], 3, o);
-    CHECK_FALSE(row.within_noise);
-    CHECK(row.local_fit);
-    CHECK(row.aspect_ratio == 2.83);
-    CHECK(row.angle_sem_deg == 1.01);
-    CHECK(row.message.find("estimated by a straight line") != std::string::npos);
+    o.local_crossing.matched = matched;
+    o.local_crossing.residual_sigma = residual_sigma;
+    o.local_crossing.message = std::string(matched ? "matched within noise by" : "estimated by") +
+                               " a straight line through the candidates";
+    o.local_value = a, o.local_sigma = sigma;
+    return ShapeRowOf(w.species[0], 3, o);
+  };
+  SECTION("a fitted line: its crossing is the count's shape, matched when as precise as u") {
+    struct Case {
+      bool matched;
+      double residual_sigma, a, sigma;
+      const char* words;
+    };
+    for (const Case& c : {Case{true, 0.8, 2.85, 0.03, "matched within noise by a straight line"},
+                          Case{false, 1.01, 2.83, 0.013, "estimated by a straight line"}}) {
+      INFO(c.words);
+      const ShapeSearchRow row = row_with_line(c.matched, c.residual_sigma, c.a, c.sigma);
+      CHECK(row.within_noise == c.matched);
+      CHECK(row.local_fit);
+      CHECK(row.aspect_ratio == c.a);
+      CHECK(row.aspect_sigma == c.sigma);
+      CHECK_FALSE(row.aspect_at_bound);
+      CHECK(row.angle_deg == 31);                       // the line's value at its crossing
+      CHECK(row.angle_sem_deg == c.residual_sigma);     // its standard error there, in degrees
+      CHECK(row.cost == 0);
+      CHECK(row.message.find(c.words) != std::string::npos);
+    }
   }
   SECTION("no line: the best candidate") {
     const ShapeSearchRow row = ShapeRowOf(w.species[0], 3, o);
