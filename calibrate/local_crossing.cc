@@ -122,7 +122,8 @@ LocalCrossing FitLocalCrossing(const std::vector<Sample>& samples, double noise_
   }
   const double d = c.unit - ubar;
   c.residual_sigma = std::sqrt(var_alpha + d * d * var_beta);
-  c.unit_sigma = c.residual_sigma / std::abs(beta);
+  // The crossing moves with the line and with the measurement (unit variance, standardised).
+  c.unit_sigma = std::sqrt(1 + c.residual_sigma * c.residual_sigma) / std::abs(beta);
   c.fitted = true;
   c.matched = c.residual_sigma <= kMatchNoise;
   c.message = std::string(c.matched ? "matched within noise by" : "estimated by") +

@@ -22,9 +22,10 @@
 //  - |β| / σ_β ≥ kSlopeZ = 2 (95 % two-sided): below it the sign of the slope, and with it the
 //    crossing, is not resolved;
 //  - the crossing must lie inside the window (interpolation only).
-// The crossing u* = ū − α/β; σ_u by the delta method, sqrt(σ_α² + (u* − ū)² σ_β²) / |β|; the
-// line's own standard error at u*, σ_r = sqrt(σ_α² + (u* − ū)² σ_β²), in units of the
-// measurement's uncertainty. `matched`: fitted and σ_r ≤ kMatchNoise, the precision rule of a
+// The crossing u* = ū − α/β. The line's own standard error at u*, σ_r = sqrt(σ_α² + (u* − ū)²
+// σ_β²), in units of the measurement's uncertainty; σ_u by the delta method,
+// sqrt(1 + σ_r²) / |β|: the crossing moves with the line and with the measurement (the 1), as a
+// calibrated parameter's σ counts both (calibration.h). `matched`: fitted and σ_r ≤ kMatchNoise, the precision rule of a
 // single candidate's match (optimiser.h): the pooled simulation is at least as precise as the
 // measurement, and its value at u* equals the measurement.
 //
@@ -49,7 +50,7 @@ struct LocalCrossing {
                         "than one parameter or target";
   int points = 0;               // candidates in the window
   double unit = 0;              // u*, the unit-cube parameter where the line crosses 0
-  double unit_sigma = 0;        // its standard error (delta method)
+  double unit_sigma = 0;        // its standard error (delta method; line and measurement)
   double residual_sigma = 0;    // the line's standard error at u*, standardised
   double slope = 0, slope_sigma = 0;  // dr/du and its standard error
   double chi_square = 0;

@@ -41,14 +41,16 @@ TEST_CASE("local crossing: a line's root, from the candidates around it", "[unit
   const double w = 1 / (0.01 + 1e-4), d = 0.4 - 0.43;
   const double var_r = 1 / (5 * w) + d * d / (0.358 * w);
   CHECK(c.residual_sigma == Approx(std::sqrt(var_r)).epsilon(1e-9));
-  CHECK(c.unit_sigma == Approx(std::sqrt(var_r) / 5).epsilon(1e-9));
+  // The crossing moves with the line and with the measurement (variance 1, standardised).
+  CHECK(c.unit_sigma == Approx(std::sqrt(1 + var_r) / 5).epsilon(1e-9));
 }
 
 TEST_CASE("local crossing: its standard error covers the root as often as it says",
           "[unit][calibrate]") {
-  // r = 50 (u − 0.5) + N(0, 3²) at eight candidates 0.395 ... 0.605: each candidate three times
-  // as noisy as the measurement, so none matches alone, the line's change over the eight six
-  // times the noise (a slope the fit resolves in most draws). Over 2,000 draws the 1σ interval
+  // r = 50 (u − 0.5) + N(0, 3²) − m at eight candidates 0.395 ... 0.605, m ~ N(0, 1) the
+  // measurement's own error (standardised): each candidate three times as noisy as the
+  // measurement, so none matches alone, the line's change over the eight six times the noise (a
+  // slope the fit resolves in most draws). σ_u counts the line and the measurement. Over 2,000 draws the 1σ interval
   // u* ± σ_u must hold the root 68 % of the time. The covariance is scaled by max(1, χ²/dof),
   // which only widens it, so coverage at or above 68 % is honest and well below it is not; the
   // delta method's σ_u and the window's selection (it depends on the draw) make it approximate.
@@ -56,9 +58,10 @@ TEST_CASE("local crossing: its standard error covers the root as often as it say
   int fitted = 0, covered = 0, matched = 0;
   for (int draw = 0; draw < 2000; ++draw) {
     std::vector<Sample> s;
+    const double m = Normal(78, draw);
     for (int k = 0; k < 8; ++k) {
       const double u = 0.395 + 0.03 * k;
-      s.push_back(At(u, 50 * (u - 0.5) + 3 * Normal(77, draw * 8 + k), 3));
+      s.push_back(At(u, 50 * (u - 0.5) + 3 * Normal(77, draw * 8 + k) - m, 3));
     }
     const LocalCrossing c = FitLocalCrossing(s);
     if (!c.fitted) continue;

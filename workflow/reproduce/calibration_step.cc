@@ -76,9 +76,29 @@ void FillOutcome(const StudyFile& study, const CalibrationResult& r, Calibration
   o->local_crossing = r.summary.local_crossing;
   o->local_value = r.summary.local_crossing_value;
   o->local_sigma = r.summary.local_crossing_sigma;
+  TakeLine(o);
 }
 
 }  // namespace
+
+void TakeLine(CalibrationOutcome* o) {
+  if (o->termination == calibrate::Termination::kWithinNoise || !o->local_crossing.fitted) return;
+  o->by_line = true;
+  o->value = o->local_value;
+  o->sigma = o->local_sigma;
+  o->simulated = o->measured;  // the line's value at its crossing
+  o->sem = o->local_crossing.residual_sigma * o->uncertainty;
+}
+
+bool CalibrationOutcome::Matched() const {
+  return termination == calibrate::Termination::kWithinNoise || (by_line && local_crossing.matched);
+}
+
+std::string CalibrationOutcome::MatchText() const {
+  if (termination == calibrate::Termination::kWithinNoise) return "";
+  if (by_line) return local_crossing.message;
+  return std::string("not matched: ") + calibrate::TerminationName(termination) + ": " + message;
+}
 
 nlohmann::json CalibrationOutcome::ToJson() const {
   return {{"exit_code", exit_code}, {"termination", calibrate::TerminationName(termination)}, {"message", message},
@@ -86,6 +106,7 @@ nlohmann::json CalibrationOutcome::ToJson() const {
           {"uncertainty", NumOrNull(uncertainty)}, {"simulated", NumOrNull(simulated)},
           {"sem", NumOrNull(sem)}, {"provenance", provenance}, {"clump_count", clump_count},
           {"result_dir", result_dir},
+          {"matched", Matched()}, {"by_line", by_line},
           {"local_crossing", {{"fitted", local_crossing.fitted}, {"matched", local_crossing.matched},
                               {"value", NumOrNull(local_value)}, {"sigma", NumOrNull(local_sigma)},
                               {"message", local_crossing.message}}}};

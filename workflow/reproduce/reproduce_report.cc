@@ -128,6 +128,14 @@ bool SummarySection(const ReportInputs& in, const RowNotes& notes, HtmlReport* r
   return true;
 }
 
+// A calibration's termination, and where its value is the line through the candidates around
+// the crossing (calibrate/local_crossing.h), so.
+std::string TerminationText(const nlohmann::json& o) {
+  return o.value("termination", "") +
+         (o.value("by_line", false) ? "; value: the line through the candidates around the crossing"
+                                    : "");
+}
+
 bool SpeciesSection(const ReportInputs& in, HtmlReport* r, std::string* error) {
   const nlohmann::json& s = At(At(*in.results, "species"), "species");
   r->Section("1. Species");
@@ -138,7 +146,7 @@ bool SpeciesSection(const ReportInputs& in, HtmlReport* r, std::string* error) {
   for (const auto& [name, o] : s.items())
     t.rows.push_back({name, o.value("property", ""), PlusMinus(At(o, "value"), At(o, "sigma")),
                       PlusMinus(At(o, "measured"), At(o, "uncertainty"), "%.1f"),
-                      PlusMinus(At(o, "simulated"), At(o, "sem"), "%.1f"), o.value("termination", ""),
+                      PlusMinus(At(o, "simulated"), At(o, "sem"), "%.1f"), TerminationText(o),
                       o.value("result_dir", "")});
   if (!r->Table(t, error)) return false;
   for (const auto& [name, o] : s.items())
@@ -170,7 +178,7 @@ bool CoatingSection(const ReportInputs& in, const KeyFigures& key, HtmlReport* r
     t.rows.push_back({Fmt(At(l, "wt_pct")), PlusMinus(At(l, "value"), At(l, "sigma")),
                       PlusMinus(At(l, "measured"), At(l, "uncertainty"), "%.1f"),
                       PlusMinus(At(l, "simulated"), At(l, "sem"), "%.1f"), l.value("provenance", ""),
-                      l.value("termination", "")});
+                      TerminationText(l)});
     t.synthetic_rows.push_back(l.value("synthetic", false));
   }
   if (!r->Table(t, error)) return false;

@@ -69,20 +69,10 @@ ShapeSearchRow ShapeRowOf(const WorkflowSpecies& s, int count, const Calibration
   row.termination = calibrate::TerminationName(o.termination);
   row.message = o.message;
   row.result_dir = o.result_dir;
-  // No candidate matched, but a line through those around the crossing meets the measurement:
-  // its crossing is the count's best estimate of the shape, matched when the line is as precise
-  // as the measurement.
-  const calibrate::LocalCrossing& line = o.local_crossing;
-  if (count >= 2 && !row.within_noise && line.fitted) {
-    row.aspect_ratio = o.local_value;
-    row.aspect_sigma = o.local_sigma;
-    row.aspect_at_bound = o.local_value <= row.aspect_min || o.local_value >= row.aspect_max;
-    row.angle_deg = o.measured;  // the line's value at its crossing
-    row.angle_sem_deg = line.residual_sigma * o.uncertainty;
-    row.cost = 0;
+  if (count >= 2 && o.by_line) {  // the line's crossing (calibration_step.h)
     row.local_fit = true;
-    row.within_noise = line.matched;
-    row.message = "aspect ratio " + line.message + "; the search: " + o.message;
+    row.within_noise = o.Matched();
+    row.message = "aspect ratio " + o.local_crossing.message + "; the search: " + o.message;
   }
   return row;
 }

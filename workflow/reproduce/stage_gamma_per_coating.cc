@@ -111,14 +111,12 @@ bool RunGammaPerCoatingStage(ReproduceContext& ctx, nlohmann::json* result, std:
     levels.push_back(entry);
     std::snprintf(key, sizeof(key), "gamma_w%g_J_m2", level);
     const bool synthetic = o.provenance == "synthetic";
-    values[key] = ValueJson(o.value, o.sigma,
-                            o.termination == calibrate::Termination::kWithinNoise
-                                ? ""
-                                : std::string("not matched: ") +
-                                      calibrate::TerminationName(o.termination),
-                            synthetic);
+    values[key] = ValueJson(o.value, o.sigma, o.MatchText(), synthetic);
     std::snprintf(key, sizeof(key), "angle_EP_w%g_deg", level);
-    values[key] = ValueJson(o.simulated, o.sem, "the calibrated heap's angle", synthetic);
+    values[key] = ValueJson(o.simulated, o.sem,
+                            o.by_line ? "the line's value at its crossing"
+                                      : "the calibrated heap's angle",
+                            synthetic);
   }
   *result = {{"start_gamma_J_m2", start}, {"levels", levels}, {"values", values}};
   return true;

@@ -103,12 +103,9 @@ bool RunSpeciesStage(ReproduceContext& ctx, nlohmann::json* result, std::string*
     entry["property"] = s.property;
     entry["calibrated_experiment"] = calibrated;
     species[s.name] = entry;
-    const bool matched = o.termination == calibrate::Termination::kWithinNoise;
     const std::string how = s.hold ? "clump count; " + s.property + " held" : s.property;
-    std::string angle_note = matched ? "calibrated to it (" + how + ")"
-                                     : std::string("not matched: ") +
-                                           calibrate::TerminationName(o.termination) + ": " +
-                                           o.message;
+    std::string angle_note = o.Matched() ? "calibrated to it (" + how + ")" : o.MatchText();
+    if (o.Matched() && o.by_line) angle_note += "; " + o.MatchText();
     double angle = o.simulated, angle_sem = o.sem;
     std::string count_note =
         s.clump_counts.empty() ? "shape fixed by the workflow file: " + w.shape_assumption : "";

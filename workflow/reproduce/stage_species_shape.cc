@@ -44,6 +44,7 @@ bool RunShapeSpecies(const ReproduceContext& ctx, size_t k, nlohmann::json* spec
     entry["simulated"] = NumOrNull(used->angle_deg);
     entry["sem"] = NumOrNull(used->angle_sem_deg);
     entry["termination"] = used->termination;
+    entry["by_line"] = used->local_fit;
     entry["message"] = used->message;
     entry["result_dir"] = used->result_dir;
     SetSpeciesClump(&experiment, s.name, semi_axes, used->count);

@@ -99,6 +99,7 @@ TEST_CASE("aspect-ratio search: a count no candidate matched, matched by the lin
     o.local_crossing.message = std::string(matched ? "matched within noise by" : "estimated by") +
                                " a straight line through the candidates";
     o.local_value = a, o.local_sigma = sigma;
+    TakeLine(&o);
     return ShapeRowOf(w.species[0], 3, o);
   };
   SECTION("a fitted line: its crossing is the count's shape, matched when as precise as u") {
@@ -130,12 +131,14 @@ TEST_CASE("aspect-ratio search: a count no candidate matched, matched by the lin
     CHECK(row.angle_deg == 33.3);
     CHECK(row.cost == Approx(2.3 * 2.3));
   }
-  SECTION("a sphere has no shape to fit") {
-    o.local_crossing.fitted = o.local_crossing.matched = true;
-    o.local_value = 0.5;
-    const ShapeSearchRow row = ShapeRowOf(w.species[0], 1, o);
-    CHECK_FALSE(row.local_fit);
-    CHECK_FALSE(row.within_noise);
+  SECTION("a candidate matched: no line is taken") {
+    o.termination = calibrate::Termination::kWithinNoise;
+    o.local_crossing.fitted = true;
+    o.local_value = 2.5;
+    TakeLine(&o);
+    CHECK_FALSE(o.by_line);
+    CHECK(o.value == bound);
+    CHECK(ShapeRowOf(w.species[0], 3, o).within_noise);
   }
 }
 
