@@ -211,6 +211,9 @@ TEST_CASE("reproduce report: the Fig. 3 table with the calibrated aspect ratio p
      "local_fit": true, "agrees": true, "termination": "budget",
      "note": "aspect ratio matched within noise by a straight line through the 6 candidates",
      "heaps": 28, "wall_time_s": 120}])json");
+  // A Γ level whose value is the line through its candidates (no single one matched).
+  results["gamma_per_coating"]["levels"][1]["termination"] = "budget";
+  results["gamma_per_coating"]["levels"][1]["by_line"] = true;
   DemcalValues v;
   v["aspect_ratio_EP"] = {.mean = 2.0, .sem = 0.21};
   const std::vector<SummaryRow> rows = BuildSummaryRows(w.reference, v);
@@ -231,6 +234,8 @@ TEST_CASE("reproduce report: the Fig. 3 table with the calibrated aspect ratio p
   CHECK(html.find("matched within noise by a straight line", fig3) != std::string::npos);
   CHECK(report.md.find("| spheres | aspect ratio a/c [-] | angle demcal [deg] | cost (Σ z²) | "
                        "within noise | heaps | wall [s] |") != std::string::npos);
+  CHECK(html.find("<td>budget; value: the line through the candidates around the crossing</td>") !=
+        std::string::npos);
   // The paper states no aspect ratio: the summary row is demcal's alone.
   CHECK(html.find("EP clump aspect ratio a/c (calibrated; the paper gives none)") !=
         std::string::npos);
