@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "calibrate/chi_square.h"
+#include "core/math/number_text.h"
 
 namespace demcal::calibrate {
 namespace {
@@ -13,13 +13,7 @@ struct Point {
   double u, r, w;
 };
 
-std::string Fixed(double v, int digits) {
-  std::ostringstream os;
-  os.setf(std::ios::fixed);
-  os.precision(digits);
-  os << v;
-  return os.str();
-}
+using core::NumberText;
 
 // The outermost sign change of the sorted points, [*lo, *hi]; false without one.
 bool SignChanges(const std::vector<Point>& p, size_t* lo, size_t* hi) {
@@ -96,41 +90,39 @@ LocalCrossing FitLocalCrossing(const std::vector<Sample>& samples, double noise_
     const bool front = p.front().u < span_lo, back = p.back().u > span_hi;
     if ((!front && !back) || p.size() == 3) {
       c.message = "a straight line misfits the " + std::to_string(c.points) +
-                  " candidates around the crossing (chi-square " + Fixed(c.chi_square, 1) +
-                  " on " + std::to_string(c.dof) + " dof, p " + Fixed(adequacy, 4) +
+                  " candidates around the crossing (chi-square " + NumberText(c.chi_square, 3) +
+                  " on " + std::to_string(c.dof) + " dof, p " + NumberText(adequacy, 3) +
                   " < 0.01): the observable jumps or bends there";
       return c;
     }
     if (front && (!back || middle - p.front().u > p.back().u - middle)) p.erase(p.begin());
     else p.pop_back();
   }
-  const double beta = line.beta, alpha = line.alpha, ubar = line.ubar;
-  const double sw = line.sw, sxx = line.sxx;
   const double scale = std::max(1.0, c.chi_square / c.dof);
-  const double var_alpha = scale / sw, var_beta = scale / sxx;
-  c.slope = beta, c.slope_sigma = std::sqrt(var_beta);
-  if (std::abs(beta) < kSlopeZ * c.slope_sigma) {
+  const double var_alpha = scale / line.sw, var_beta = scale / line.sxx;
+  c.slope = line.beta, c.slope_sigma = std::sqrt(var_beta);
+  if (std::abs(c.slope) < kSlopeZ * c.slope_sigma) {
     c.message = "the slope through the " + std::to_string(c.points) +
                 " candidates around the crossing is not resolved (|slope| " +
-                Fixed(std::abs(beta) / c.slope_sigma, 2) + " of its standard errors, below 2)";
+                NumberText(std::abs(c.slope) / c.slope_sigma, 3) + " of its standard errors, below 2)";
     return c;
   }
-  c.unit = ubar - alpha / beta;
+  c.unit = line.ubar - line.alpha / line.beta;
   if (c.unit < c.window_min || c.unit > c.window_max) {
     c.message = "the line crosses the measurement outside the candidates around the crossing";
     return c;
   }
-  const double d = c.unit - ubar;
+  const double d = c.unit - line.ubar;
   c.residual_sigma = std::sqrt(var_alpha + d * d * var_beta);
   // The crossing moves with the line and with the measurement (unit variance, standardised).
-  c.unit_sigma = std::sqrt(1 + c.residual_sigma * c.residual_sigma) / std::abs(beta);
+  c.unit_sigma = std::sqrt(1 + c.residual_sigma * c.residual_sigma) / std::abs(c.slope);
   c.fitted = true;
   c.matched = c.residual_sigma <= kMatchNoise;
   c.message = std::string(c.matched ? "matched within noise by" : "estimated by") +
               " a straight line through the " + std::to_string(c.points) +
-              " candidates around the crossing (chi-square " + Fixed(c.chi_square, 1) + " on " +
+              " candidates around the crossing (chi-square " + NumberText(c.chi_square, 3) + " on " +
               std::to_string(c.dof) + " dof); its standard error at the crossing is " +
-              Fixed(c.residual_sigma, 2) + " measurement uncertainties" +
+              NumberText(c.residual_sigma, 3) + " measurement uncertainties" +
               (c.matched ? "" : ", coarser than the measurement: more runs near the crossing "
                                 "would settle it");
   return c;

@@ -25,9 +25,9 @@
 // The crossing u* = ū − α/β. The line's own standard error at u*, σ_r = sqrt(σ_α² + (u* − ū)²
 // σ_β²), in units of the measurement's uncertainty; σ_u by the delta method,
 // sqrt(1 + σ_r²) / |β|: the crossing moves with the line and with the measurement (the 1), as a
-// calibrated parameter's σ counts both (calibration.h). `matched`: fitted and σ_r ≤ kMatchNoise, the precision rule of a
-// single candidate's match (optimiser.h): the pooled simulation is at least as precise as the
-// measurement, and its value at u* equals the measurement.
+// calibrated parameter's σ counts both (calibration.h). `matched`: fitted and σ_r ≤
+// kMatchNoise, the precision rule of a single candidate's match (optimiser.h): the pooled
+// simulation is at least as precise as the measurement, and its value at u* equals it.
 //
 //   LocalCrossing c = FitLocalCrossing(samples);
 //   if (c.matched) use(c.unit, c.unit_sigma);

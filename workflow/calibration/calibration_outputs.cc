@@ -107,13 +107,8 @@ Json ResultJson(const CalibrationRunInfo& info, const CalibrationSummary& s) {
                              {"values", MatrixJson(s.jacobian)}, {"sigma", MatrixJson(s.jacobian_sigma)},
                              {"note", s.jacobian_note}};
   j["identifiability"] = IdentifiabilityJson(s.identifiability);
-  const calibrate::LocalCrossing& lc = s.local_crossing;
-  j["local_crossing"] = {{"fitted", lc.fitted}, {"matched", lc.matched},
-                         {"value", NumOrNull(s.local_crossing_value)},
-                         {"sigma", NumOrNull(s.local_crossing_sigma)}, {"points", lc.points},
-                         {"chi_square", lc.chi_square}, {"dof", lc.dof},
-                         {"residual_sigma_in_uncertainties", NumOrNull(lc.fitted ? lc.residual_sigma : NAN)},
-                         {"message", lc.message}};
+  j["local_crossing"] =
+      LocalCrossingJson(s.local_crossing, s.local_crossing_value, s.local_crossing_sigma);
   j["candidate_targets"] = GainsJson(info.gains);
   j["journal_error"] = s.journal_error.empty() ? Json(nullptr) : Json(s.journal_error);
   return j;
@@ -194,6 +189,14 @@ bool WriteLiggghtsInclude(const std::string& path, const CalibrationRunInfo& inf
 }
 
 }  // namespace
+
+Json LocalCrossingJson(const calibrate::LocalCrossing& line, double value, double sigma) {
+  return {{"fitted", line.fitted}, {"matched", line.matched}, {"value", NumOrNull(value)},
+          {"sigma", NumOrNull(sigma)}, {"points", line.points}, {"chi_square", line.chi_square},
+          {"dof", line.dof},
+          {"residual_sigma_in_uncertainties", NumOrNull(line.fitted ? line.residual_sigma : NAN)},
+          {"message", line.message}};
+}
 
 bool WriteCalibrationOutputs(const std::string& dir, const CalibrationRunInfo& info,
                              const CalibrationSummary& s, std::string* error) {

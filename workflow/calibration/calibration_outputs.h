@@ -12,6 +12,7 @@
 //                          target: observable against the parameter)
 // With a clump-count loop: clumps_<n>/ holds each count's files; clump_count.csv and
 // clump_count.json the table n -> best match. (journal.jsonl is the evaluation journal's.)
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,11 @@ struct CalibrationRunInfo {
   const calibrate::TargetEvaluator* evaluator = nullptr;
   std::vector<calibrate::TargetGain> gains;  // candidate targets, in the study's order
 };
+
+// result.json's "local_crossing": the line of calibrate/local_crossing.h with its crossing's value
+// and σ in SI (null where not fitted). Stage results of `demcal reproduce` carry the same.
+nlohmann::ordered_json LocalCrossingJson(const calibrate::LocalCrossing& line, double value,
+                                         double sigma);
 
 // Writes every file above into dir; false with the first error.
 bool WriteCalibrationOutputs(const std::string& dir, const CalibrationRunInfo& info,

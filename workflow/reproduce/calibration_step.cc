@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "objectives/farm/farm.h"
+#include "workflow/calibration/calibration_outputs.h"
 #include "workflow/calibration/run_study.h"
 #include "outputs/exit_codes.h"
 #include "files/json_document.h"
@@ -107,9 +108,7 @@ nlohmann::json CalibrationOutcome::ToJson() const {
           {"sem", NumOrNull(sem)}, {"provenance", provenance}, {"clump_count", clump_count},
           {"result_dir", result_dir},
           {"matched", Matched()}, {"by_line", by_line},
-          {"local_crossing", {{"fitted", local_crossing.fitted}, {"matched", local_crossing.matched},
-                              {"value", NumOrNull(local_value)}, {"sigma", NumOrNull(local_sigma)},
-                              {"message", local_crossing.message}}}};
+          {"local_crossing", LocalCrossingJson(local_crossing, local_value, local_sigma)}};
 }
 
 bool CheckCalibrationStep(const CalibrationStep& step, std::string* error) {
