@@ -75,18 +75,16 @@ void FillOutcome(const StudyFile& study, const CalibrationResult& r, Calibration
   }
   if (!study.targets.empty()) o->provenance = study.targets[0].provenance;
   o->local_crossing = r.summary.local_crossing;
-  o->local_value = r.summary.local_crossing_value;
-  o->local_sigma = r.summary.local_crossing_sigma;
-  TakeLine(o);
+  TakeLine(r.summary.local_crossing_value, r.summary.local_crossing_sigma, o);
 }
 
 }  // namespace
 
-void TakeLine(CalibrationOutcome* o) {
+void TakeLine(double value, double sigma, CalibrationOutcome* o) {
   if (o->termination == calibrate::Termination::kWithinNoise || !o->local_crossing.fitted) return;
   o->by_line = true;
-  o->value = o->local_value;
-  o->sigma = o->local_sigma;
+  o->value = value;
+  o->sigma = sigma;
   o->simulated = o->measured;  // the line's value at its crossing
   o->sem = o->local_crossing.residual_sigma * o->uncertainty;
 }
@@ -108,7 +106,7 @@ nlohmann::json CalibrationOutcome::ToJson() const {
           {"sem", NumOrNull(sem)}, {"provenance", provenance}, {"clump_count", clump_count},
           {"result_dir", result_dir},
           {"matched", Matched()}, {"by_line", by_line},
-          {"local_crossing", LocalCrossingJson(local_crossing, local_value, local_sigma)}};
+          {"local_crossing", LocalCrossingJson(local_crossing, by_line ? value : NAN, by_line ? sigma : NAN)}};
 }
 
 bool CheckCalibrationStep(const CalibrationStep& step, std::string* error) {

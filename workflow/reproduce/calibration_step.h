@@ -47,21 +47,20 @@ struct CalibrationOutcome {
   int clump_count = 0;           // chosen count (0: no loop)
   std::string result_dir;        // where result.json is (dir, or dir/clumps_<n>)
   // No candidate within noise: the line through the candidates around the crossing
-  // (calibrate/local_crossing.h), its value and σ in SI (NaN: not fitted). Where it was fitted,
-  // value, sigma, simulated and sem above are the line's (by_line): its crossing is the best
-  // estimate of where the measurement is met, and it matches when the line is as precise as the
-  // measurement.
+  // (calibrate/local_crossing.h). Where it was fitted, value, sigma, simulated and sem above are
+  // the line's (by_line): its crossing is the best estimate of where the measurement is met,
+  // and it matches when the line is as precise as the measurement.
   calibrate::LocalCrossing local_crossing;
-  double local_value = NAN, local_sigma = NAN;
   bool by_line = false;
   bool Matched() const;  // a candidate within noise, or the line as precise as the measurement
   std::string MatchText() const;  // "", "by a line ...", or "not matched: <termination>: ..."
   nlohmann::json ToJson() const;
 };
 
-// Where no candidate matched and the local crossing was fitted: value, sigma, simulated and sem
-// become the line's, by_line set (RunCalibrationStep's outcomes have had this done).
-void TakeLine(CalibrationOutcome* o);
+// Where no candidate matched and o->local_crossing was fitted: value and sigma become the
+// crossing's (`value`, `sigma`, SI), simulated and sem the line's there, by_line set
+// (RunCalibrationStep's outcomes have had this done).
+void TakeLine(double value, double sigma, CalibrationOutcome* o);
 
 bool RunCalibrationStep(const ReproduceContext& ctx, const CalibrationStep& step,
                         CalibrationOutcome* out, std::string* error);

@@ -98,8 +98,7 @@ TEST_CASE("aspect-ratio search: a count no candidate matched, matched by the lin
     o.local_crossing.residual_sigma = residual_sigma;
     o.local_crossing.message = std::string(matched ? "matched within noise by" : "estimated by") +
                                " a straight line through the candidates";
-    o.local_value = a, o.local_sigma = sigma;
-    TakeLine(&o);
+    TakeLine(a, sigma, &o);
     return ShapeRowOf(w.species[0], 3, o);
   };
   SECTION("a fitted line: its crossing is the count's shape, matched when as precise as u") {
@@ -134,8 +133,7 @@ TEST_CASE("aspect-ratio search: a count no candidate matched, matched by the lin
   SECTION("a candidate matched: no line is taken") {
     o.termination = calibrate::Termination::kWithinNoise;
     o.local_crossing.fitted = true;
-    o.local_value = 2.5;
-    TakeLine(&o);
+    TakeLine(2.5, 0.1, &o);
     CHECK_FALSE(o.by_line);
     CHECK(o.value == bound);
     CHECK(ShapeRowOf(w.species[0], 3, o).within_noise);
