@@ -9,20 +9,29 @@
 // density unchanged. So the funnel meters the same flow at every fidelity when it holds the open
 // width: D(s) = effective_orifice_diameter_m + beverloo_k · d_max(s).
 //
-// d is the feed's largest grain diameter at the run's fidelity, not a mean: the largest grains
-// arch over the orifice first. k is not Beverloo's classical 1.5 for spheres: an orifice of 3 to
+// d is the feed's largest grain size at the run's fidelity, not a mean: the largest grains
+// arch over the orifice first. For a clump it is the grain's mean caliper diameter (its width
+// averaged over orientations, core/bodies/clump_size.h), for a sphere its diameter: an elongated
+// grain tumbles through the orifice and blocks more of it than its sieve-equivalent sphere, and
+// Beverloo's law with the equivalent diameter overestimates the flow of elongated grains
+// (Mamtani 2011, MS thesis, University of Florida, who proposes a perimeter diameter, also an
+// orientation-averaged size). k is not Beverloo's classical 1.5 for spheres: an orifice of 3 to
 // 4 d_max in a slab barely wider than the orifice is near jamming, where the law holds only in
 // form. The bundled 13 mm + 0.5 d_max passes through the two orifices measured to meter the
 // same flow with the calibrated spheres (15.5 mm at size ×5, 10.3 g/s; 15 mm at ×4, 10.35 g/s);
+// with the calibrated clumps at ×5 (TAED's mean caliper diameter 6.8 mm) it gives 16.4 mm, and
+// 16.5 mm metered 10.4 g/s with them, where the spheres' 15.5 mm metered 6.9 g/s and 17.3 mm
+// passed the whole 20 g/s feed (docs/experiments/segregation_funnel.md).
 // k 1.5 gave 12.5 mm at ×3, which metered only 6.35 g/s (docs/experiments/segregation_funnel.md).
 //
-// The jam rule D > 3 d_max (segregation_experiment.cc) holds at every size scale as long as
-// effective_orifice_diameter_m > (3 − beverloo_k) d_max: a rule that breaks it at the coarsest
-// fidelity is refused there with both numbers named.
+// The jam rule D > 3 d_max (segregation_experiment.cc, d_max the largest sieve-equivalent
+// diameter) holds at every size scale as long as effective_orifice_diameter_m > 3 d_max −
+// beverloo_k d: a rule that breaks it at the coarsest fidelity is refused there with both
+// numbers named.
 //
 // Usage:
 //   FunnelSettings f{.effective_orifice_diameter_m = 0.013, .beverloo_k = 0.5};
-//   double d = f.OrificeDiameterM(FeedMaxDiameter(model, feed));  // 15 mm at d_max 4 mm
+//   double d = f.OrificeDiameterM(FeedMaxMeanCaliperDiameter(model, feed));  // 15 mm at 4 mm
 
 namespace demcal::objectives {
 

@@ -32,8 +32,9 @@ GluedBaseSpec BaseSpec(const core::Scene& model, const SegregationSettings& s, u
   return base;
 }
 
+// Six grain lengths, so that elongated clumps find room as spheres do.
 double FeedRegionHeight(const core::Scene& model, const SegregationSettings& s) {
-  return std::max(6 * FeedMaxDiameter(model, s.feed), 0.01);
+  return std::max(6 * FeedMaxEnclosingDiameter(model, s.feed), 0.01);
 }
 
 double FeedRegionBottom(const SegregationSettings& s) {
@@ -47,7 +48,7 @@ core::InsertionRegion FeedRegion(const core::Scene& model, const SegregationSett
 }
 
 double OrificeM(const core::Scene& model, const SegregationSettings& s) {
-  return s.funnel.OrificeDiameterM(FeedMaxDiameter(model, s.feed));
+  return s.funnel.OrificeDiameterM(FeedMaxMeanCaliperDiameter(model, s.feed));
 }
 
 core::Wall Funnel(const core::Scene& model, const SegregationSettings& s) {
@@ -79,7 +80,7 @@ std::string CheckGeometry(const core::Scene& model, const SegregationSettings& s
        << " with beverloo_k = " << f.beverloo_k << " gives an orifice of " << orifice
        << " m at this fidelity (largest grain " << d << " m), which must exceed 3 largest particle "
        << "diameters (" << 3 * d << " m): the funnel would jam; effective_orifice_diameter_m must "
-       << "exceed " << (3 - f.beverloo_k) * d << " m";
+       << "exceed " << 3 * d - f.beverloo_k * FeedMaxMeanCaliperDiameter(model, s.feed) << " m";
   else if (f.enabled && !(std::min(orifice, s.depth_m) > 3 * d))
     os << "segregation.funnel.orifice_diameter_m = " << orifice << " (cut to depth_m = "
        << s.depth_m << ") must exceed 3 largest particle diameters (" << 3 * d

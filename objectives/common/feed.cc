@@ -5,6 +5,9 @@
 #include <limits>
 #include <sstream>
 
+#include "core/bodies/clump_size.h"
+#include "core/bodies/unit_clump.h"
+
 namespace demcal::objectives {
 
 bool Feed::IsValid(const core::Scene& model, const std::string& path, std::string* error) const {
@@ -85,6 +88,44 @@ double FeedMaxDiameter(const core::Scene& model, const Feed& feed) {
   for (const FeedComponent& c : feed.components)
     d = std::max(d, model.species[c.species].size.MaxDiameter());
   return d;
+}
+
+namespace {
+
+// The species' grain at unit equivalent-volume diameter; false for a sphere. A shape that
+// makes no clump was refused when the scene was read (ParticleSystem::SetSpecies).
+bool UnitShape(const core::Species& species, core::ClumpTemplate* shape) {
+  std::vector<core::ClumpSphere> members;
+  std::string unused;
+  return !species.clump_shape.empty() &&
+         core::UnitDiameterClumpMembers(species.clump_shape, &members, &unused) &&
+         core::BuildClumpTemplate(members, 1.0, {}, shape, &unused);
+}
+
+// Largest over the feed's species of size(unit shape) × the species' largest diameter, where a
+// sphere's size at unit diameter is 1.
+template <typename UnitSize>
+double FeedMaxSize(const core::Scene& model, const Feed& feed, UnitSize unit_size) {
+  double d = 0;
+  for (const FeedComponent& c : feed.components) {
+    const core::Species& species = model.species[c.species];
+    core::ClumpTemplate shape;
+    const double unit = UnitShape(species, &shape) ? unit_size(shape) : 1.0;
+    d = std::max(d, unit * species.size.MaxDiameter());
+  }
+  return d;
+}
+
+}  // namespace
+
+double FeedMaxEnclosingDiameter(const core::Scene& model, const Feed& feed) {
+  return FeedMaxSize(model, feed,
+                     [](const core::ClumpTemplate& t) { return 2 * t.BoundingRadius(); });
+}
+
+double FeedMaxMeanCaliperDiameter(const core::Scene& model, const Feed& feed) {
+  return FeedMaxSize(model, feed,
+                     [](const core::ClumpTemplate& t) { return core::MeanCaliperDiameter(t.spheres); });
 }
 
 double FeedMinDiameter(const core::Scene& model, const Feed& feed) {

@@ -53,5 +53,13 @@ double FeedEntrySpeed(const core::Scene& model, const Feed& feed,
 // Largest particle diameter among the feed's species (after fidelity scaling).
 double FeedMaxDiameter(const core::Scene& model, const Feed& feed);
 double FeedMinDiameter(const core::Scene& model, const Feed& feed);
+// Largest enclosing diameter among the feed's grains: twice the radius of the smallest sphere
+// about a grain's centre of mass that holds it (core::ClumpTemplate::BoundingRadius). For a
+// sphere its diameter; for an elongated clump about its length, which sets how much room the
+// grain needs where it is placed and at an orifice.
+double FeedMaxEnclosingDiameter(const core::Scene& model, const Feed& feed);
+// Largest mean caliper diameter among the feed's grains (core/bodies/clump_size.h): the size of
+// a tumbling grain averaged over orientations; a sphere's diameter.
+double FeedMaxMeanCaliperDiameter(const core::Scene& model, const Feed& feed);
 
 }  // namespace demcal::objectives
