@@ -9,6 +9,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "core/bodies/clump_shapes.h"
 #include "experiments/common/experiment_file.h"
 #include "experiments/segregation/segregation_section.h"
 #include "objectives/common/fidelity.h"
@@ -88,6 +89,35 @@ TEST_CASE("funnel orifice rule: an open width that jams at its fidelity is refus
   CHECK_FALSE(quick.settings.IsValid(quick.model, &error));
   CHECK_THAT(error, Catch::Contains("segregation.funnel.effective_orifice_diameter_m") &&
                         Catch::Contains("would jam") && Catch::Contains("0.0125"));
+}
+
+TEST_CASE("funnel orifice rule: clumps by their mean caliper diameter, inside the measured band",
+          "[unit]") {
+  // The calibrated clumps of docs/experiments/segregation_funnel.md at size ×5 (BP 4 spheres on
+  // a 3.36:1:1 spheroid, TAED 3 on 2.89, EP 3 on 2.83). Measured with them: 15.5 mm (the
+  // sieve-equivalent rule) metered 6.9 g/s, 16.5 mm 10.4 g/s, 17.3 mm passed the whole 20 g/s.
+  AtScale quick = ExampleAt(5);
+  const std::vector<std::pair<double, int>> shapes = {{3.36, 4}, {2.89, 3}, {2.83, 3}};
+  for (size_t k = 0; k < shapes.size(); ++k) {
+    core::ShapeApproximation approx;
+    std::string error;
+    REQUIRE(core::ApproximateEllipsoid({shapes[k].first, 1, 1}, shapes[k].second, &approx,
+                                       &error));
+    for (const core::ClumpSphere& m : approx.spheres)
+      quick.model.species[k].clump_shape.push_back({m.centre_m, m.radius_m});
+  }
+  const double sieve = FeedMaxDiameter(quick.model, quick.settings.feed);
+  const double width = FeedMaxMeanCaliperDiameter(quick.model, quick.settings.feed);
+  const double length = FeedMaxEnclosingDiameter(quick.model, quick.settings.feed);
+  CHECK(sieve == Approx(0.005));
+  CHECK(width > sieve);
+  CHECK(length > width);
+  const double orifice = quick.settings.funnel.OrificeDiameterM(width);
+  CHECK(orifice > 0.0155);
+  CHECK(orifice < 0.0173);
+  std::string error;
+  CHECK(quick.settings.IsValid(quick.model, &error));
+  INFO(error);
 }
 
 TEST_CASE("funnel orifice: a fixed orifice ignores the grain size", "[unit]") {
