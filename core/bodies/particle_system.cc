@@ -17,10 +17,8 @@ bool ParticleSystem::SetSpecies(const std::vector<Species>& species, std::string
   shapes.assign(species.size(), ClumpTemplate{});
   for (size_t s = 0; s < species.size(); ++s) {
     if (species[s].clump_shape.empty()) continue;
-    std::vector<ClumpSphere> members;
     std::string why;
-    if (!UnitDiameterClumpMembers(species[s].clump_shape, &members, &why) ||
-        !BuildClumpTemplate(members, 1.0, {}, &shapes[s], &why)) {
+    if (!UnitDiameterClumpTemplate(species[s].clump_shape, &shapes[s], &why)) {
       if (error) *error = "field 'species[" + std::to_string(s) + "].clump': " + why;
       return false;
     }

@@ -18,4 +18,11 @@ bool UnitDiameterClumpMembers(const std::vector<ShapeSphere>& shape,
   return true;
 }
 
+bool UnitDiameterClumpTemplate(const std::vector<ShapeSphere>& shape, ClumpTemplate* out,
+                               std::string* error) {
+  std::vector<ClumpSphere> members;
+  return UnitDiameterClumpMembers(shape, &members, error) &&
+         BuildClumpTemplate(members, 1.0, {}, out, error);
+}
+
 }  // namespace demcal::core

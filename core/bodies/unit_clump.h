@@ -17,4 +17,9 @@ namespace demcal::core {
 bool UnitDiameterClumpMembers(const std::vector<ShapeSphere>& shape,
                               std::vector<ClumpSphere>* members, std::string* error);
 
+// The clump template (unit density) of `shape` at unit equivalent-volume diameter: the members
+// above, in their principal frame. False, with the reason in *error, as above.
+bool UnitDiameterClumpTemplate(const std::vector<ShapeSphere>& shape, ClumpTemplate* out,
+                               std::string* error);
+
 }  // namespace demcal::core

@@ -19,10 +19,9 @@
 // 4 d_max in a slab barely wider than the orifice is near jamming, where the law holds only in
 // form. The bundled 13 mm + 0.5 d_max passes through the two orifices measured to meter the
 // same flow with the calibrated spheres (15.5 mm at size ×5, 10.3 g/s; 15 mm at ×4, 10.35 g/s);
-// with the calibrated clumps at ×5 (TAED's mean caliper diameter 6.8 mm) it gives 16.4 mm, and
-// 16.5 mm metered 10.4 g/s with them, where the spheres' 15.5 mm metered 6.9 g/s and 17.3 mm
-// passed the whole 20 g/s feed (docs/experiments/segregation_funnel.md).
-// k 1.5 gave 12.5 mm at ×3, which metered only 6.35 g/s (docs/experiments/segregation_funnel.md).
+// k 1.5 gave 12.5 mm at ×3, which metered only 6.35 g/s. With the calibrated clumps the rule
+// gives 16.4 mm at ×5, which meters about the spheres' flow, where the sieve-equivalent 15.5 mm
+// was too slow and 17.3 mm passed the whole feed (docs/experiments/segregation_funnel.md).
 //
 // The jam rule D > 3 d_max (segregation_experiment.cc, d_max the largest sieve-equivalent
 // diameter) holds at every size scale as long as effective_orifice_diameter_m > 3 d_max −

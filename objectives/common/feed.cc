@@ -95,11 +95,9 @@ namespace {
 // The species' grain at unit equivalent-volume diameter; false for a sphere. A shape that
 // makes no clump was refused when the scene was read (ParticleSystem::SetSpecies).
 bool UnitShape(const core::Species& species, core::ClumpTemplate* shape) {
-  std::vector<core::ClumpSphere> members;
   std::string unused;
   return !species.clump_shape.empty() &&
-         core::UnitDiameterClumpMembers(species.clump_shape, &members, &unused) &&
-         core::BuildClumpTemplate(members, 1.0, {}, shape, &unused);
+         core::UnitDiameterClumpTemplate(species.clump_shape, shape, &unused);
 }
 
 // Largest over the feed's species of size(unit shape) × the species' largest diameter, where a
