@@ -94,6 +94,26 @@ def verdict(diagnosis, hidden, sign):
     return "missed"
 
 
+def hidden_limit_text(d, hidden, sign):
+    """The diagnosis' detection limit for the hidden mechanism (docs/diagnose/ranking.md, "What
+    the data could not see"): what the data would have shown at 90 % power, in the hidden
+    effect's direction where the truth gives one; "–" where the diagnosis reports none for it."""
+    limits = (d.get("detection_limits") or {}).get("effects", [])
+    texts = []
+    for e in limits:
+        if hidden is None or mechanism(e["effect"]) != hidden:
+            continue
+        up, down = e["smallest_detectable_increase"], e["smallest_detectable_decrease"]
+        if sign == "+":
+            texts.append(f"{e['effect']} ≥ {up:.3g}" if up is not None else f"{e['effect']}: none in range")
+        elif sign == "-":
+            texts.append(f"{e['effect']} ≤ {down:.3g}" if down is not None else f"{e['effect']}: none in range")
+        else:
+            texts.append(f"{e['effect']} ±{e['magnitude_at_power']:.3g}"
+                         if e["magnitude_at_power"] is not None else f"{e['effect']}: none")
+    return "; ".join(texts) or "–"
+
+
 def answer_text(d):
     term = d["termination"]
     revalued = "re-valued " + " or ".join(
@@ -110,7 +130,7 @@ def answer_text(d):
 
 
 def main(out_dir):
-    rows, wrong, over_chi2, over_time, missing = [], 0, 0, 0, []
+    rows, wrong, over_chi2, over_time, over_wall, missing = [], 0, 0, 0, 0, []
     for case in sorted(os.listdir(out_dir)):
         path = os.path.join(out_dir, case, "run", "diagnosis.json")
         if not os.path.exists(path):  # a diagnosis folder itself
@@ -129,17 +149,21 @@ def main(out_dir):
         over_time += cpu is not None and cpu > 60 * MINUTES_TARGET
         truth = "none" if hidden is None else hidden + (f" ({sign})" if sign else "")
         timing = "–" if cpu is None else f"{cpu:.0f} s / {wall / 60:.1f} min"
+        over_wall += wall is not None and wall > 60 * MINUTES_TARGET
         rows.append(f"| `{case}` | {truth} | {v} | {answer_text(d)} | "
+                    f"{hidden_limit_text(d, hidden, sign)} | "
                     f"{d['chi2_per_dof_before']:.2f} → {after:.2f} | "
                     f"{d['simulations']} | {timing} |")
-    print("| case | hidden | verdict | answer | χ²/dof before → after | new runs | CPU / wall |")
-    print("|---|---|---|---|---|---|---|")
+    print("| case | hidden | verdict | answer | seen at 90 % power (hidden) "
+          "| χ²/dof before → after | new runs | CPU / wall |")
+    print("|---|---|---|---|---|---|---|---|")
     print("\n".join(rows))
     print()
     print(f"cases scored: {len(rows)}; without a diagnosis.json: {', '.join(missing) or 'none'}")
     print(f"wrong effect named, tie without the truth or control with a named effect: {wrong}")
     print(f"chi2/dof after above {CHI2_AFTER_TARGET}: {over_chi2}")
-    print(f"CPU time above {MINUTES_TARGET:.0f} min: {over_time}")
+    print(f"CPU time above {MINUTES_TARGET:.0f} min: {over_time}; "
+          f"wall time above {MINUTES_TARGET:.0f} min: {over_wall}")
     return 1 if wrong else 0
 
 
@@ -187,6 +211,17 @@ def self_test():
     os.unlink(f.name)
     if cpu_wall != (310.0, 3723.0):
         failures.append(f"time.txt read as {cpu_wall}, expected (310.0, 3723.0)")
+    limits = {"detection_limits": {"effects": [
+        {"effect": "wall_friction", "smallest_detectable_increase": 0.35,
+         "smallest_detectable_decrease": -0.35, "magnitude_at_power": 0.35},
+        {"effect": "jkr_adhesion", "smallest_detectable_increase": None,
+         "smallest_detectable_decrease": None, "magnitude_at_power": 0.9}]}}
+    for (hidden, sign), want in [(("wall_friction", "+"), "wall_friction ≥ 0.35"),
+                                 (("wall_friction", "-"), "wall_friction ≤ -0.35"),
+                                 (("adhesion", "+"), "jkr_adhesion: none in range"),
+                                 (("particle_shape", "+"), "–"), ((None, None), "–")]:
+        if hidden_limit_text(limits, hidden, sign) != want:
+            failures.append(f"limit for {hidden} {sign}: {hidden_limit_text(limits, hidden, sign)!r}")
     print("\n".join(failures) if failures else "self-test: pass")
     return 1 if failures else 0
 

@@ -8,6 +8,7 @@
 #include "diagnose/loop/base_fit.h"
 #include "diagnose/loop/bound_step.h"
 #include "diagnose/loop/candidate_step.h"
+#include "diagnose/loop/detection_limits.h"
 #include "diagnose/loop/diagnosis_message.h"
 #include "diagnose/loop/fit_state.h"
 #include "diagnose/ranking/discrepancy_floor.h"
@@ -78,10 +79,15 @@ bool MechanismNamed(const Diagnosis& d, const std::vector<CandidateEffect>& cand
 // `after_fit` is what the "after" figures describe: the fit with the named effects and the
 // re-valued parameters (the base model's own mechanisms at the values the data ask for); for
 // "not told apart", the worse tied refit. So χ²/dof after says how well the answer fits.
+// unit_signatures: the last candidate step's, per entry (the detection limits).
 void Finish(const std::vector<Observation>& observations, const FitState& fit,
             const FitState& after_fit, const DiagnoseOptions& options,
-            const std::vector<CandidateEffect>& candidates, Diagnosis* d) {
+            const std::vector<CandidateEffect>& candidates,
+            const std::vector<std::vector<double>>& unit_signatures, Diagnosis* d) {
   d->final_point = fit.point;
+  if (!d->steps.empty())
+    d->detection_limits = DetectionLimitsAtFit(observations, fit, d->steps.back(),
+                                               unit_signatures, candidates, options, *d);
   d->fitted_parameters_after = after_fit.Fitted();
   d->after = WithPrediction(observations, after_fit.prediction, options.discrepancy_floor);
   d->gap_after = TestGap(d->after, after_fit.Fitted(), {options.significance});
@@ -238,6 +244,7 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
   // Re-valued parameters taken into the fit (revaluation.h): they count against max_effects
   // as the named effects do, so a diagnosis makes at most max_effects steps beyond the base.
   int revalued_steps = 0;
+  std::vector<std::vector<double>> last_unit_signatures;
   while ((gap || ((bound_probe || d.screened) && d.steps.empty())) &&
          static_cast<int>(d.named.size()) + revalued_steps < options.max_effects) {
     std::vector<int> remaining;
@@ -252,6 +259,7 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
     s.step.wall_time_s = std::chrono::duration<double>(Clock::now() - step_start).count();
     d.phases.insert(d.phases.end(), s.phases.begin(), s.phases.end());
     d.steps.push_back(s.step);
+    last_unit_signatures = s.unit_signatures;
     if (progress) progress("ranking: " + s.step.ranking.message);
     if (first && !settled.bounds.empty()) {
       const BoundCheck b = CheckBound(s, fit, observations, candidates, settled.bounds,
@@ -341,7 +349,8 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
   }
   // With nothing named, "after" is the re-valued fit (model form) unless a tie followed it.
   d.after_revalued = !d.revalued.empty() && d.named.empty() && !d.after_tied;
-  Finish(observations, fit, d.after_tied ? answer_fit : fit, options, candidates, &d);
+  Finish(observations, fit, d.after_tied ? answer_fit : fit, options, candidates,
+         last_unit_signatures, &d);
   d.simulations = model.SimulationsRun();
   d.simulations_reused = model.SimulationsReused();
   d.wall_time_s = std::chrono::duration<double>(Clock::now() - start).count();

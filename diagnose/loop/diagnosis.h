@@ -56,6 +56,7 @@
 #include "diagnose/loop/diagnosis_termination.h"
 #include "diagnose/loop/forward_model.h"
 #include "diagnose/ranking/bound_alternative.h"
+#include "diagnose/ranking/detection_limit.h"
 #include "diagnose/ranking/observables_carried.h"
 #include "diagnose/ranking/ranking.h"
 #include "diagnose/ranking/separating_measurement.h"
@@ -91,6 +92,15 @@ struct PhaseTime {
   std::string phase;  // "base calibration", "signatures", "refits"
   int simulations = 0;
   double wall_time_s = 0;
+};
+
+// What the data could not have seen (detection_limits.h): one candidate effect still open at
+// the end, the smallest size of it its own test would have found at kDetectionPower.
+struct EffectDetection {
+  int candidate = -1;
+  DetectionLimit limit;
+  double lower = 0, upper = 0;  // its parameter's range: a limit beyond it is not detectable there
+  bool has_signature = true;    // false: its signature run had no value (no limit)
 };
 
 struct Diagnosis {
@@ -145,6 +155,9 @@ struct Diagnosis {
   // refit, in the order of not_told_apart.
   bool after_tied = false;
   std::vector<double> tied_chi2_per_dof_after;
+  // Per candidate effect still open at the end (not named, re-valued or a control), the
+  // smallest size the data would have shown at kDetectionPower; empty when no candidate step ran.
+  std::vector<EffectDetection> detection_limits;
   std::vector<Observation> after;  // at the final point, the re-valued fit or the worse tie
   GapReport gap_after;
   int fitted_parameters_after = 0;

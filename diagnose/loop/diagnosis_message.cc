@@ -131,6 +131,34 @@ std::string RevaluedText(const Diagnosis& d) {
          d.revaluation_note;
 }
 
+// "; smaller effects can hide in these data: at 90 % power they would have shown wall_friction
+// (delta_mu_w >= 0.35 or <= -0.35), size_polydispersity (none within its range, -1 to 1.5)"
+// (detection_limits.h); "" when no candidate is open.
+std::string DetectionText(const Diagnosis& d, const std::vector<CandidateEffect>& candidates) {
+  if (d.detection_limits.empty()) return "";
+  std::ostringstream s;
+  s.precision(3);
+  s << "; smaller effects can hide in these data: at " << 100 * kDetectionPower
+    << " % power (linearised at the final fit) they would have shown ";
+  for (size_t k = 0; k < d.detection_limits.size(); ++k) {
+    const EffectDetection& e = d.detection_limits[k];
+    const EffectParameter& p = candidates[e.candidate].parameters[0];
+    s << (k ? ", " : "") << candidates[e.candidate].key << " (";
+    const double m = e.limit.magnitude;
+    const bool up = e.upper > 0 && m <= e.upper, down = e.lower < 0 && m <= -e.lower;
+    if (!e.has_signature)
+      s << "no limit: its signature run had no value";
+    else if (!up && !down)
+      s << "none within its range, " << e.lower << " to " << e.upper;
+    else
+      s << (up ? p.name + " >= " : "") << (up ? core::NumberText(m, 3) : "")
+        << (up && down ? " or " : "") << (down ? p.name + " <= " : "")
+        << (down ? core::NumberText(-m, 3) : "");
+    s << ")";
+  }
+  return s.str();
+}
+
 }  // namespace
 
 std::string DiagnosisMessage(const Diagnosis& d, const DiagnoseOptions& options,
@@ -154,6 +182,7 @@ std::string DiagnosisMessage(const Diagnosis& d, const DiagnoseOptions& options,
       m << "; not screened (the candidates' own tests need a settled base): the base calibration "
            "did not settle within "
         << kMaxBaseBudgetScale << "x the study's budget; raise max_evaluations to screen";
+    m << DetectionText(d, candidates);
     if (!d.bound_note.empty()) {
       m << "; but the base fit ends on a bound: " << d.bound_note;
     } else if (!d.base_at_bound.empty()) {
@@ -191,17 +220,19 @@ std::string DiagnosisMessage(const Diagnosis& d, const DiagnoseOptions& options,
     if (d.gap_after.gap_detected)
       m << "; a gap remains beside the re-valued parameter, not explained by the library"
         << BestNotNamedText(d, options, candidates);
+    m << DetectionText(d, candidates);
   } else if (!d.control_note.empty()) {
     m << "model-form offset / no missing effect: " << d.control_note << " (discrepancy floor "
       << core::NumberText(d.floor_before, 3) << " single-run scatter(s) beyond the fixed "
-      << options.discrepancy_floor << "; " << d.gap_before.summary << ")";
+      << options.discrepancy_floor << "; " << d.gap_before.summary << ")"
+      << DetectionText(d, candidates);
   } else {
     m << "model-form offset: the base model misses the data by a discrepancy floor of "
       << core::NumberText(d.floor_before, 3) << " single-run scatter(s) beyond the fixed "
       << options.discrepancy_floor
       << ", and no effect of the library explains more than that floor "
       << "allows (gap not explained by the library: " << d.gap_before.summary << ")"
-      << BestNotNamedText(d, options, candidates);
+      << BestNotNamedText(d, options, candidates) << DetectionText(d, candidates);
   }
   if (d.screened && !d.steps.empty() && d.termination != DiagnosisTermination::kNoMissingEffect)
     m << "; " << ScreenText(d, options);

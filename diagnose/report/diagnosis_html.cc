@@ -35,6 +35,29 @@ bool GapTable(const Diagnosis& d, bool synthetic, workflow::HtmlReport* report,
   return report->Table(t, error);
 }
 
+// What the data could not see (detection_limits.h): per open candidate, the smallest size its
+// own test would have shown at 90 % power.
+bool DetectionTable(const DiagnosisRunInfo& info, const Diagnosis& d, bool synthetic,
+                    workflow::HtmlReport* report, std::string* error) {
+  workflow::HtmlTable t{"smallest effect the data would have shown at " +
+                            Num(100 * kDetectionPower, 2) +
+                            " % power (linearised at the final fit); smaller ones can hide",
+                        {"effect", "parameter", "range", "increase ≥", "decrease ≤",
+                         "at half power"}};
+  for (const EffectDetection& e : d.detection_limits) {
+    const EffectParameter& p = info.candidates[e.candidate].parameters[0];
+    const double m = e.limit.magnitude;
+    const std::string none = e.has_signature ? "none in range" : "no signature";
+    t.rows.push_back({info.candidates[e.candidate].key, p.name + (p.unit.empty() ? "" : " (" + p.unit + ")"),
+                      Num(e.lower, 3) + " to " + Num(e.upper, 3),
+                      e.upper <= 0 ? "–" : e.has_signature && m <= e.upper ? Num(m, 3) : none,
+                      e.lower >= 0 ? "–" : e.has_signature && m <= -e.lower ? Num(-m, 3) : none,
+                      e.has_signature ? Num(e.limit.magnitude_half, 3) : "–"});
+    t.synthetic_rows.push_back(synthetic);
+  }
+  return report->Table(t, error);
+}
+
 // What became of a step's winner: named, re-valued (model form, joins the fit) or neither (a
 // tie, the control guard).
 std::string WinnerTag(const Diagnosis& d, int candidate) {
@@ -122,6 +145,10 @@ bool WriteDiagnosisHtml(const std::string& path, const DiagnosisRunInfo& info, c
       report.Subheading("Which observables carried the decision");
       report.List(carried);
     }
+  }
+  if (!d.detection_limits.empty()) {
+    report.Section("What the data could not see", syn);
+    if (!DetectionTable(info, d, syn, &report, error)) return false;
   }
   if (!d.steps.empty()) {
     report.Section("Signatures and ranking", syn);

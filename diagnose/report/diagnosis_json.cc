@@ -165,6 +165,32 @@ Json BoundJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
 
 // The screen without a gap (diagnosis.h step 2): the omnibus test's p beside the directed test
 // of the step's winner, or of its best simulated candidate; null when no screen ran.
+// Per candidate still open at the end, the smallest size its own test would have found
+// (detection_limits.h); null where none lies within the parameter's range in that direction.
+Json DetectionJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
+  Json effects = Json::array();
+  for (const EffectDetection& e : d.detection_limits) {
+    const EffectParameter& p = info.candidates[e.candidate].parameters[0];
+    const double m = e.has_signature ? e.limit.magnitude : INFINITY;
+    effects.push_back(
+        {{"effect", info.candidates[e.candidate].key},
+         {"parameter", p.name},
+         {"unit", p.unit},
+         {"smallest_detectable_increase", e.upper > 0 && m <= e.upper ? Number(m) : Json(nullptr)},
+         {"smallest_detectable_decrease",
+          e.lower < 0 && m <= -e.lower ? Number(-m) : Json(nullptr)},
+         {"magnitude_at_power", Number(m)},
+         {"magnitude_at_half_power", Number(e.has_signature ? e.limit.magnitude_half : INFINITY)},
+         {"range", {Number(e.lower), Number(e.upper)}},
+         {"critical_sd", Number(e.limit.critical)},
+         {"signature_beyond_fit_sd_per_unit", Number(e.limit.projected_norm)},
+         {"has_signature", e.has_signature}});
+  }
+  return {{"power", kDetectionPower},
+          {"at", "the final fit, linearised (docs/diagnose/ranking.md)"},
+          {"effects", effects}};
+}
+
 Json ScreenJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
   if (!d.screened || d.steps.empty()) return nullptr;
   const DiagnosisStep& step = d.steps.front();
@@ -260,6 +286,7 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
       {"significance_per_candidate",
        info.options.significance / static_cast<double>(std::max<size_t>(1, tried))}};
   j["gap_detected_after"] = d.gap_after.gap_detected;
+  j["detection_limits"] = DetectionJson(info, d);
   j["candidates"] =
       d.steps.empty() ? Json::array() : StepJson(info, d.before, d.steps.front())["candidates"];
   Json tie = Json::array();

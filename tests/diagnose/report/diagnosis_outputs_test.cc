@@ -152,3 +152,35 @@ TEST_CASE("a re-valued parameter and a named effect reach the outputs apart", "[
 }
 
 }  // namespace demcal::diagnose
+
+namespace demcal::diagnose {
+
+TEST_CASE("the detection limits reach diagnosis.json and the report", "[unit]") {
+  // Nothing hidden: "no missing effect", with what the data could not have seen.
+  ScratchDir dir("diagnosis_outputs_limits");
+  testing::AnalyticForwardModel model;
+  const std::vector<Observation> obs = testing::MakeObservations(&model, 0.5, {}, 1);
+  const Diagnosis d = Diagnose(model, obs, testing::Candidates(), DiagnoseOptions{});
+  REQUIRE(d.termination == DiagnosisTermination::kNoMissingEffect);
+  const nlohmann::json j = Written(dir, "limits", testing::Candidates(), d);
+  REQUIRE(j["detection_limits"]["power"] == 0.9);
+  const nlohmann::json& effects = j["detection_limits"]["effects"];
+  REQUIRE(effects.size() == 4);  // the control is not listed
+  std::set<std::string> keys;
+  for (const nlohmann::json& e : effects) {
+    keys.insert(e["effect"].get<std::string>());
+    const double m = e["magnitude_at_power"].get<double>();
+    if (e["effect"] == "rolling") {  // signed: both directions within [-0.3, 1] when m <= 0.3
+      if (m <= 0.3) CHECK(e["smallest_detectable_decrease"].get<double>() == Approx(-m));
+      CHECK(e["smallest_detectable_increase"].get<double>() == Approx(m));
+    } else {
+      CHECK(e["smallest_detectable_decrease"].is_null());  // these cannot fall below the base
+    }
+  }
+  CHECK(keys == std::set<std::string>{"adhesion", "rolling", "shape", "polydispersity"});
+  const std::string html = Text(dir.str("limits/report.html"));
+  CHECK(html.find("What the data could not see") != std::string::npos);
+  CHECK(html.find("smaller ones can hide") != std::string::npos);
+}
+
+}  // namespace demcal::diagnose
