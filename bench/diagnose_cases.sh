@@ -1,7 +1,7 @@
 #!/bin/bash
 # Every bundled diagnosis case from an empty folder, one at a time, timed; then the scorecard.
 #
-#   bash bench/diagnose_cases.sh [OUT_DIR]                 # all 19 cases, --quick --threads 2
+#   bash bench/diagnose_cases.sh [OUT_DIR]                 # all 26 cases, --quick --threads 2
 #   CASES="crossengine_control diagnose_none" THREADS=1 bash bench/diagnose_cases.sh /tmp/dc
 #   DEMCAL=/path/to/demcal bash bench/diagnose_cases.sh    # another build's binary
 #   STUDY_DIR=/tmp/heldout/studies CASES="crossengine_control_s300k_cdt_relative" \
@@ -22,7 +22,7 @@ study_dir=${STUDY_DIR:-examples/diagnose}   # relative to the repository, or abs
 
 if [ -z "${CASES:-}" ]; then
   CASES=""
-  for suffix in "" _cdt_relative; do
+  for suffix in "" _cdt_relative _fit_rolling; do
     for c in control adhesion rolling_low wide_psd rolling_strong wall_friction_high elongated; do
       CASES="$CASES crossengine_${c}${suffix}"
     done

@@ -266,8 +266,9 @@ def write_study(spec):
     """The twins' study (diagnose_none.json: mu_s fitted, its optimiser and replicates) over every row
     the case's table holds: both heaps and both funnels. Bundled cases: examples/diagnose/
     crossengine_<case>.json, paths relative to it; held-out ones: OUT/studies/crossengine_<name>.json
-    with absolute paths (the study loader resolves a relative path against the study's folder), and
-    its matching-law variant (scripts/liggghts_matching_studies.py)."""
+    with absolute paths (the study loader resolves a relative path against the study's folder), its
+    matching-law variant (scripts/liggghts_matching_studies.py) and its variant with the rolling
+    friction fitted (scripts/liggghts_rolling_fitted_studies.py)."""
     case, examples = spec["name"], os.path.join(ROOT, "examples", "diagnose")
     study = json.load(open(os.path.join(examples, "diagnose_none.json")))
     files = {test: name for name, test in RIGS.values()}
@@ -298,8 +299,11 @@ def write_study(spec):
     json.dump(study, open(path, "w"), indent=2)
     open(path, "a").write("\n")
     if spec["held_out"]:
-        import liggghts_matching_studies as matching  # it imports this module: imported here, when used
+        # Both import this module: imported here, when used.
+        import liggghts_matching_studies as matching
+        import liggghts_rolling_fitted_studies as rolling_fitted
         matching.write_study(case, folder, where)
+        rolling_fitted.write_study(case, folder, where)
 
 
 def main():
