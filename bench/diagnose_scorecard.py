@@ -12,6 +12,9 @@ by mechanism (two laws of one mechanism name the same thing, docs/diagnose/ranki
   tie, truth   "not told apart" with the hidden effect among the two
   re-valued    a model-form offset that re-values the hidden effect's parameter, right sign
   missed       nothing named (no missing effect, an offset of another parameter, unsettled base)
+  in the base  nothing named, and the study fits the hidden effect's parameter itself (its
+               candidate is a control: rolling resistance when μr is fitted): the data's value
+               is the base's fitted one, which no answer names
   control ok   nothing hidden, and "no missing effect" or "model-form offset"
   WRONG        an effect named that is not the hidden one (or the wrong sign), a tie without the
                truth, or a control with anything else
@@ -91,6 +94,10 @@ def verdict(diagnosis, hidden, sign):
     revalued = [(mechanism(r["effect"]), sign_of(r["value"])) for r in diagnosis["revalued_parameters"]]
     if any(right(m, s) for m, s in revalued):
         return "re-valued"
+    controls = {mechanism(c["effect"]) for step in diagnosis.get("steps", [])
+                for c in step["candidates"] if c.get("control")}
+    if hidden in controls and hidden != "sliding_friction_control":
+        return "in the base"
     return "missed"
 
 
@@ -196,6 +203,9 @@ def self_test():
         ("missed", diag("model_form_offset", revalued=[("wall_friction", -0.4)]),
          "rolling_resistance", "-"),
         ("missed", diag("no_missing_effect"), "wall_friction", "+"),
+        ("in the base", {**diag("no_missing_effect"), "steps": [{"candidates": [
+            {"effect": "rolling_resistance", "control": True, "parameters": [{"value": 0.0}]}]}]},
+         "rolling_resistance", "+"),
         ("control ok", diag("model_form_offset", revalued=[("wall_friction", -0.4)]), None, None),
         ("control ok", diag("no_missing_effect"), None, None),
         ("WRONG", diag("effect_found", named=[("wall_friction", 0.3)]), None, None),
