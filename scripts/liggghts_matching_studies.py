@@ -15,7 +15,7 @@ demcal `cdt_relative` at the same coefficients (the same torque, no conversion).
    (crossengine_<case>.json, written by make_liggghts_datasets.py) on those experiment files.
 The study still fits only the BP-BP sliding friction; nothing else is read from the data.
 """
-import argparse, json, os, sys
+import json, os, sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import make_liggghts_datasets as mk  # noqa: E402
@@ -68,14 +68,10 @@ def write_study(case, folder=EXAMPLES, where=None):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--cases", default=",".join(mk.CASES))
-    a = ap.parse_args()
+    cases = mk.cases_from_arguments(__doc__.split("\n")[0])
     for name in EXPERIMENTS:
         write_experiment(name)
-    for case in a.cases.split(","):
-        if case not in mk.CASES:
-            sys.exit(f"--cases: unknown case '{case}' (known: {', '.join(mk.CASES)})")
+    for case in cases:
         write_study(case)
 
 

@@ -15,7 +15,7 @@ the BP-BP rolling friction in [0.01, 0.5] from the assumed 0.10 (a tenth to five
 LIGGGHTS base's 0.20 on its own law is about 0.05 on demcal's). The `rolling_resistance` effect is
 then a copy of a fitted parameter, guarded as a control.
 """
-import argparse, json, os, sys
+import json, os, sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import make_liggghts_datasets as mk  # noqa: E402
@@ -44,12 +44,7 @@ def write_study(case, folder=EXAMPLES, where=None):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--cases", default=",".join(mk.CASES))
-    a = ap.parse_args()
-    for case in a.cases.split(","):
-        if case not in mk.CASES:
-            sys.exit(f"--cases: unknown case '{case}' (known: {', '.join(mk.CASES)})")
+    for case in mk.cases_from_arguments(__doc__.split("\n")[0]):
         write_study(case)
 
 

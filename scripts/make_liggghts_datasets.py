@@ -306,6 +306,17 @@ def write_study(spec):
         rolling_fitted.write_study(case, folder, where)
 
 
+def cases_from_arguments(description):
+    """The --cases a study-writing script was given (default: every bundled case), each known."""
+    ap = argparse.ArgumentParser(description=description)
+    ap.add_argument("--cases", default=",".join(CASES))
+    cases = ap.parse_args().cases.split(",")
+    for case in cases:
+        if case not in CASES:
+            sys.exit(f"--cases: unknown case '{case}' (known: {', '.join(CASES)})")
+    return cases
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--cases", default=",".join(CASES))
