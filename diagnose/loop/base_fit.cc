@@ -10,6 +10,7 @@
 #include "diagnose/gap/gap_significance.h"
 #include "diagnose/loop/fit_state.h"
 #include "diagnose/loop/base_noise.h"
+#include "diagnose/loop/base_step.h"
 #include "diagnose/ranking/evidence.h"
 
 namespace demcal::diagnose {
@@ -40,6 +41,55 @@ bool WithinNoise(const std::vector<Observation>& observations, const BaseCalibra
          !TestGap(WithPrediction(observations, base.prediction, floor_factor),
                   static_cast<int>(base.base_unit.size()), {significance})
               .gap_detected;
+}
+
+// A base settled by stagnation, checked by its own linearised step (base_fit.h): moves b's base
+// where a simulation confirms the predicted drop, and records every step simulated.
+void CheckStagnatedOptimum(ForwardModel& model, const std::vector<Observation>& observations,
+                           double floor_factor, BaseFit* b) {
+  int simulated = 0;
+  while (simulated < kMaxBaseSteps) {
+    const std::vector<Observation> at =
+        WithPrediction(observations, b->base.prediction, floor_factor);
+    const NoisyChi2 now = BaseChi2(at);
+    const BaseStep step =
+        LinearisedBaseStep(at, b->base.base_unit, b->base.jacobian, b->base.jacobian_sigma);
+    // The prediction has no noise of its own beyond the current fit's: the same margin as two
+    // fits of that noise.
+    if (!step.ok ||
+        now.chi2 - step.chi2_predicted < StagnationMargin(now.noise_sd, now.noise_sd))
+      return;  // the linearisation sees no drop beyond noise: the stagnated fit stands
+    bool moved = false;
+    for (const double fraction : {1.0, 0.5}) {  // the whole step, then half (a damped retry)
+      if (simulated >= kMaxBaseSteps) break;
+      BaseStepRecord r{PartWay(b->base.base_unit, step.unit, fraction), fraction, now.chi2};
+      r.chi2_predicted = step.chi2_predicted;
+      const Prediction p = model.Evaluate({ModelPoint{r.unit, {}}}).at(0);
+      ++simulated;
+      const NoisyChi2 after = Chi2(observations, p, floor_factor);
+      r.chi2_simulated = after.chi2;
+      r.margin = StagnationMargin(now.noise_sd, after.noise_sd);
+      r.accepted = p.ok && now.chi2 - after.chi2 >= r.margin;
+      b->steps.push_back(r);
+      if (!r.accepted) continue;
+      b->base.base_unit = r.unit;
+      b->base.prediction = p;
+      moved = true;
+      break;
+    }
+    if (!moved) return;
+  }
+}
+
+std::string StepsSummary(const std::vector<BaseStepRecord>& steps) {
+  std::ostringstream s;
+  for (const BaseStepRecord& r : steps)
+    s << "; its linearised step" << (r.fraction < 1 ? " (half of it)" : "")
+      << " predicted chi2 " << Rounded(r.chi2_before) << " to " << Rounded(r.chi2_predicted)
+      << ", simulated " << Rounded(r.chi2_simulated)
+      << (r.accepted ? ": the base moved there"
+                     : ": not lower beyond the noise (" + Rounded(r.margin) + "), not taken");
+  return s.str();
 }
 
 }  // namespace
@@ -90,6 +140,7 @@ BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observat
   }
   if (b.base.ok && !b.base.settled && !b.within_noise)
     b.within_noise = WithinNoise(observations, b.base, floor_factor, significance);
+  if (b.base.ok && b.stagnated) CheckStagnatedOptimum(model, observations, floor_factor, &b);
   std::ostringstream s;
   s << "base calibration " << b.base.termination << " with " << b.base.max_evaluations
     << " evaluations"
@@ -99,7 +150,7 @@ BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observat
     s << ": settled, twice the budget lowered chi2 by less than " << b.stagnation_margin
       << " (" << (b.stagnation_margin > 1 ? "the simulation noise of the two fits' chi2"
                                           : "one standard deviation of a fitted parameter")
-      << ")";
+      << ")" << StepsSummary(b.steps);
   if (!b.base.settled) {
     s << ": not settled by the calibration's own criterion";
     const size_t r = b.chi2_rounds.size();

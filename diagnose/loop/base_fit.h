@@ -14,6 +14,11 @@
 // has not settled then
 // is reported as such and no effect is ranked on it: an unsettled base leaves a gap the
 // calibration itself would have closed, and any effect "explains" it.
+// A base settled by stagnation is then checked by its own linearised step (base_step.h): when the
+// sensitivities its calibration estimated predict a drop of χ² beyond the stagnation margin, the
+// step is simulated (then half of it, if the whole is not confirmed), at most kMaxBaseSteps
+// times, and the base moves where a simulation confirms the drop. The optimiser's own verdicts
+// (within_noise, converged) are not second-guessed: stagnation is this file's inference.
 // At the settled fit, the identifiability of the base parameters (calibrate/identifiability.h on
 // the standardised sensitivities): a combination the data leave undetermined is reported
 // before any effect is named, since an effect traded against it is not told apart from it.
@@ -47,6 +52,20 @@ inline constexpr int kMaxBaseBudgetScale = 4;
 // to tell two simulated refits apart.
 double StagnationMargin(double noise_sd_before, double noise_sd_after);
 
+// The linearised steps simulated at most to check a stagnated base: a cost bound (one base
+// point each), not a statistical threshold. Two lets a step confirmed from a far-off start be
+// followed by one from the point it reached, with the same sensitivities.
+inline constexpr int kMaxBaseSteps = 2;
+
+// One simulated linearised step of the base (base_step.h).
+struct BaseStepRecord {
+  std::vector<double> unit;  // the point simulated
+  double fraction = 1;       // of the linearised step (0.5: the damped retry)
+  double chi2_before = 0, chi2_predicted = 0, chi2_simulated = 0;
+  double margin = 0;      // StagnationMargin of the two fits: the drop a move needs
+  bool accepted = false;  // the base moved there
+};
+
 // A base parameter fitted onto a bound of the study's range: its coordinate and which bound.
 struct BaseBound {
   int coordinate = 0;
@@ -62,6 +81,7 @@ struct BaseFit {
   double stagnation_margin = 0;
   std::vector<double> chi2_rounds;  // the best fit's χ² of every unsettled round, in order
   std::vector<double> chi2_noise_sd_rounds;  // and its simulation noise sd (BaseChi2)
+  std::vector<BaseStepRecord> steps;  // the linearised steps simulated after stagnation
   calibrate::IdentifiabilityReport identifiability;
   // Base parameters whose fit ended on a bound of the study's range: "mu_s_BP_BP at its lower
   // bound". The data may ask for a value beyond the range, and an effect that moves the

@@ -211,6 +211,7 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
   d.base_identifiability = settled.identifiability;
   d.base_summary = settled.summary;
   d.base_at_bound = settled.at_bound;
+  d.base_steps = settled.steps;
   if (progress) progress(settled.summary);
   d.phases.push_back({"base calibration", model.SimulationsRun(),
                       std::chrono::duration<double>(Clock::now() - start).count()});

@@ -53,6 +53,7 @@
 
 #include "calibrate/identifiability.h"
 #include "diagnose/gap/gap_significance.h"
+#include "diagnose/loop/base_fit.h"
 #include "diagnose/loop/diagnosis_termination.h"
 #include "diagnose/loop/forward_model.h"
 #include "diagnose/ranking/bound_alternative.h"
@@ -111,6 +112,7 @@ struct Diagnosis {
   calibrate::IdentifiabilityReport base_identifiability;
   std::string base_summary;         // settled or not, budget, undetermined base parameters
   std::vector<std::string> base_at_bound;  // base parameters fitted onto a bound (base_fit.h)
+  std::vector<BaseStepRecord> base_steps;  // linearised steps after stagnation (base_fit.h)
   // A base fitted onto a bound, against the effects that let it back inside (bound_step.h):
   // the judgement (entry indices of the first step; kNotJudged when nothing is on a bound), the
   // effect judged, "mu_s_BP_BP beyond its lower bound", and the verdict's sentence.

@@ -310,12 +310,22 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
                             {"unit_direction", u.unit_direction}});
   Json singular = Json::array();
   for (double s : d.base_identifiability.singular_values) singular.push_back(Number(s));
+  Json base_steps = Json::array();
+  for (const BaseStepRecord& r : d.base_steps)
+    base_steps.push_back({{"unit", r.unit},
+                          {"fraction", r.fraction},
+                          {"chi2_before", Number(r.chi2_before)},
+                          {"chi2_predicted", Number(r.chi2_predicted)},
+                          {"chi2_simulated", Number(r.chi2_simulated)},
+                          {"margin", Number(r.margin)},
+                          {"accepted", r.accepted}});
   j["base_calibration"] = {{"termination", d.base.termination},
                            {"message", d.base.message},
                            {"settled", d.base.settled},
                            {"max_evaluations", d.base.max_evaluations},
                            {"budget_scale", d.base_budget_scale},
                            {"summary", d.base_summary},
+                           {"linearised_steps", base_steps},
                            {"identifiable", d.base_identifiability.Identifiable()},
                            {"singular_values", singular},
                            {"undetermined", undetermined},
