@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "calibrate/chi_square.h"
 #include "calibrate/jacobian_svd.h"
 #include "core/math/number_text.h"
 #include "diagnose/gap/gap_significance.h"
@@ -44,32 +45,30 @@ bool WithinNoise(const std::vector<Observation>& observations, const BaseCalibra
 }
 
 // A base settled by stagnation, checked by its own linearised step (base_fit.h): moves b's base
-// where a simulation confirms the predicted drop, and records every step simulated.
+// to a simulated step point with a lower χ², and records every step simulated.
 void CheckStagnatedOptimum(ForwardModel& model, const std::vector<Observation>& observations,
-                           double floor_factor, BaseFit* b) {
+                           double floor_factor, double significance, BaseFit* b) {
   int simulated = 0;
   while (simulated < kMaxBaseSteps) {
     const std::vector<Observation> at =
         WithPrediction(observations, b->base.prediction, floor_factor);
-    const NoisyChi2 now = BaseChi2(at);
+    const double chi2_now = BaseChi2(at).chi2;
     const BaseStep step =
         LinearisedBaseStep(at, b->base.base_unit, b->base.jacobian, b->base.jacobian_sigma);
-    // The prediction has no noise of its own beyond the current fit's: the same margin as two
-    // fits of that noise.
-    if (!step.ok ||
-        now.chi2 - step.chi2_predicted < StagnationMargin(now.noise_sd, now.noise_sd))
+    const double threshold =
+        BaseStepThreshold(step.rank, step.max_noise_per_sigma, significance);
+    if (!step.ok || step.rank < 1 || chi2_now - step.chi2_predicted <= threshold)
       return;  // the linearisation sees no drop beyond noise: the stagnated fit stands
     bool moved = false;
     for (const double fraction : {1.0, 0.5}) {  // the whole step, then half (a damped retry)
       if (simulated >= kMaxBaseSteps) break;
-      BaseStepRecord r{PartWay(b->base.base_unit, step.unit, fraction), fraction, now.chi2};
+      BaseStepRecord r{PartWay(b->base.base_unit, step.unit, fraction), fraction, chi2_now};
       r.chi2_predicted = step.chi2_predicted;
+      r.threshold = threshold;
       const Prediction p = model.Evaluate({ModelPoint{r.unit, {}}}).at(0);
       ++simulated;
-      const NoisyChi2 after = Chi2(observations, p, floor_factor);
-      r.chi2_simulated = after.chi2;
-      r.margin = StagnationMargin(now.noise_sd, after.noise_sd);
-      r.accepted = p.ok && now.chi2 - after.chi2 >= r.margin;
+      r.chi2_simulated = Chi2(observations, p, floor_factor).chi2;
+      r.accepted = p.ok && r.chi2_simulated < chi2_now;
       b->steps.push_back(r);
       if (!r.accepted) continue;
       b->base.base_unit = r.unit;
@@ -87,8 +86,7 @@ std::string StepsSummary(const std::vector<BaseStepRecord>& steps) {
     s << "; its linearised step" << (r.fraction < 1 ? " (half of it)" : "")
       << " predicted chi2 " << Rounded(r.chi2_before) << " to " << Rounded(r.chi2_predicted)
       << ", simulated " << Rounded(r.chi2_simulated)
-      << (r.accepted ? ": the base moved there"
-                     : ": not lower beyond the noise (" + Rounded(r.margin) + "), not taken");
+      << (r.accepted ? ": the base moved there" : ": no lower, not taken");
   return s.str();
 }
 
@@ -96,6 +94,11 @@ std::string StepsSummary(const std::vector<BaseStepRecord>& steps) {
 
 double StagnationMargin(double noise_sd_before, double noise_sd_after) {
   return std::max(1.0, kNoiseSds * std::hypot(noise_sd_before, noise_sd_after));
+}
+
+double BaseStepThreshold(int rank, double max_noise_per_sigma, double significance) {
+  return std::max(1.0, max_noise_per_sigma * max_noise_per_sigma *
+                           calibrate::ChiSquareQuantile(1 - significance, std::max(1, rank)));
 }
 
 BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observations,
@@ -140,7 +143,8 @@ BaseFit SettleBase(ForwardModel& model, const std::vector<Observation>& observat
   }
   if (b.base.ok && !b.base.settled && !b.within_noise)
     b.within_noise = WithinNoise(observations, b.base, floor_factor, significance);
-  if (b.base.ok && b.stagnated) CheckStagnatedOptimum(model, observations, floor_factor, &b);
+  if (b.base.ok && b.stagnated)
+    CheckStagnatedOptimum(model, observations, floor_factor, significance, &b);
   std::ostringstream s;
   s << "base calibration " << b.base.termination << " with " << b.base.max_evaluations
     << " evaluations"

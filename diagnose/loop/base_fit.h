@@ -15,10 +15,12 @@
 // is reported as such and no effect is ranked on it: an unsettled base leaves a gap the
 // calibration itself would have closed, and any effect "explains" it.
 // A base settled by stagnation is then checked by its own linearised step (base_step.h): when the
-// sensitivities its calibration estimated predict a drop of χ² beyond the stagnation margin, the
-// step is simulated (then half of it, if the whole is not confirmed), at most kMaxBaseSteps
-// times, and the base moves where a simulation confirms the drop. The optimiser's own verdicts
-// (within_noise, converged) are not second-guessed: stagnation is this file's inference.
+// sensitivities its calibration estimated predict a drop of χ² beyond what the simulation noise
+// alone would predict (BaseStepThreshold), the step is simulated (then half of it, if the
+// whole is no better), at most kMaxBaseSteps times, and the base moves to a simulated point
+// whose χ² is lower than the fit's: the calibration's own rule for its best candidate (the
+// lowest cost), applied to one more candidate. The optimiser's own verdicts (within_noise,
+// converged) are not second-guessed: stagnation is this file's inference.
 // At the settled fit, the identifiability of the base parameters (calibrate/identifiability.h on
 // the standardised sensitivities): a combination the data leave undetermined is reported
 // before any effect is named, since an effect traded against it is not told apart from it.
@@ -57,13 +59,19 @@ double StagnationMargin(double noise_sd_before, double noise_sd_after);
 // followed by one from the point it reached, with the same sensitivities.
 inline constexpr int kMaxBaseSteps = 2;
 
+// The predicted drop of χ² a linearised step must exceed to be simulated: max(1, m² · the χ²_rank
+// quantile at 1 − significance), m the largest sem/σ (base_step.h: the drop the simulation noise
+// alone gives with nothing to find, at the diagnosis' significance), 1 the profile-likelihood
+// unit (a drop below one parameter standard deviation is no evidence the fit is off its optimum).
+double BaseStepThreshold(int rank, double max_noise_per_sigma, double significance);
+
 // One simulated linearised step of the base (base_step.h).
 struct BaseStepRecord {
   std::vector<double> unit;  // the point simulated
   double fraction = 1;       // of the linearised step (0.5: the damped retry)
   double chi2_before = 0, chi2_predicted = 0, chi2_simulated = 0;
-  double margin = 0;      // StagnationMargin of the two fits: the drop a move needs
-  bool accepted = false;  // the base moved there
+  double threshold = 0;   // BaseStepThreshold: the predicted drop exceeded it
+  bool accepted = false;  // the base moved there (chi2_simulated < chi2_before)
 };
 
 // A base parameter fitted onto a bound of the study's range: its coordinate and which bound.

@@ -10,7 +10,8 @@ namespace {
 
 // Least squares J Δ ≈ −r over the singular directions above the floor (truncated SVD).
 Eigen::VectorXd TruncatedSolve(const Eigen::MatrixXd& J, const Eigen::VectorXd& r,
-                               double noise_floor) {
+                               double noise_floor, int* rank) {
+  *rank = 0;
   Eigen::VectorXd delta = Eigen::VectorXd::Zero(J.cols());
   if (J.cols() == 0 || J.rows() == 0) return delta;
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeThinU | Eigen::ComputeThinV);
@@ -18,6 +19,7 @@ Eigen::VectorXd TruncatedSolve(const Eigen::MatrixXd& J, const Eigen::VectorXd& 
   for (Eigen::Index k = 0; k < s.size(); ++k) {
     if (s(k) <= noise_floor || s(k) <= calibrate::kRankTolerance * s(0)) continue;
     delta -= svd.matrixV().col(k) * (svd.matrixU().col(k).dot(r) / s(k));
+    ++*rank;
   }
   return delta;
 }
@@ -35,6 +37,7 @@ BaseStep LinearisedBaseStep(const std::vector<Observation>& at, const std::vecto
   for (int i = 0; i < n; ++i) {
     const double sigma = at[i].Sigma();
     r(i) = at[i].Residual();
+    step.max_noise_per_sigma = std::max(step.max_noise_per_sigma, at[i].sem / sigma);
     for (int j = 0; j < p; ++j) {
       if (i < static_cast<int>(jacobian.size()) && j < static_cast<int>(jacobian[i].size()))
         J(i, j) = jacobian[i][j] / sigma;
@@ -60,7 +63,7 @@ BaseStep LinearisedBaseStep(const std::vector<Observation>& at, const std::vecto
     for (size_t k = 0; k < free.size(); ++k)
       J_free.col(k) = J.col(free[k]), S_free.col(k) = J_sigma.col(free[k]);
     const Eigen::VectorXd d =
-        TruncatedSolve(J_free, r_fixed, calibrate::JacobianNoiseFloor(S_free));
+        TruncatedSolve(J_free, r_fixed, calibrate::JacobianNoiseFloor(S_free), &step.rank);
     bool clamped = false;
     for (size_t k = 0; k < free.size(); ++k) {
       const int j = free[k];

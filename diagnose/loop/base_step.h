@@ -28,6 +28,12 @@ struct BaseStep {
   std::vector<double> unit;  // the proposed base point (unit cube)
   double chi2_now = 0;       // Σ r², r = (simulated − measured) / σ at the current point
   double chi2_predicted = 0;  // ‖r + J Δ‖², the σ held fixed
+  // What the simulation noise alone makes of the predicted drop: with no drop to find, the
+  // drop is ‖P e‖², P the projection on the `rank` directions solved, e the simulated means'
+  // errors over σ (each sem/σ ≤ max_noise_per_sigma), so it is at most max_noise_per_sigma² ·
+  // χ²_rank in distribution.
+  int rank = 0;
+  double max_noise_per_sigma = 0;
 };
 
 // at: the observations with the current prediction filled in (WithPrediction); jacobian

@@ -317,7 +317,7 @@ Json DiagnosisJson(const DiagnosisRunInfo& info, const Diagnosis& d) {
                           {"chi2_before", Number(r.chi2_before)},
                           {"chi2_predicted", Number(r.chi2_predicted)},
                           {"chi2_simulated", Number(r.chi2_simulated)},
-                          {"margin", Number(r.margin)},
+                          {"predicted_drop_threshold", Number(r.threshold)},
                           {"accepted", r.accepted}});
   j["base_calibration"] = {{"termination", d.base.termination},
                            {"message", d.base.message},

@@ -82,7 +82,7 @@ TEST_CASE("a base that stagnated off its optimum is moved there by its own linea
     CHECK(b.stagnated);
     REQUIRE_FALSE(b.steps.empty());
     CHECK(b.steps[0].accepted);
-    CHECK(b.steps[0].chi2_simulated < b.steps[0].chi2_before - b.steps[0].margin);
+    CHECK(b.steps[0].chi2_simulated < b.steps[0].chi2_before);
     CHECK(std::abs(b.base.base_unit[0] - 0.5) < 0.03);
     CHECK(b.summary.find("the base moved there") != std::string::npos);
     // The diagnosis on it: nothing hidden, nothing named.
@@ -95,17 +95,40 @@ TEST_CASE("a base that stagnated off its optimum is moved there by its own linea
   }
 }
 
-TEST_CASE("a base that stagnated at its optimum takes no step", "[unit]") {
-  // The stand-in's search stops at u 0.5, the truth: the linearisation predicts no drop beyond
-  // the margin, so nothing is simulated.
-  testing::AnalyticForwardModel model;
-  model.settle_at_scale = 1000;
-  model.stall_shift = 0.5;
-  const std::vector<Observation> obs = testing::MakeObservations(&model, 0.6, {}, 1);
-  const BaseFit b = SettleBase(model, obs, 1.0, 0.01, {}, true);
-  CHECK(b.stagnated);
-  CHECK(b.steps.empty());
-  CHECK(std::abs(b.base.base_unit[0] - 0.5) < 1e-12);
+TEST_CASE("a step from a stagnated base goes only to the data's least-squares point", "[unit]") {
+  // The stand-in's search stops at u 0.5, where the data were made; their least-squares point
+  // differs by the measurement noise. A step is simulated only where the linearisation predicts
+  // a drop above BaseStepThreshold, and then lands on that point (the stand-in is linear in u);
+  // the base never moves away from it.
+  int stepped = 0;
+  for (uint64_t seed = 1; seed <= 40; ++seed) {
+    INFO("noise seed " << seed);
+    testing::AnalyticForwardModel model;
+    model.settle_at_scale = 1000;
+    model.stall_shift = 0.5;
+    const std::vector<Observation> obs = testing::MakeObservations(&model, 0.6, {}, seed);
+    testing::AnalyticForwardModel grid;  // settles at once, on the least-squares grid point
+    grid.measured = model.measured;
+    const double u_ls = SettleBase(grid, obs, 1.0, 0.01, {}, true).base.base_unit[0];
+    const BaseFit b = SettleBase(model, obs, 1.0, 0.01, {}, true);
+    CHECK(b.stagnated);
+    const double u = b.base.base_unit[0];
+    if (b.steps.empty()) {
+      CHECK(u == 0.5);
+      continue;
+    }
+    ++stepped;
+    CHECK(b.steps[0].chi2_before - b.steps[0].chi2_predicted > b.steps[0].threshold);
+    CHECK(b.steps[0].accepted);
+    CHECK(std::abs(u - u_ls) <= 1e-3 + 1e-9);  // the grid's spacing
+  }
+  CHECK(stepped < 40);  // most stops lie within the threshold of their least-squares point
+}
+
+TEST_CASE("the step threshold: one parameter's sd, or the noise's share of the drop", "[unit]") {
+  CHECK(BaseStepThreshold(1, 0, 0.01) == 1.0);    // noise-free: the profile-likelihood unit
+  CHECK(BaseStepThreshold(1, 1, 0.01) == Approx(6.635).epsilon(1e-3));  // χ²_1 at 99 %
+  CHECK(BaseStepThreshold(2, 0.5, 0.01) == Approx(0.25 * 9.210).epsilon(1e-3));
 }
 
 }  // namespace demcal::diagnose
