@@ -18,10 +18,10 @@ std::vector<EffectDetection> DetectionLimitsAtFit(
   const double per_candidate = options.significance / std::max<size_t>(1, step.entries.size());
   for (size_t i = 0; i < step.entries.size() && i < unit_signatures.size(); ++i) {
     const int c = step.entries[i].candidate;
-    bool spoken = candidates[c].control || d.Named(c) || d.Revalued(c) ||
-                  std::find(d.not_told_apart.begin(), d.not_told_apart.end(), c) !=
-                      d.not_told_apart.end();
-    for (int n : d.named) spoken = spoken || SameMechanism(candidates[n].mechanism, candidates[c].mechanism);
+    const bool spoken = candidates[c].control || d.Named(c) || d.MechanismNamed(candidates, c) ||
+                        d.Revalued(c) ||
+                        std::find(d.not_told_apart.begin(), d.not_told_apart.end(), c) !=
+                            d.not_told_apart.end();
     if (spoken || unit_signatures[i].size() != static_cast<size_t>(f.n())) continue;
     const Eigen::VectorXd s =
         f.sigma.cwiseInverse().cwiseProduct(refits::ToVector(unit_signatures[i]));

@@ -69,13 +69,6 @@ std::string Names(const std::vector<int>& named, const std::vector<CandidateEffe
   return s;
 }
 
-// Whether candidate c is another law of a mechanism already named.
-bool MechanismNamed(const Diagnosis& d, const std::vector<CandidateEffect>& candidates, int c) {
-  for (int n : d.named)
-    if (SameMechanism(candidates[n].mechanism, candidates[c].mechanism)) return true;
-  return false;
-}
-
 // `after_fit` is what the "after" figures describe: the fit with the named effects and the
 // re-valued parameters (the base model's own mechanisms at the values the data ask for); for
 // "not told apart", the worse tied refit. So χ²/dof after says how well the answer fits.
@@ -250,7 +243,7 @@ Diagnosis Diagnose(ForwardModel& model, const std::vector<Observation>& observat
          static_cast<int>(d.named.size()) + revalued_steps < options.max_effects) {
     std::vector<int> remaining;
     for (int c = 0; c < static_cast<int>(candidates.size()); ++c)
-      if (!d.Named(c) && !MechanismNamed(d, candidates, c) && !d.Revalued(c))
+      if (!d.Named(c) && !d.MechanismNamed(candidates, c) && !d.Revalued(c))
         remaining.push_back(c);
     if (remaining.empty()) break;
     const auto step_start = Clock::now();

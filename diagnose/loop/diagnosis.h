@@ -168,6 +168,12 @@ struct Diagnosis {
   double wall_time_s = 0;
 
   // Whether candidate c was named, or re-values a modelled parameter (in `revalued`).
+  // Another law of a named effect's mechanism (SameMechanism) is named with it.
+  bool MechanismNamed(const std::vector<CandidateEffect>& candidates, int c) const {
+    return std::any_of(named.begin(), named.end(), [&](int n) {
+      return SameMechanism(candidates[n].mechanism, candidates[c].mechanism);
+    });
+  }
   bool Named(int c) const { return std::find(named.begin(), named.end(), c) != named.end(); }
   bool Revalued(int c) const {
     return std::any_of(revalued.begin(), revalued.end(),
