@@ -33,7 +33,8 @@ SettleResult RunUntilSettled(core::Simulation& sim, const SettleCriteria& criter
   const double earliest = criteria.feed_end_s + criteria.min_settle_s;
   // Expected end for the progress display: the pour plus a short settle, then followed by the
   // kinetic energy's decay (settle_eta.h).
-  SettleEta eta(earliest, earliest + 0.3, criteria.specific_kinetic_J_kg, criteria.max_time_s);
+  SettleEta eta(earliest, criteria.expected_end_s > 0 ? criteria.expected_end_s : earliest + 0.3,
+                criteria.specific_kinetic_J_kg, criteria.max_time_s);
   bool settled = false;
   SurfaceGrid window_start;
   double window_start_s = -1;

@@ -22,6 +22,9 @@ struct SettleCriteria {
   double specific_kinetic_J_kg = 1e-5;   // KE / mass of the moving particles below this
   double check_interval_s = 0.01;        // of simulated time
   double max_time_s = 10;                // give up (status "not_settled")
+  // The end the progress display assumes until the pour is over (0: the pour's end + 0.3 s,
+  // a heap poured straight onto its base).
+  double expected_end_s = 0;
   // The surface criterion (0: off). 0.1 s is ~7 free-fall times √(d/g) of a 2 mm grain, so a
   // window sees any avalanche still running; 0.02 d per window: on a flank ~30 d long that
   // tilts a fitted repose angle by < 0.04° per window, far below the replicate spread of the

@@ -43,3 +43,26 @@ TEST_CASE("SettleEta stays within [now, max_time]", "[objectives][settle]") {
   below.ExpectedEndS(0.0, 2e-6);
   CHECK(below.ExpectedEndS(0.1, 1e-6) == Approx(0.1));
 }
+
+// A heap fed through a funnel: the energy holds while the funnel drains, then decays. Guessing
+// the hard stop from the start (segregation with a funnel), the shown fraction t / end never
+// falls back; guessing the pour's end, it falls back when the pour ends.
+TEST_CASE("SettleEta from the hard stop: the progress fraction only moves forward",
+          "[objectives][settle]") {
+  const double pour_end = 1.5, drained = 3.5, max_time = 6;
+  auto energy = [&](double t) {
+    return t < drained ? 0.05 : 0.05 * std::exp(-6 * (t - drained));
+  };
+  SettleEta from_stop(pour_end, max_time, 1e-5, max_time), from_pour(pour_end, pour_end + 0.3, 1e-5, max_time);
+  double last_stop = 0, last_pour = 0;
+  bool fell_back = false;
+  for (double t = 0.01; t < 5; t += 0.01) {
+    const double e = t < pour_end ? NAN : energy(t);
+    const double f_stop = t / from_stop.ExpectedEndS(t, e), f_pour = t / from_pour.ExpectedEndS(t, e);
+    CHECK(f_stop >= last_stop - 1e-12);
+    fell_back = fell_back || f_pour < last_pour - 0.2;
+    last_stop = f_stop;
+    last_pour = f_pour;
+  }
+  CHECK(fell_back);
+}
