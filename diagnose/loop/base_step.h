@@ -14,7 +14,9 @@
 // solved again (an active set; at most one pass per coordinate).
 //
 //   const BaseStep s = LinearisedBaseStep(at, base.base_unit, base.jacobian, base.jacobian_sigma);
-//   if (s.ok && s.chi2_now - s.chi2_predicted > margin) ...simulate s.unit...;
+//   if (s.ok && s.chi2_now - s.chi2_predicted >
+//                   BaseStepThreshold(s.rank, s.max_noise_per_sigma, significance))
+//     ...simulate s.unit...;  // base_fit.h
 //
 // Thread-safety: a pure function.
 #include <vector>
