@@ -23,7 +23,8 @@ void ReplicateProgress::Update(int replicate, double simulated_s, double expecte
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   std::lock_guard<std::mutex> lock(mutex_);
   if (expected_end_s > 0)
-    fraction_[replicate] = std::clamp(simulated_s / expected_end_s, 0.0, 0.99);
+    fraction_[replicate] =
+        std::max(fraction_[replicate], std::clamp(simulated_s / expected_end_s, 0.0, 0.99));
   if (elapsed - last_print_s_ < interval_s_) return;
   last_print_s_ = elapsed;
   PrintLocked(elapsed);

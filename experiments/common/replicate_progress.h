@@ -3,7 +3,10 @@
 // side, e.g.
 //   [demcal] aor: 2/4 replicates done, 63.0%  elapsed 21.4 s  ETA 12.6 s
 // Each replicate reports its own fraction (simulated time over its expected end); the line
-// shows their mean and assumes the rate so far continues. At most one line per interval.
+// shows their mean and assumes the rate so far continues. At most one line per interval. A
+// replicate's fraction never falls back: its expected end can move later (a settling heap whose
+// energy stops decaying for a while, settle_eta.h), and a percentage that drops from 86 % to
+// 44 % tells a user less than one that holds while the ETA, elapsed × (1 − f) / f, grows.
 //
 // Thread-safety: Update and Finish may be called from any replicate's thread.
 #include <chrono>
