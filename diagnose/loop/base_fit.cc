@@ -50,14 +50,13 @@ void CheckStagnatedOptimum(ForwardModel& model, const std::vector<Observation>& 
                            double floor_factor, double significance, BaseFit* b) {
   int simulated = 0;
   while (simulated < kMaxBaseSteps) {
-    const std::vector<Observation> at =
-        WithPrediction(observations, b->base.prediction, floor_factor);
-    const double chi2_now = BaseChi2(at).chi2;
     const BaseStep step =
-        LinearisedBaseStep(at, b->base.base_unit, b->base.jacobian, b->base.jacobian_sigma);
+        LinearisedBaseStep(WithPrediction(observations, b->base.prediction, floor_factor),
+                           b->base.base_unit, b->base.jacobian, b->base.jacobian_sigma);
+    const double chi2_now = step.chi2_now;  // BaseChi2's χ², the same Σ r²
     const double threshold =
         BaseStepThreshold(step.rank, step.max_noise_per_sigma, significance);
-    if (!step.ok || step.rank < 1 || chi2_now - step.chi2_predicted <= threshold)
+    if (!step.ok || chi2_now - step.chi2_predicted <= threshold)
       return;  // the linearisation sees no drop beyond noise: the stagnated fit stands
     bool moved = false;
     for (const double fraction : {1.0, 0.5}) {  // the whole step, then half (a damped retry)
