@@ -25,10 +25,11 @@ import argparse
 import copy
 import csv
 import json
-import math
 import os
 import subprocess
 import sys
+
+from heap_runs import cpu_seconds, mean_sem
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 AOR_EXAMPLE = os.path.join(REPO, "examples", "aor_bp.json")
@@ -58,16 +59,6 @@ def variant(arm):
     return exp
 
 
-def cpu_seconds(err_file):
-    try:
-        text = open(err_file).read()
-    except OSError:
-        return float("nan")
-    found = [float(l.split(":")[1]) for l in text.splitlines()
-             if l.strip().startswith(("User time", "System time"))]
-    return sum(found) if found else float("nan")
-
-
 def run_arm(demcal, out, arm):
     folder = os.path.join(out, arm)
     if os.path.exists(os.path.join(folder, "result.json")):
@@ -77,14 +68,6 @@ def run_arm(demcal, out, arm):
     with open(os.path.join(out, arm + ".err"), "w") as err:
         subprocess.run(["/usr/bin/time", "-v", demcal, "experiment", "aor", params, "--out", folder,
                         "--quick", "--threads", "1", "--quiet"], stderr=err, check=False)
-
-
-def mean_sem(xs):
-    xs = [x for x in xs if isinstance(x, (int, float)) and math.isfinite(x)]
-    if len(xs) < 2:
-        return (xs[0] if xs else float("nan")), float("nan")
-    m = sum(xs) / len(xs)
-    return m, math.sqrt(sum((x - m) ** 2 for x in xs) / (len(xs) - 1) / len(xs))
 
 
 def summarise(out, arms):

@@ -41,12 +41,12 @@ OUT/arms.csv (mean +- sem per arm) from every finished run; `--summary-only` jus
 import argparse
 import csv
 import json
-import math
 import os
-import re
 import subprocess
 import sys
 from concurrent.futures import ThreadPoolExecutor
+
+from heap_runs import cpu_seconds, mean_sem
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXAMPLE = os.path.join(REPO, "examples", "segregation_paper.json")
@@ -143,16 +143,6 @@ def variant(arm):
     return exp
 
 
-def cpu_s(time_log):
-    try:
-        text = open(time_log).read()
-    except OSError:
-        return float("nan")
-    u = re.search(r"User time \(seconds\): ([0-9.]+)", text)
-    s = re.search(r"System time \(seconds\): ([0-9.]+)", text)
-    return float(u.group(1)) + float(s.group(1)) if u and s else float("nan")
-
-
 def run_one(demcal, out, arm, seed):
     d = os.path.join(out, arm, f"s{seed}")
     if os.path.exists(os.path.join(d, "result.json")):
@@ -175,7 +165,7 @@ def rows_of(out, arm, seed):
         res = json.load(open(os.path.join(d, "result.json")))
     except (OSError, ValueError):
         return []
-    cpu = cpu_s(os.path.join(d, "time.txt")) / len(res["runs"])  # per heap
+    cpu = cpu_seconds(os.path.join(d, "time.txt")) / len(res["runs"])  # per heap
     return [row(arm, seed, r, cpu) for r in res["runs"]]
 
 
@@ -189,16 +179,6 @@ def row(arm, seed, r, cpu):
             "funnel_orifice_diameter_m": g("funnel_orifice_diameter_m"),
             "heap_height_m": g("heap_height_m"), "heap_base_width_m": g("heap_base_width_m"),
             "particles": g("particles"), "settle_time_s": g("settle_time_s"), "cpu_s": cpu}
-
-
-def mean_sem(xs):
-    xs = [x for x in xs if isinstance(x, (int, float)) and math.isfinite(x)]
-    if not xs:
-        return float("nan"), float("nan")
-    m = sum(xs) / len(xs)
-    if len(xs) < 2:
-        return m, float("nan")
-    return m, math.sqrt(sum((x - m) ** 2 for x in xs) / (len(xs) - 1) / len(xs))
 
 
 def summarise(out, arms, seeds):
