@@ -23,13 +23,12 @@ OUT/arms.csv (mean +- sem per arm). Results and reading: docs/experiments/segreg
 """
 import argparse
 import copy
-import csv
 import json
 import os
 import subprocess
 import sys
 
-from heap_runs import cpu_seconds, mean_sem
+from heap_runs import cpu_seconds, write_tables
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 AOR_EXAMPLE = os.path.join(REPO, "examples", "aor_bp.json")
@@ -87,20 +86,8 @@ def summarise(out, arms):
                          "cpu_s_per_heap": cpu})
     if not rows:
         return
-    with open(os.path.join(out, "runs.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
-    keys = ["angle_deg", "heap_height_m", "particles", "cpu_s_per_heap"]
-    with open(os.path.join(out, "arms.csv"), "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(["arm", "heaps"] + [k + s for k in keys for s in ("", "_sem")])
-        for arm in arms:
-            rs = [r for r in rows if r["arm"] == arm and r["status"] == "ok"]
-            if rs:
-                w.writerow([arm, len(rs)] + [f"{v:.4g}" for k in keys
-                                             for v in mean_sem([r[k] for r in rs])])
-    print(open(os.path.join(out, "arms.csv")).read())
+    write_tables(out, rows, arms, ["angle_deg", "heap_height_m", "particles", "cpu_s_per_heap"],
+                 keep=lambda r: r["status"] == "ok")
 
 
 def main():

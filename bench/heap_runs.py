@@ -1,6 +1,8 @@
 """Helpers shared by the heap benchmark scripts (mixture_angle_confinement.py,
-clump_heap_size.py): the CPU time of a run from its `/usr/bin/time -v` log, and the mean with its
-standard error over replicate heaps."""
+clump_heap_size.py): the CPU time of a run from its `/usr/bin/time -v` log, the mean with its
+standard error over replicate heaps, and the runs.csv / arms.csv tables."""
+import csv
+import os
 import math
 import re
 
@@ -25,3 +27,21 @@ def mean_sem(xs):
     if len(xs) < 2:
         return m, float("nan")
     return m, math.sqrt(sum((x - m) ** 2 for x in xs) / (len(xs) - 1) / len(xs))
+
+
+def write_tables(out, rows, arms, keys, keep=lambda row: True):
+    """OUT/runs.csv (every row) and OUT/arms.csv (per arm, over the rows `keep` accepts: the
+    count, and mean and standard error of each key); prints arms.csv."""
+    with open(os.path.join(out, "runs.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+    with open(os.path.join(out, "arms.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["arm", "heaps"] + [k + suffix for k in keys for suffix in ("", "_sem")])
+        for arm in arms:
+            rs = [r for r in rows if r["arm"] == arm and keep(r)]
+            if rs:
+                w.writerow([arm, len(rs)] + [f"{v:.4g}" for k in keys
+                                             for v in mean_sem([r[k] for r in rs])])
+    print(open(os.path.join(out, "arms.csv")).read())

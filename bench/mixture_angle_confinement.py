@@ -39,14 +39,13 @@ OUT/arms.csv (mean +- sem per arm) from every finished run; `--summary-only` jus
   python3 bench/mixture_angle_confinement.py build/apps/demcal OUT [--arms a,b] [--seeds 2018,2019]
 """
 import argparse
-import csv
 import json
 import os
 import subprocess
 import sys
 from concurrent.futures import ThreadPoolExecutor
 
-from heap_runs import cpu_seconds, mean_sem
+from heap_runs import cpu_seconds, write_tables
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXAMPLE = os.path.join(REPO, "examples", "segregation_paper.json")
@@ -185,21 +184,8 @@ def summarise(out, arms, seeds):
     rows = [r for a in arms for s in seeds for r in rows_of(out, a, s)]
     if not rows:
         return
-    with open(os.path.join(out, "runs.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
-    keys = ["angle_deg", "discharge_time_s", "funnel_mass_flow_kg_s", "heap_height_m",
-            "cpu_s"]
-    with open(os.path.join(out, "arms.csv"), "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(["arm", "heaps"] + [k + suffix for k in keys for suffix in ("", "_sem")])
-        for a in arms:
-            rs = [r for r in rows if r["arm"] == a]
-            if rs:
-                stats = [v for k in keys for v in mean_sem([r[k] for r in rs])]
-                w.writerow([a, len(rs)] + [f"{v:.4g}" for v in stats])
-    print(open(os.path.join(out, "arms.csv")).read())
+    write_tables(out, rows, arms, ["angle_deg", "discharge_time_s", "funnel_mass_flow_kg_s",
+                                   "heap_height_m", "cpu_s"])
 
 
 def main():
