@@ -2,8 +2,8 @@
 clump_heap_size.py): the CPU time of a run from its `/usr/bin/time -v` log, the mean with its
 standard error over replicate heaps, and the runs.csv / arms.csv tables."""
 import csv
-import os
 import math
+import os
 import re
 
 
