@@ -55,6 +55,17 @@ void SetSpeciesClump(nlohmann::ordered_json* experiment, const std::string& name
   }
 }
 
+bool SetFunnelOrificeRule(nlohmann::ordered_json* experiment, double effective_orifice_diameter_m,
+                          double beverloo_k) {
+  nlohmann::ordered_json& funnel = (*experiment)["segregation"]["funnel"];
+  if (funnel.is_boolean() && !funnel.get<bool>()) return false;
+  if (!funnel.is_object()) funnel = nlohmann::ordered_json::object();  // true: the defaults
+  funnel.erase("orifice_diameter_m");  // the file format refuses a fixed orifice beside the rule
+  funnel["effective_orifice_diameter_m"] = effective_orifice_diameter_m;
+  funnel["beverloo_k"] = beverloo_k;
+  return true;
+}
+
 double PairProperty(const nlohmann::ordered_json& experiment, const std::string& a,
                     const std::string& b, const std::string& key, double fallback) {
   if (!experiment.contains("interactions")) return fallback;

@@ -38,6 +38,12 @@ void SetPairProperty(nlohmann::ordered_json* experiment, const std::string& a, c
 void SetSpeciesClump(nlohmann::ordered_json* experiment, const std::string& name,
                      const std::vector<double>& semi_axes, int count);
 
+// Replaces a segregation file's funnel orifice with the fidelity rule D = effective + k d_max
+// (experiments/segregation/funnel_geometry.h), keeping the funnel's other dimensions. False
+// (nothing changed) when the file pours without a funnel ("funnel": false).
+bool SetFunnelOrificeRule(nlohmann::ordered_json* experiment, double effective_orifice_diameter_m,
+                          double beverloo_k);
+
 // The pair's `key`, or the interactions.default's, or `fallback`.
 double PairProperty(const nlohmann::ordered_json& experiment, const std::string& a,
                     const std::string& b, const std::string& key, double fallback);

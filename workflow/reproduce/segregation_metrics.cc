@@ -186,6 +186,8 @@ nlohmann::json SegregationSummaryValues(const nlohmann::json& scenarios, const s
         "tracked_after_impact_specific_kinetic_J_kg", "tracked EP: mean 1/2 v^2, 20 ms after impact");
     put("ep_bp_contacts_per_grain" + tail, s, "tracked_major_contacts_per_grain",
         "settled heap: BP grains touching each EP grain");
+    put("ep_axis_offset" + tail, s, "tracked_axis_offset_fraction",
+        "settled heap: EP's mean distance from the axis over BP's, minus 1 (< 0 centre, > 0 toes)");
   }
   put("ep_impact_specific_kinetic_J_kg", "uncoated", "impact_specific_kinetic_J_kg",
       "mean peak over the tracked granules");

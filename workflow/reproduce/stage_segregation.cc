@@ -52,6 +52,12 @@ bool BuildScenarios(const ReproduceContext& ctx, std::vector<Scenario>* out, std
     fidelity["size_scale"] = w.segregation.size_scale;
     fidelity["stiffness_scale"] = w.segregation.stiffness_scale;
   }
+  if (w.segregation.funnel_effective_orifice_diameter_m > 0 &&  // the workflow's orifice rule
+      !SetFunnelOrificeRule(&base, w.segregation.funnel_effective_orifice_diameter_m,
+                            w.segregation.funnel_beverloo_k))
+    return *error = w.source + ": segregation.funnel_orifice is given but '" +
+                    w.segregation.experiment_file + "' pours without a funnel (\"funnel\": false)",
+           false;
   for (const auto& [name, s] : ctx.results["species"]["species"].items()) {
     if (s["value"].is_number())
       SetPairProperty(&base, name, name, s["property"].get<std::string>(),

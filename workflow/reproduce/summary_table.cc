@@ -41,6 +41,7 @@ const std::vector<std::string>& ReferenceKeys() {
       "ep_after_impact_specific_kinetic_coated_J_kg",
       "ep_after_impact_specific_kinetic_excessive_J_kg", "ep_bp_contacts_per_grain_uncoated",
       "ep_bp_contacts_per_grain_coated", "ep_bp_contacts_per_grain_excessive",
+      "ep_axis_offset_uncoated", "ep_axis_offset_coated", "ep_axis_offset_excessive",
       // stage 7: fidelity check
       "fidelity_angle_shift_deg"};
   return keys;

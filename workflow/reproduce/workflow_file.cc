@@ -175,7 +175,8 @@ void ParseCohesion(const nlohmann::json& j, const std::string& path,
 void ParseSegregation(const nlohmann::json& j, const std::string& path, const std::string& file,
                       WorkflowSegregation* s, JsonStatus* status) {
   JsonFields f(j, path, {"experiment_file", "replicates", "quick_replicates", "coated_wt_pct",
-                         "excessive_gamma_J_m2", "size_scale", "stiffness_scale", "enabled"},
+                         "excessive_gamma_J_m2", "size_scale", "stiffness_scale",
+                         "funnel_orifice", "enabled"},
                status);
   f.Number("size_scale", &s->size_scale, kOptional, Range::Of(limits::kSizeScale));
   f.Number("stiffness_scale", &s->stiffness_scale, kOptional, Range::Of(limits::kStiffnessScale));
@@ -194,6 +195,15 @@ void ParseSegregation(const nlohmann::json& j, const std::string& path, const st
   f.Number("excessive_gamma_J_m2", &s->excessive_gamma_J_m2, kOptional,
            Range::LeftOpen(0, 10, "J/m2"));
   f.Bool("enabled", &s->enabled, kOptional);
+  if (const nlohmann::json* o = f.Object("funnel_orifice", kOptional); o && status->ok()) {
+    // The same ranges as the experiment file's funnel (segregation_section.cc).
+    JsonFields g(*o, path + ".funnel_orifice", {"effective_orifice_diameter_m", "beverloo_k", "note"},
+                 status);
+    g.Number("effective_orifice_diameter_m", &s->funnel_effective_orifice_diameter_m, kRequired,
+             Range::Open(0, 10, "m"));
+    g.Number("beverloo_k", &s->funnel_beverloo_k, kRequired, Range{0, 3, false, true, ""});
+    g.String("note", &s->funnel_note, kRequired);
+  }
 }
 
 void ParseFidelityCheck(const nlohmann::json& j, const std::string& path,

@@ -68,6 +68,12 @@ struct WorkflowSegregation {
   // > 0: the default fidelity's coarse-graining and stiffness factor, replacing the experiment
   // file's (its quick fidelity stays); 0: the file's own.
   double size_scale = 0, stiffness_scale = 0;
+  // > 0: the funnel's orifice rule (funnel_geometry.h) replacing the experiment file's, for
+  // grains that meter differently from those the file's rule was fitted on ("funnel_orifice":
+  // effective_orifice_diameter_m, beverloo_k, note).
+  double funnel_effective_orifice_diameter_m = 0;
+  double funnel_beverloo_k = 0;
+  std::string funnel_note;  // where the rule comes from
   bool enabled = true;
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "experiments/segregation/mechanism/axis_offset.h"
 #include "experiments/segregation/mechanism/contacts_per_grain.h"
 #include "experiments/segregation/mechanism/impact_kinetic_energy.h"
 #include "experiments/segregation/mechanism/landing_depth.h"
@@ -34,6 +35,12 @@ std::optional<double> MajorContacts(const SegregationRun& run, const Segregation
   return ContactsPerGrain(run.heap, s.TrackedSpecies(), major, {});
 }
 
+std::optional<double> Offset(const SegregationRun& run, const SegregationSettings& s) {
+  const int major = MajorSpecies(s);
+  if (major < 0) return std::nullopt;
+  return AxisOffset(run.heap, s.TrackedSpecies(), major);
+}
+
 }  // namespace
 
 const std::vector<MechanismObservable>& MechanismObservables() {
@@ -49,6 +56,10 @@ const std::vector<MechanismObservable>& MechanismObservables() {
        "settled heap: grains of the major species touching each grain of the tracked species "
        "(EP-BP contacts per EP grain in the paper's mixture)",
        &MajorContacts},
+      {"tracked_axis_offset_fraction",
+       "settled heap: the tracked species' mean distance from the heap's axis over the major "
+       "species', minus 1 (< 0 in the centre, > 0 toward the toes; section 3.5)",
+       &Offset},
   };
   return list;
 }

@@ -1,8 +1,9 @@
 // The paper's mechanism observables (section 3.5, Figs. 17, 19) on hand-made states: the landing
-// depth, the specific kinetic energy after the first impact and the contacts per grain, each
-// worked out by hand from the constructed samples or spheres.
+// depth, the specific kinetic energy after the first impact, the contacts per grain and the
+// offset from the heap's axis, each worked out by hand from the constructed samples or grains.
 #include <catch2/catch.hpp>
 
+#include "experiments/segregation/mechanism/axis_offset.h"
 #include "experiments/segregation/mechanism/contacts_per_grain.h"
 #include "experiments/segregation/mechanism/impact_kinetic_energy.h"
 #include "experiments/segregation/mechanism/landing_depth.h"
@@ -78,8 +79,10 @@ Snapshot HandMadeHeap() {
   Snapshot s;
   const int kEp = 2, kBp = 0, kTaed = 1;
   const int species[] = {kEp, kBp, kBp, kBp, kTaed, kEp};
+  const double x[] = {0, 0.001999, 0, -0.0021, 0, 0.05};  // the grains' centres along x
   for (int k = 0; k < 6; ++k)
-    s.grains.push_back({.id = k, .species = species[k], .radius_m = 0.001});
+    s.grains.push_back({.id = k, .species = species[k], .position_m = {x[k], 0, 0},
+                        .radius_m = 0.001, .mass_kg = 1e-6});
   s.spheres = {{{0, 0, 0}, 0.001, 0},
                {{0.001999, 0, 0}, 0.001, 1},
                {{0, 0.0015, 0.0013}, 0.001, 2},
@@ -100,6 +103,36 @@ TEST_CASE("contacts per grain: partner grains touching, each clump once", "[unit
   CHECK_FALSE(ContactsPerGrain(heap, 7, 0, {}));
 }
 
+// BP grains at x = c ± 1 mm and c ± 3 mm (mean distance 2 mm from the axis at c).
+Snapshot Row(const std::vector<double>& ep_offsets_mm) {
+  Snapshot s;
+  const double c = 0.1;
+  int64_t id = 0;
+  for (double dx : {-3.0, -1.0, 1.0, 3.0})
+    s.grains.push_back({.id = id++, .species = 0, .position_m = {c + dx / 1000, 0, 0},
+                        .mass_kg = 1e-6});
+  for (double dx : ep_offsets_mm)
+    s.grains.push_back({.id = id++, .species = 2, .position_m = {c + dx / 1000, 0, 0},
+                        .mass_kg = 1e-6});
+  return s;
+}
+
+TEST_CASE("axis offset: the tracked grains' distance from the heap's axis over the bulk's",
+          "[unit]") {
+  // Centred EP (|x| 1 mm against BP's 2 mm): −0.5; at the toes (4 mm): +1; spread as BP: 0.
+  CHECK(*AxisOffset(Row({-1, 1}), 2, 0) == Approx(-0.5));
+  CHECK(*AxisOffset(Row({-4, 4}), 2, 0) == Approx(1.0));
+  CHECK(*AxisOffset(Row({-3, -1, 1, 3}), 2, 0) == Approx(0.0).margin(1e-12));
+  // The axis is the heap's centre of mass: an EP grain at +4 mm as heavy as the four BP pulls it
+  // to +2 mm; the BP grains are then 5, 3, 1, 1 mm away (mean 2.5) and the EP grain 2 mm.
+  Snapshot heavy = Row({4});
+  heavy.grains.back().mass_kg = 4e-6;  // as heavy as the four BP: centre (4 × 4 mm) / 8
+  CHECK(*AxisOffset(heavy, 2, 0) == Approx(2.0 / 2.5 - 1));
+  // No tracked or no major grain: no value.
+  CHECK_FALSE(AxisOffset(Row({}), 2, 0));
+  CHECK_FALSE(AxisOffset(Row({1}), 2, 7));
+}
+
 TEST_CASE("mechanism registry: unit in every name, per-run values from the run's own state",
           "[unit]") {
   SegregationSettings settings;
@@ -112,16 +145,19 @@ TEST_CASE("mechanism registry: unit in every name, per-run values from the run's
   run.tracked[1].impact_sample.reset();  // no impact: no value; the mean is over the other
   for (const MechanismObservable& o : MechanismObservables()) {
     const std::string name = o.name;
-    CHECK((name.ends_with("_m") || name.ends_with("_J_kg") || name.ends_with("_per_grain")));
+    CHECK((name.ends_with("_m") || name.ends_with("_J_kg") || name.ends_with("_per_grain") ||
+           name.ends_with("_fraction")));
     const std::optional<double> v = o.per_run(run, settings);
     REQUIRE(v);
     if (name == "tracked_landing_depth_m") CHECK(*v == Approx(0.0035).margin(1e-12));
     if (name == "tracked_major_contacts_per_grain") CHECK(*v == Approx(1.0));
+    if (name == "tracked_axis_offset_fraction")
+      CHECK(*v == Approx(*AxisOffset(run.heap, 2, 0)));
     // Impact at sample 2 (t = 0.104 s); samples 2..6 lie within its 20 ms window.
     if (name == "tracked_after_impact_specific_kinetic_J_kg")
       CHECK(*v == Approx((0.08 + 0.02 + 0.02 + 0.00005 + 0) / 5));
   }
-  CHECK(MechanismObservables().size() == 3);
+  CHECK(MechanismObservables().size() == 4);
 }
 
 }  // namespace

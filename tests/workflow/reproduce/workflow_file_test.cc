@@ -70,6 +70,21 @@ TEST_CASE("workflow file errors name the file, the key and the allowed values", 
       {[](nlohmann::json& d) { d["segregation"].erase("stiffness_scale"); },
        "segregation.stiffness_scale' must be given together with size_scale"},
       {[](nlohmann::json& d) { d["segregation"]["size_scale"] = 0.5; }, "segregation.size_scale"},
+      {[](nlohmann::json& d) {
+         d["segregation"]["funnel_orifice"] = {{"effective_orifice_diameter_m", -0.01},
+                                               {"beverloo_k", 0.5}, {"note", "n"}};
+       },
+       "segregation.funnel_orifice.effective_orifice_diameter_m"},
+      {[](nlohmann::json& d) {
+         d["segregation"]["funnel_orifice"] = {{"effective_orifice_diameter_m", 0.012},
+                                               {"beverloo_k", 4}, {"note", "n"}};
+       },
+       "segregation.funnel_orifice.beverloo_k"},
+      {[](nlohmann::json& d) {
+         d["segregation"]["funnel_orifice"] = {{"effective_orifice_diameter_m", 0.012},
+                                               {"beverloo_k", 0.5}};
+       },
+       "segregation.funnel_orifice.note"},
       {[](nlohmann::json& d) { d["unexpected"] = 1; }, "unexpected"},
   };
   for (const Case& c : cases) {

@@ -1,0 +1,119 @@
+#!/usr/bin/env python3
+"""The calibrated clumps through the segregation funnel: which orifice meters them, and does
+coating change the heap there?
+
+Takes the scenario files a clumps workflow wrote (`demcal reproduce
+datasets/alizadeh2018/workflow_clumps.json --out WF`: WF/segregation/{uncoated,coated,excessive}/
+experiment.json, carrying the calibrated shapes and Γ) and runs each arm as one quick heap per
+seed (`demcal experiment segregation FILE --quick --replicates 1 --threads 1`, the seed in FILE's
+"seed", under `nice -n 5`, JOBS at a time, default 2). An arm is SCENARIO@ORIFICE_MM: the
+scenario's file with the funnel's orifice fixed at ORIFICE_MM (the fidelity rule off), e.g.
+uncoated@15.45. Seeds are paired across arms (one seed pours one feed). Resumable: a run whose
+result.json exists is skipped. Writes OUT/runs.csv (one row per heap: angle, funnel, EP's
+segregation and the paper's mechanism observables) and OUT/arms.csv (mean ± sem per arm);
+`--summary-only` just rewrites them. Reading: docs/experiments/segregation_funnel.md.
+
+  python3 bench/clump_funnel.py build/apps/demcal WF OUT --arms uncoated@15.45,coated@15.45 \
+      [--seeds 2018,2019,2020] [--jobs 2]
+"""
+import argparse
+import json
+import os
+import subprocess
+from concurrent.futures import ThreadPoolExecutor
+
+from heap_runs import cpu_seconds, write_tables
+
+SCENARIOS = ("uncoated", "coated", "excessive")
+KEYS = ["angle_deg", "discharge_time_s", "funnel_mass_flow_kg_s", "ep_cov_3d", "ep_cov_3d_floor",
+        "ep_s_n_3d", "ep_landing_depth_m", "ep_after_impact_J_kg", "ep_major_contacts",
+        "ep_axis_offset", "cpu_s"]
+
+
+def parse_arm(arm):
+    scenario, _, mm = arm.partition("@")
+    if scenario not in SCENARIOS or not mm:
+        raise SystemExit(f"arm {arm!r}: expected SCENARIO@ORIFICE_MM with SCENARIO in {SCENARIOS}")
+    return scenario, float(mm)
+
+
+def variant(workflow_out, arm, seed):
+    scenario, mm = parse_arm(arm)
+    exp = json.load(open(os.path.join(workflow_out, "segregation", scenario, "experiment.json")))
+    exp["description"] = (f"bench/clump_funnel.py arm {arm}: the clumps workflow's {scenario} "
+                          f"scenario with a fixed {mm} mm orifice. " + exp.get("description", ""))
+    exp["seed"] = seed
+    funnel = exp["segregation"]["funnel"]
+    funnel.pop("effective_orifice_diameter_m", None)
+    funnel.pop("beverloo_k", None)
+    funnel["orifice_diameter_m"] = mm / 1000
+    return exp
+
+
+def run_one(demcal, workflow_out, out, arm, seed):
+    d = os.path.join(out, arm, f"s{seed}")
+    if os.path.exists(os.path.join(d, "result.json")):
+        return
+    os.makedirs(d, exist_ok=True)
+    path = os.path.join(d, "experiment.json")
+    json.dump(variant(workflow_out, arm, seed), open(path, "w"), indent=1)
+    cmd = ["nice", "-n", "5", "/usr/bin/time", "-v", "-o", os.path.join(d, "time.txt"), demcal,
+           "experiment", "segregation", path, "--out", d, "--quick", "--replicates", "1",
+           "--threads", "1"]
+    with open(os.path.join(d, "log.txt"), "w") as log:
+        subprocess.run(cmd, stdout=log, stderr=subprocess.STDOUT)
+
+
+def rows_of(out, arm, seed):
+    d = os.path.join(out, arm, f"s{seed}")
+    try:
+        res = json.load(open(os.path.join(d, "result.json")))
+    except (OSError, ValueError):
+        return []
+    cpu = cpu_seconds(os.path.join(d, "time.txt"))
+    ep = next(s for s in res["species"] if s["species"] == "EP")
+    mech = res.get("mechanism", {})
+    r = res["runs"][0]
+    m = lambda x: x.get("mean", float("nan")) if isinstance(x, dict) else float("nan")
+    nan_if_none = lambda v: float("nan") if v is None else v
+    return [{"arm": arm, "seed": seed, "status": r["status"],
+             "angle_deg": nan_if_none(r.get("mixture_angle_deg")),
+             "discharge_time_s": nan_if_none(r.get("discharge_time_s")),
+             "funnel_regime": r.get("funnel_regime"),
+             "funnel_mass_flow_kg_s": nan_if_none(r.get("funnel_mass_flow_kg_s")),
+             "ep_grains": r["heap_grains_per_species"][2],
+             "ep_cov_3d": nan_if_none(m(ep["cov_3d"])),
+             "ep_cov_3d_floor": nan_if_none(m(ep["cov_3d_floor"])),
+             "ep_s_n_3d": nan_if_none(m(ep["s_n_3d"])),
+             "ep_landing_depth_m": nan_if_none(m(mech.get("tracked_landing_depth_m"))),
+             "ep_after_impact_J_kg": nan_if_none(m(mech.get("tracked_after_impact_specific_kinetic_J_kg"))),
+             "ep_major_contacts": nan_if_none(m(mech.get("tracked_major_contacts_per_grain"))),
+             "ep_axis_offset": nan_if_none(m(mech.get("tracked_axis_offset_fraction"))),
+             "settle_time_s": r.get("settle_time_s"), "cpu_s": cpu}]
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("demcal")
+    ap.add_argument("workflow_out")
+    ap.add_argument("out")
+    ap.add_argument("--arms", required=True)
+    ap.add_argument("--seeds", default="2018,2019,2020")
+    ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--summary-only", action="store_true")
+    a = ap.parse_args()
+    arms, seeds = a.arms.split(","), [int(s) for s in a.seeds.split(",")]
+    for arm in arms:
+        parse_arm(arm)
+    if not a.summary_only:
+        with ThreadPoolExecutor(a.jobs) as pool:
+            for f in [pool.submit(run_one, a.demcal, a.workflow_out, a.out, arm, s)
+                      for s in seeds for arm in arms]:
+                f.result()
+    rows = [r for arm in arms for s in seeds for r in rows_of(a.out, arm, s)]
+    if rows:
+        write_tables(a.out, rows, arms, KEYS)
+
+
+if __name__ == "__main__":
+    main()
