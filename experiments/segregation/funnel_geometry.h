@@ -19,9 +19,10 @@
 // 4 d_max in a slab barely wider than the orifice is near jamming, where the law holds only in
 // form. The bundled 13 mm + 0.5 d_max passes through the two orifices measured to meter the
 // same flow with the calibrated spheres (15.5 mm at size ×5, 10.3 g/s; 15 mm at ×4, 10.35 g/s);
-// k 1.5 gave 12.5 mm at ×3, which metered only 6.35 g/s. With the calibrated clumps the rule
-// gives 16.4 mm at ×5, which meters about the spheres' flow, where the sieve-equivalent 15.5 mm
-// was too slow and 17.3 mm passed the whole feed (docs/experiments/segregation_funnel.md).
+// k 1.5 gave 12.5 mm at ×3, which metered only 6.35 g/s. Near jamming the flow depends on the
+// grains' shape more than the mean caliper diameter carries: the rounder clumps of the clumps
+// workflow pass the whole feed through this rule's orifice, so that workflow gives its own
+// (workflow segregation.funnel_orifice, measured on its clumps; docs/experiments/segregation_funnel.md).
 //
 // The jam rule D > 3 d_max (segregation_experiment.cc, d_max the largest sieve-equivalent
 // diameter) holds at every size scale as long as effective_orifice_diameter_m > 3 d_max −
