@@ -19,10 +19,9 @@ segregation and the paper's mechanism observables) and OUT/arms.csv (mean ± sem
 import argparse
 import json
 import os
-import subprocess
 from concurrent.futures import ThreadPoolExecutor
 
-from heap_runs import cpu_seconds, write_tables
+from heap_runs import read_result, run_quick, write_tables
 
 SCENARIOS = ("uncoated", "coated", "excessive")
 KEYS = ["angle_deg", "discharge_time_s", "funnel_mass_flow_kg_s", "ep_cov_3d", "ep_cov_3d_floor",
@@ -57,20 +56,13 @@ def run_one(demcal, workflow_out, out, arm, seed):
     os.makedirs(d, exist_ok=True)
     path = os.path.join(d, "experiment.json")
     json.dump(variant(workflow_out, arm, seed), open(path, "w"), indent=1)
-    cmd = ["nice", "-n", "5", "/usr/bin/time", "-v", "-o", os.path.join(d, "time.txt"), demcal,
-           "experiment", "segregation", path, "--out", d, "--quick", "--replicates", "1",
-           "--threads", "1"]
-    with open(os.path.join(d, "log.txt"), "w") as log:
-        subprocess.run(cmd, stdout=log, stderr=subprocess.STDOUT)
+    run_quick(demcal, "segregation", path, d)
 
 
 def rows_of(out, arm, seed):
-    d = os.path.join(out, arm, f"s{seed}")
-    try:
-        res = json.load(open(os.path.join(d, "result.json")))
-    except (OSError, ValueError):
+    res, cpu = read_result(os.path.join(out, arm, f"s{seed}"))
+    if not res:
         return []
-    cpu = cpu_seconds(os.path.join(d, "time.txt"))
     ep = next(s for s in res["species"] if s["species"] == "EP")
     mech = res.get("mechanism", {})
     r = res["runs"][0]

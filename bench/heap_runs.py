@@ -1,10 +1,33 @@
 """Helpers shared by the heap benchmark scripts (mixture_angle_confinement.py,
-clump_heap_size.py): the CPU time of a run from its `/usr/bin/time -v` log, the mean with its
-standard error over replicate heaps, and the runs.csv / arms.csv tables."""
+clump_heap_size.py, clump_funnel.py): one timed quick experiment run and its result, the CPU
+time of a run from its `/usr/bin/time -v` log, the mean with its standard error over replicate
+heaps, and the runs.csv / arms.csv tables."""
 import csv
+import json
 import math
 import os
 import re
+import subprocess
+
+
+def run_quick(demcal, kind, params, folder, replicates=1):
+    """`demcal experiment KIND PARAMS --out FOLDER --quick --replicates N --threads 1` under
+    `nice -n 5` and `/usr/bin/time -v` (FOLDER/time.txt), its output in FOLDER/log.txt."""
+    cmd = ["nice", "-n", "5", "/usr/bin/time", "-v", "-o", os.path.join(folder, "time.txt"), demcal,
+           "experiment", kind, params, "--out", folder, "--quick", "--replicates", str(replicates),
+           "--threads", "1"]
+    with open(os.path.join(folder, "log.txt"), "w") as log:
+        subprocess.run(cmd, stdout=log, stderr=subprocess.STDOUT)
+
+
+def read_result(folder):
+    """FOLDER/result.json of a run_quick run and its CPU seconds per heap; (None, NaN) while the
+    run has not finished."""
+    try:
+        res = json.load(open(os.path.join(folder, "result.json")))
+    except (OSError, ValueError):
+        return None, float("nan")
+    return res, cpu_seconds(os.path.join(folder, "time.txt")) / max(1, len(res["runs"]))
 
 
 def cpu_seconds(time_log):

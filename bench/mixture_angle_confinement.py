@@ -41,11 +41,10 @@ OUT/arms.csv (mean +- sem per arm) from every finished run; `--summary-only` jus
 import argparse
 import json
 import os
-import subprocess
 import sys
 from concurrent.futures import ThreadPoolExecutor
 
-from heap_runs import cpu_seconds, write_tables
+from heap_runs import read_result, run_quick, write_tables
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXAMPLE = os.path.join(REPO, "examples", "segregation_paper.json")
@@ -148,24 +147,14 @@ def run_one(demcal, out, arm, seed):
         return
     os.makedirs(d, exist_ok=True)
     aor = arm.startswith("aor")
-    cmd = ["nice", "-n", "5", "/usr/bin/time", "-v", "-o", os.path.join(d, "time.txt"), demcal,
-           "experiment", "aor" if aor else "segregation",
-           os.path.join(out, "files", f"{arm}_s{seed}.json"),
-           "--out", d, "--quick",
-           "--replicates", str(AOR_REPLICATES if aor and "big" not in arm else 1),
-           "--threads", "1"]
-    with open(os.path.join(d, "log.txt"), "w") as log:
-        subprocess.run(cmd, stdout=log, stderr=subprocess.STDOUT)
+    run_quick(demcal, "aor" if aor else "segregation",
+              os.path.join(out, "files", f"{arm}_s{seed}.json"), d,
+              AOR_REPLICATES if aor and "big" not in arm else 1)
 
 
 def rows_of(out, arm, seed):
-    d = os.path.join(out, arm, f"s{seed}")
-    try:
-        res = json.load(open(os.path.join(d, "result.json")))
-    except (OSError, ValueError):
-        return []
-    cpu = cpu_seconds(os.path.join(d, "time.txt")) / len(res["runs"])  # per heap
-    return [row(arm, seed, r, cpu) for r in res["runs"]]
+    res, cpu = read_result(os.path.join(out, arm, f"s{seed}"))
+    return [row(arm, seed, r, cpu) for r in res["runs"]] if res else []
 
 
 def row(arm, seed, r, cpu):
