@@ -10,18 +10,19 @@ seed (`demcal experiment segregation FILE --quick --replicates 1 --threads 1`, t
 scenario's file with the funnel's orifice fixed at ORIFICE_MM (the fidelity rule off), e.g.
 uncoated@15.45. Seeds are paired across arms (one seed pours one feed). Resumable: a run whose
 result.json exists is skipped. Writes OUT/runs.csv (one row per heap: angle, funnel, EP's
-segregation and the paper's mechanism observables) and OUT/arms.csv (mean ± sem per arm);
-`--summary-only` just rewrites them. Reading: docs/experiments/segregation_funnel.md.
+segregation and the paper's mechanism observables), OUT/arms.csv (mean ± sem per arm) and
+OUT/paired.csv (each arm minus the first, seed by seed); `--summary-only` just rewrites them. Reading: docs/experiments/segregation_funnel.md.
 
   python3 bench/clump_funnel.py build/apps/demcal WF OUT --arms uncoated@15.45,coated@15.45 \
       [--seeds 2018,2019,2020] [--jobs 2]
 """
 import argparse
+import csv
 import json
 import os
 from concurrent.futures import ThreadPoolExecutor
 
-from heap_runs import read_result, run_quick, write_tables
+from heap_runs import mean_sem, read_result, run_quick, write_tables
 
 SCENARIOS = ("uncoated", "coated", "excessive")
 KEYS = ["angle_deg", "discharge_time_s", "funnel_mass_flow_kg_s", "ep_cov_3d", "ep_cov_3d_floor",
@@ -105,6 +106,24 @@ def main():
     rows = [r for arm in arms for s in seeds for r in rows_of(a.out, arm, s)]
     if rows:
         write_tables(a.out, rows, arms, KEYS)
+        write_paired(a.out, rows, arms)
+
+
+def write_paired(out, rows, arms):
+    """OUT/paired.csv: for each arm after the first, the per-seed difference arm − first arm of
+    every key (seeds where both finished ok), mean ± sem and z = mean / sem; one seed pours
+    one feed in every arm, so the feed's own scatter drops out of the difference."""
+    by = {(r["arm"], r["seed"]): r for r in rows if r["status"] == "ok"}
+    with open(os.path.join(out, "paired.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["arm", "minus", "seeds", "key", "difference", "sem", "z"])
+        for arm in arms[1:]:
+            seeds = sorted(s for (a, s) in by if a == arm and (arms[0], s) in by)
+            for k in KEYS:
+                m, e = mean_sem([by[(arm, s)][k] - by[(arms[0], s)][k] for s in seeds])
+                w.writerow([arm, arms[0], len(seeds), k, f"{m:.4g}", f"{e:.4g}",
+                            f"{m / e:.3g}" if e > 0 else "nan"])
+    print(open(os.path.join(out, "paired.csv")).read())
 
 
 if __name__ == "__main__":
