@@ -6,12 +6,14 @@ Takes the scenario files a clumps workflow wrote (`demcal reproduce
 datasets/alizadeh2018/workflow_clumps.json --out WF`: WF/segregation/{uncoated,coated,excessive}/
 experiment.json, carrying the calibrated shapes and Γ) and runs each arm as one quick heap per
 seed (`demcal experiment segregation FILE --quick --replicates 1 --threads 1`, the seed in FILE's
-"seed", under `nice -n 5`, JOBS at a time, default 2). An arm is SCENARIO@ORIFICE_MM: the
-scenario's file with the funnel's orifice fixed at ORIFICE_MM (the fidelity rule off), e.g.
-uncoated@15.45. Seeds are paired across arms (one seed pours one feed). Resumable: a run whose
+"seed", under `nice -n 5`, JOBS at a time, default 2). An arm is SCENARIO@ORIFICE_MM[xSIZE]: the
+scenario's file with the funnel's orifice fixed at ORIFICE_MM (the fidelity rule off), at the
+file's quick fidelity (size x5) or with its size scale replaced by SIZE, e.g. uncoated@15.45 or
+uncoated@14.95x4. Seeds are paired across arms (one seed pours one feed). Resumable: a run whose
 result.json exists is skipped. Writes OUT/runs.csv (one row per heap: angle, funnel, EP's
 segregation and the paper's mechanism observables), OUT/arms.csv (mean ± sem per arm) and
-OUT/paired.csv (each arm minus the first, seed by seed); `--summary-only` just rewrites them. Reading: docs/experiments/segregation_funnel.md.
+OUT/paired.csv (each arm minus the first, seed by seed); `--summary-only` just rewrites them.
+Reading: docs/experiments/segregation_funnel.md.
 
   python3 bench/clump_funnel.py build/apps/demcal WF OUT --arms uncoated@15.45,coated@15.45 \
       [--seeds 2018,2019,2020] [--jobs 2]
@@ -31,14 +33,19 @@ KEYS = ["angle_deg", "discharge_time_s", "funnel_mass_flow_kg_s", "ep_cov_3d", "
 
 
 def parse_arm(arm):
-    scenario, _, mm = arm.partition("@")
-    if scenario not in SCENARIOS or not mm:
-        raise SystemExit(f"arm {arm!r}: expected SCENARIO@ORIFICE_MM with SCENARIO in {SCENARIOS}")
-    return scenario, float(mm)
+    scenario, _, rest = arm.partition("@")
+    mm, _, size = rest.partition("x")
+    try:
+        if scenario not in SCENARIOS:
+            raise ValueError
+        return scenario, float(mm), float(size) if size else None
+    except ValueError:
+        raise SystemExit(f"arm {arm!r}: expected SCENARIO@ORIFICE_MM[xSIZE_SCALE] with SCENARIO "
+                         f"in {SCENARIOS}")
 
 
 def variant(workflow_out, arm, seed):
-    scenario, mm = parse_arm(arm)
+    scenario, mm, size = parse_arm(arm)
     exp = json.load(open(os.path.join(workflow_out, "segregation", scenario, "experiment.json")))
     exp["description"] = (f"bench/clump_funnel.py arm {arm}: the clumps workflow's {scenario} "
                           f"scenario with a fixed {mm} mm orifice. " + exp.get("description", ""))
@@ -47,6 +54,8 @@ def variant(workflow_out, arm, seed):
     funnel.pop("effective_orifice_diameter_m", None)
     funnel.pop("beverloo_k", None)
     funnel["orifice_diameter_m"] = mm / 1000
+    if size:
+        exp["quick_fidelity"]["size_scale"] = size
     return exp
 
 
