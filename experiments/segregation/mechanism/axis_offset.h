@@ -1,7 +1,9 @@
 #pragma once
-// Where the tracked species sits across the heap (Alizadeh et al. 2018, section 3.5, Fig. 17):
-// uncoated EP push into the heap where they land and collect in its centre, below the pour;
-// coated EP ride the moving surface layer down to the heap's toes (the paper's "corners").
+// Where the tracked species sits across the heap (Alizadeh et al. 2018, sections 3.1 and 3.5,
+// Figs. 9, 17, 20): uncoated EP push into the heap where they land and collect in its central
+// area, leaving the corners (the heap's toes) short of EP; coated EP ride the moving surface
+// layer and spread over the whole heap, corners included; with excessive adhesion EP carry BP
+// as agglomerates that avalanche and accumulate in the corners.
 // Measured on the settled heap as the tracked grains' mean horizontal distance from the heap's
 // axis relative to the major species' (BP's):
 //
