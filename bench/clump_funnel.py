@@ -16,7 +16,7 @@ OUT/paired.csv (each arm minus the first, seed by seed); `--summary-only` just r
 Reading: docs/experiments/segregation_funnel.md.
 
   python3 bench/clump_funnel.py build/apps/demcal WF OUT --arms uncoated@15.45,coated@15.45 \
-      [--seeds 2018,2019,2020] [--jobs 2]
+      [--seeds 2018,2019,2020] [--jobs 2] [--rolling-friction EP-BP=0.25 ...]
 """
 import argparse
 import csv
@@ -44,7 +44,15 @@ def parse_arm(arm):
                          f"in {SCENARIOS}")
 
 
-def variant(workflow_out, arm, seed):
+def set_pair(exp, a, b, key, value):
+    for p in exp["interactions"]["pairs"]:
+        if sorted(p["materials"]) == sorted([a, b]):
+            p[key] = value
+            return
+    exp["interactions"]["pairs"].append({"materials": [a, b], key: value})
+
+
+def variant(workflow_out, arm, seed, rolling=()):
     scenario, mm, size = parse_arm(arm)
     exp = json.load(open(os.path.join(workflow_out, "segregation", scenario, "experiment.json")))
     exp["description"] = (f"bench/clump_funnel.py arm {arm}: the clumps workflow's {scenario} "
@@ -56,16 +64,21 @@ def variant(workflow_out, arm, seed):
     funnel["orifice_diameter_m"] = mm / 1000
     if size:
         exp["quick_fidelity"]["size_scale"] = size
+    for pair in rolling:  # "A-B=VALUE": that pair's rolling friction
+        names, _, value = pair.partition("=")
+        a, _, b = names.partition("-")
+        set_pair(exp, a, b, "rolling_friction", float(value))
+        exp["description"] += f" Rolling friction {a}-{b} set to {value}."
     return exp
 
 
-def run_one(demcal, workflow_out, out, arm, seed):
+def run_one(demcal, workflow_out, out, arm, seed, rolling=()):
     d = os.path.join(out, arm, f"s{seed}")
     if os.path.exists(os.path.join(d, "result.json")):
         return
     os.makedirs(d, exist_ok=True)
     path = os.path.join(d, "experiment.json")
-    json.dump(variant(workflow_out, arm, seed), open(path, "w"), indent=1)
+    json.dump(variant(workflow_out, arm, seed, rolling), open(path, "w"), indent=1)
     run_quick(demcal, "segregation", path, d)
 
 
@@ -102,6 +115,8 @@ def main():
     ap.add_argument("--arms", required=True)
     ap.add_argument("--seeds", default="2018,2019,2020")
     ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--rolling-friction", action="append", default=[], metavar="A-B=VALUE",
+                    help="set a pair's rolling friction in every arm (repeatable; use another OUT)")
     ap.add_argument("--summary-only", action="store_true")
     a = ap.parse_args()
     arms, seeds = a.arms.split(","), [int(s) for s in a.seeds.split(",")]
@@ -109,7 +124,8 @@ def main():
         parse_arm(arm)
     if not a.summary_only:
         with ThreadPoolExecutor(a.jobs) as pool:
-            for f in [pool.submit(run_one, a.demcal, a.workflow_out, a.out, arm, s)
+            for f in [pool.submit(run_one, a.demcal, a.workflow_out, a.out, arm, s,
+                                  a.rolling_friction)
                       for s in seeds for arm in arms]:
                 f.result()
     rows = [r for arm in arms for s in seeds for r in rows_of(a.out, arm, s)]
