@@ -24,7 +24,7 @@ import json
 import os
 from concurrent.futures import ThreadPoolExecutor
 
-from heap_runs import mean_sem, read_result, run_quick, write_tables
+from heap_runs import mean_sem, read_result, run_quick, set_pair, write_tables
 
 SCENARIOS = ("uncoated", "coated", "excessive")
 KEYS = ["angle_deg", "discharge_time_s", "funnel_mass_flow_kg_s", "ep_cov_3d", "ep_cov_3d_floor",
@@ -42,14 +42,6 @@ def parse_arm(arm):
     except ValueError:
         raise SystemExit(f"arm {arm!r}: expected SCENARIO@ORIFICE_MM[xSIZE_SCALE] with SCENARIO "
                          f"in {SCENARIOS}")
-
-
-def set_pair(exp, a, b, key, value):
-    for p in exp["interactions"]["pairs"]:
-        if sorted(p["materials"]) == sorted([a, b]):
-            p[key] = value
-            return
-    exp["interactions"]["pairs"].append({"materials": [a, b], key: value})
 
 
 def variant(workflow_out, arm, seed, rolling=()):

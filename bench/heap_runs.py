@@ -68,3 +68,13 @@ def write_tables(out, rows, arms, keys, keep=lambda row: True):
                 w.writerow([arm, len(rs)] + [f"{v:.4g}" for k in keys
                                              for v in mean_sem([r[k] for r in rs])])
     print(open(os.path.join(out, "arms.csv")).read())
+
+
+def set_pair(exp, a, b, key, value):
+    """Sets `key` of the (a, b) pair in an experiment file's interactions.pairs (either order),
+    adding the pair when it is not listed."""
+    for p in exp["interactions"]["pairs"]:
+        if sorted(p["materials"]) == sorted([a, b]):
+            p[key] = value
+            return
+    exp["interactions"]["pairs"].append({"materials": [a, b], key: value})

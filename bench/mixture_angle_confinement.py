@@ -44,7 +44,7 @@ import os
 import sys
 from concurrent.futures import ThreadPoolExecutor
 
-from heap_runs import read_result, run_quick, write_tables
+from heap_runs import read_result, run_quick, set_pair, write_tables
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXAMPLE = os.path.join(REPO, "examples", "segregation_paper.json")
@@ -57,14 +57,6 @@ ARMS = ["sphere_base", "sphere_smooth", "sphere_deep", "sphere_bp", "clump_base"
         "aor_bp_clump_big", "aor_bp_clump_smooth", "aor_bp_clump_big_half"]
 AOR_EXAMPLE = os.path.join(REPO, "examples", "aor_bp.json")
 AOR_REPLICATES = 4
-
-
-def set_pair(exp, a, b, key, value):
-    for p in exp["interactions"]["pairs"]:
-        if sorted(p["materials"]) == sorted([a, b]):
-            p[key] = value
-            return
-    raise KeyError(f"no pair {a}-{b}")
 
 
 def smooth_walls(exp, section):
