@@ -3,12 +3,20 @@
 // the pour plus a short settle; after it the run lasts until the specific kinetic energy falls to
 // the threshold (or the surface stops moving, or max_time_s). A heap that drains a metering
 // funnel keeps moving for seconds after the feed ends, so a fixed guess leaves the display at
-// "99 %, ETA 5 s" for most of the run. The estimate follows the energy instead: over the last
-// window the energy decays at rate k = −d ln E / dt, so it reaches the threshold after
-// ln(E / E_threshold) / k. While the energy does not decay (grains still pouring through the
-// orifice) nothing better than max_time_s is known, and the estimate says so.
+// "99 %, ETA 5 s" for most of the run. The estimate follows the energy instead: the energy
+// decays at rate k = −d ln E / dt, so it reaches the threshold after ln(E / E_threshold) / k.
+// While the energy does not decay (grains still pouring through the orifice) nothing better
+// than max_time_s is known, and the estimate says so.
+//
+// k is the least-squares slope of ln E over the last kSpanS of checks, not the difference of two
+// checks: the energy of a draining heap rattles by tens of per cent from one check to the next,
+// and one steep-looking pair would put the end seconds early. The progress line never lets its
+// fraction fall back (replicate_progress.h), so an early end shown once holds the percentage
+// while the ETA grows for the rest of the run; a late one only delays the percentage.
 #include <algorithm>
 #include <cmath>
+#include <deque>
+#include <utility>
 
 namespace demcal::objectives {
 
@@ -26,30 +34,46 @@ class SettleEta {
   // when not measured at this check). Never earlier than t, never later than max_time_s.
   double ExpectedEndS(double t, double e) {
     if (t < pour_end_s_ || !(e > 0)) return Clamp(std::max(guess_s_, estimate_s_), t);
-    const double log_e = std::log(e);
-    if (window_t_ < 0) {
-      window_t_ = t;
-      window_log_e_ = log_e;
+    samples_.emplace_back(t, std::log(e));
+    while (t - samples_.front().first > kSpanS) samples_.pop_front();
+    if (updated_at_s_ < 0) {
+      updated_at_s_ = t;
       estimate_s_ = max_time_s_;
-    } else if (t - window_t_ >= kWindowS) {
-      const double rate = (window_log_e_ - log_e) / (t - window_t_);  // 1/s, > 0 when decaying
+    } else if (t - updated_at_s_ >= kUpdateS && t - samples_.front().first >= kUpdateS) {
+      const double rate = -LogEnergySlope();  // 1/s, > 0 when decaying
       estimate_s_ = rate > 0 && e > threshold_ ? t + std::log(e / threshold_) / rate
                     : rate > 0                 ? t
                                                : max_time_s_;
-      window_t_ = t;
-      window_log_e_ = log_e;
+      updated_at_s_ = t;
     }
     return Clamp(estimate_s_, t);
   }
 
  private:
-  // 0.1 s: the surface criterion's window (settled_run.h), long enough to average over the
-  // collisions of a rattling heap, short against the seconds a drain or a settle lasts.
-  static constexpr double kWindowS = 0.1;
+  // 0.1 s between updates: the surface criterion's window (settled_run.h), long enough to
+  // average over the collisions of a rattling heap. 0.5 s of history for the slope: five such
+  // windows. For uncorrelated scatter σ in ln E, least squares over n equally spaced checks
+  // spanning T has a slope error σ·√(12/n)/T: at the default 0.01 s checks about 1.0 σ per
+  // second, against 14 σ for the difference of two checks 0.1 s apart. The span is still short
+  // against the seconds a drain or a settle lasts; when the decay starts the slope lags by up
+  // to the span, so the end shows late, not early.
+  static constexpr double kUpdateS = 0.1;
+  static constexpr double kSpanS = 0.5;
+
+  double LogEnergySlope() const {
+    double mt = 0, my = 0;
+    for (const auto& [t, y] : samples_) mt += t, my += y;
+    mt /= samples_.size();
+    my /= samples_.size();
+    double stt = 0, sty = 0;
+    for (const auto& [t, y] : samples_) stt += (t - mt) * (t - mt), sty += (t - mt) * (y - my);
+    return stt > 0 ? sty / stt : 0;
+  }
   double Clamp(double end_s, double t) const { return std::clamp(end_s, t, std::max(t, max_time_s_)); }
 
   double pour_end_s_, guess_s_, threshold_, max_time_s_;
-  double window_t_ = -1, window_log_e_ = 0;
+  std::deque<std::pair<double, double>> samples_;  // (t in s, ln E) of the checks after the pour
+  double updated_at_s_ = -1;
   double estimate_s_ = 0;
 };
 

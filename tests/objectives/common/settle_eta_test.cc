@@ -2,6 +2,7 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdint>
 
 using namespace demcal::objectives;
 
@@ -65,4 +66,24 @@ TEST_CASE("SettleEta from the hard stop: the progress fraction only moves forwar
     last_pour = f_pour;
   }
   CHECK(fell_back);
+}
+
+// A funnel draining into the heap: the energy rattles by ±30 % about a plateau, then decays. The
+// progress line holds the largest fraction it has shown (replicate_progress.h), so an end shown
+// too early once stays on the screen: the fraction t / end must never run ahead of the true one.
+TEST_CASE("SettleEta: a rattling plateau does not show an early end", "[objectives][settle]") {
+  const double pour_end = 1.5, drained = 3.5, k = 6, e0 = 0.05, threshold = 1e-5, max_time = 8;
+  const double true_end = drained + std::log(e0 / threshold) / k;
+  uint32_t state = 12345;  // a fixed linear congruential sequence: the scatter of every check
+  auto rattle = [&] {
+    state = state * 1664525u + 1013904223u;
+    return 0.3 * (2.0 * (state >> 8) / double(1u << 24) - 1.0);
+  };
+  SettleEta eta(pour_end, max_time, threshold, max_time);
+  double ahead = 0;
+  for (double t = pour_end; t < true_end; t += 0.01) {
+    const double e = (t < drained ? e0 : e0 * std::exp(-k * (t - drained))) * std::exp(rattle());
+    ahead = std::max(ahead, t / eta.ExpectedEndS(t, e) - t / true_end);
+  }
+  CHECK(ahead < 0.05);
 }
