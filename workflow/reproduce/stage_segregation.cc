@@ -26,6 +26,7 @@
 #include "experiments/segregation/segregation_result.h"
 #include "files/json_document.h"
 #include "workflow/reproduce/experiment_edit.h"
+#include "workflow/reproduce/pair_overrides.h"
 #include "workflow/reproduce/segregation_metrics.h"
 #include "workflow/reproduce/stages.h"
 
@@ -66,6 +67,7 @@ bool BuildScenarios(const ReproduceContext& ctx, std::vector<Scenario>* out, std
       SetSpeciesClump(&base, name, s["semi_axes"].get<std::vector<double>>(),
                       s["clump_count_used"].get<int>());
   }
+  if (!ApplyPairOverrides(w, &base, error)) return false;
   const std::string ep = w.coating.material;
   const nlohmann::json& pairs = ctx.results["dissimilar_pairs"];
   Scenario uncoated{"uncoated", base};

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "calibrate/observable_registry.h"
+#include "core/limits/physical_limits.h"
 #include "core/math/number_text.h"
 #include "files/json_document.h"
 #include "files/json_fields.h"
@@ -172,11 +173,26 @@ void ParseCohesion(const nlohmann::json& j, const std::string& path,
            Range::Of(limits::kCohesionGamma, "J/m2"));
 }
 
+void ParsePairOverride(const nlohmann::json& j, const std::string& path, PairOverride* o,
+                       JsonStatus* status) {
+  JsonFields f(j, path, {"materials", "property", "value", "note"}, status);
+  if (const nlohmann::json* m = f.Array("materials", kRequired); m && f.ok()) {
+    if (m->size() != 2 || !(*m)[0].is_string() || !(*m)[1].is_string() ||
+        (*m)[0].get<std::string>().empty() || (*m)[1].get<std::string>().empty())
+      return f.Fail("materials", "must be two material names, e.g. [\"BP\", \"EP\"]");
+    o->material_a = (*m)[0].get<std::string>();
+    o->material_b = (*m)[1].get<std::string>();
+  }
+  f.String("property", &o->property, kRequired, {"rolling_friction", "sliding_friction"});
+  f.Number("value", &o->value, kRequired, Range::Of(core::limits::kFriction));
+  f.String("note", &o->note, kRequired);
+}
+
 void ParseSegregation(const nlohmann::json& j, const std::string& path, const std::string& file,
                       WorkflowSegregation* s, JsonStatus* status) {
   JsonFields f(j, path, {"experiment_file", "replicates", "quick_replicates", "coated_wt_pct",
                          "excessive_gamma_J_m2", "size_scale", "stiffness_scale",
-                         "funnel_orifice", "enabled"},
+                         "funnel_orifice", "pair_overrides", "enabled"},
                status);
   f.Number("size_scale", &s->size_scale, kOptional, Range::Of(limits::kSizeScale));
   f.Number("stiffness_scale", &s->stiffness_scale, kOptional, Range::Of(limits::kStiffnessScale));
@@ -204,6 +220,10 @@ void ParseSegregation(const nlohmann::json& j, const std::string& path, const st
     g.Number("beverloo_k", &s->funnel_beverloo_k, kRequired, Range{0, 3, false, true, ""});
     g.String("note", &s->funnel_note, kRequired);
   }
+  ForEach(f, "pair_overrides", kOptional, [&](const nlohmann::json& o, const std::string& p) {
+    s->pair_overrides.emplace_back();
+    ParsePairOverride(o, p, &s->pair_overrides.back(), status);
+  });
 }
 
 void ParseFidelityCheck(const nlohmann::json& j, const std::string& path,

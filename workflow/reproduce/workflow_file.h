@@ -58,6 +58,16 @@ struct WorkflowCoating {
   double coated_radius_m = 0;           // R* of the coated pair (the granule radius)
 };
 
+// A pair property of the heap that no stage calibrates, set in every scenario: e.g. the EP–BP
+// rolling friction, which Table 1 gives only per material (the file takes the pair's mean) and
+// no measured angle holds (docs/reproduce_clumps.md brackets it). `note` says why the value.
+struct PairOverride {
+  std::string material_a, material_b;
+  std::string property;  // rolling_friction or sliding_friction
+  double value = 0;
+  std::string note;
+};
+
 // Stage 6: the ternary heap under three scenarios.
 struct WorkflowSegregation {
   std::string experiment_file;  // a `segregation` file (resolved path)
@@ -74,6 +84,7 @@ struct WorkflowSegregation {
   double funnel_effective_orifice_diameter_m = 0;
   double funnel_beverloo_k = 0;
   std::string funnel_note;  // where the rule comes from
+  std::vector<PairOverride> pair_overrides;  // applied after stage 1's values, in every scenario
   bool enabled = true;
 };
 

@@ -85,6 +85,26 @@ TEST_CASE("workflow file errors name the file, the key and the allowed values", 
                                                {"beverloo_k", 0.5}};
        },
        "segregation.funnel_orifice.note"},
+      {[](nlohmann::json& d) {
+         d["segregation"]["pair_overrides"] = {{{"materials", {"EP"}}, {"property", "rolling_friction"},
+                                                {"value", 0.25}, {"note", "n"}}};
+       },
+       "segregation.pair_overrides[0].materials' must be two material names"},
+      {[](nlohmann::json& d) {
+         d["segregation"]["pair_overrides"] = {{{"materials", {"EP", "BP"}}, {"property", "restitution"},
+                                                {"value", 0.25}, {"note", "n"}}};
+       },
+       "segregation.pair_overrides[0].property"},
+      {[](nlohmann::json& d) {
+         d["segregation"]["pair_overrides"] = {{{"materials", {"EP", "BP"}}, {"property", "rolling_friction"},
+                                                {"value", 20}, {"note", "n"}}};
+       },
+       "segregation.pair_overrides[0].value"},
+      {[](nlohmann::json& d) {
+         d["segregation"]["pair_overrides"] = {{{"materials", {"EP", "BP"}}, {"property", "rolling_friction"},
+                                                {"value", 0.25}}};
+       },
+       "segregation.pair_overrides[0].note"},
       {[](nlohmann::json& d) { d["unexpected"] = 1; }, "unexpected"},
   };
   for (const Case& c : cases) {
@@ -160,4 +180,22 @@ TEST_CASE("the clumps workflow calibrates each species' aspect ratio; bad ones a
   CHECK_FALSE(LoadVariant(free, &w, &error));
   CHECK(error.find("species[0].aspect_ratio' needs clump_counts and \"hold\": true") !=
         std::string::npos);
+}
+
+TEST_CASE("segregation.pair_overrides are read in order with their note", "[unit]") {
+  nlohmann::json doc = Bundled();
+  doc["segregation"]["pair_overrides"] = {
+      {{"materials", {"BP", "EP"}}, {"property", "rolling_friction"}, {"value", 0.25}, {"note", "bracket"}},
+      {{"materials", {"EP", "TAED"}}, {"property", "sliding_friction"}, {"value", 0.4}, {"note", "n"}}};
+  WorkflowFile w;
+  std::string error;
+  REQUIRE(LoadVariant(doc, &w, &error));
+  REQUIRE(w.segregation.pair_overrides.size() == 2);
+  const PairOverride& o = w.segregation.pair_overrides[0];
+  CHECK(o.material_a == "BP");
+  CHECK(o.material_b == "EP");
+  CHECK(o.property == "rolling_friction");
+  CHECK(o.value == 0.25);
+  CHECK(o.note == "bracket");
+  CHECK(w.segregation.pair_overrides[1].property == "sliding_friction");
 }
