@@ -11,18 +11,13 @@
 #include "objectives/common/fidelity.h"
 #include "workflow/reproduce/experiment_edit.h"
 #include "workflow/reproduce/workflow_file.h"
+#include "workflow/reproduce/segregation_example.h"
 #include "workflow/test_paths.h"
 
 namespace demcal::workflow {
 namespace {
 
-nlohmann::ordered_json Example() {
-  nlohmann::ordered_json e;
-  std::string error;
-  REQUIRE(ReadExperimentJson((testing::RepoRoot() / "examples/segregation_paper.json").string(),
-                             &e, &error));
-  return e;
-}
+nlohmann::ordered_json Example() { return testing_support::SegregationExample(); }
 
 // The funnel of the edited copy as the experiment reader parses it, at size `size_scale`, and
 // the orifice it opens for the copy's feed.

@@ -7,18 +7,12 @@
 #include <catch2/catch.hpp>
 
 #include "workflow/reproduce/experiment_edit.h"
-#include "workflow/test_paths.h"
+#include "workflow/reproduce/segregation_example.h"
 
 namespace demcal::workflow {
 namespace {
 
-nlohmann::ordered_json Example() {
-  nlohmann::ordered_json e;
-  std::string error;
-  REQUIRE(ReadExperimentJson((testing::RepoRoot() / "examples/segregation_paper.json").string(),
-                             &e, &error));
-  return e;
-}
+nlohmann::ordered_json Example() { return testing_support::SegregationExample(); }
 
 WorkflowFile WithOverrides(std::vector<PairOverride> overrides) {
   WorkflowFile w;
