@@ -11,20 +11,20 @@
 // over the replicates of each scenario feed summary.json.
 #include <algorithm>
 #include <atomic>
-#include <functional>
-#include <limits>
 #include <cmath>
 #include <filesystem>
+#include <functional>
+#include <limits>
 #include <mutex>
 #include <sstream>
 #include <thread>
 
-#include "objectives/common/replicates.h"
-#include "objectives/farm/farm.h"
-#include "experiments/common/run_experiment.h"
 #include "experiments/common/experiment_file.h"
+#include "experiments/common/run_experiment.h"
 #include "experiments/segregation/segregation_result.h"
 #include "files/json_document.h"
+#include "objectives/common/replicates.h"
+#include "objectives/farm/farm.h"
 #include "workflow/reproduce/experiment_edit.h"
 #include "workflow/reproduce/pair_overrides.h"
 #include "workflow/reproduce/segregation_metrics.h"

@@ -10,8 +10,8 @@
 #include "objectives/common/feed.h"
 #include "objectives/common/fidelity.h"
 #include "workflow/reproduce/experiment_edit.h"
-#include "workflow/reproduce/workflow_file.h"
 #include "workflow/reproduce/segregation_example.h"
+#include "workflow/reproduce/workflow_file.h"
 #include "workflow/test_paths.h"
 
 namespace demcal::workflow {

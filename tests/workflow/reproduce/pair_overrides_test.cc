@@ -53,20 +53,21 @@ TEST_CASE("pair overrides refuse a material the file lacks and a calibrated spec
   std::string error;
   nlohmann::ordered_json e = Example();
   const nlohmann::ordered_json unchanged = e;
-  CHECK_FALSE(ApplyPairOverrides(WithOverrides({{"EP", "XX", "rolling_friction", 0.2, "n"}}),
-                                 &e, &error));
+  CHECK_FALSE(
+      ApplyPairOverrides(WithOverrides({{"EP", "XX", "rolling_friction", 0.2, "n"}}), &e, &error));
   CHECK(error.find("flow.json: segregation.pair_overrides[0].materials: 'XX'") !=
         std::string::npos);
   CHECK(error.find("one of BP") != std::string::npos);
-  CHECK_FALSE(ApplyPairOverrides(
-      WithOverrides({{"BP", "EP", "rolling_friction", 0.2, "n"}, {"EP", "EP", "rolling_friction", 0.2, "n"}}),
-      &e, &error));
+  CHECK_FALSE(ApplyPairOverrides(WithOverrides({{"BP", "EP", "rolling_friction", 0.2, "n"},
+                                                {"EP", "EP", "rolling_friction", 0.2, "n"}}),
+                                 &e, &error));
   CHECK(error.find("segregation.pair_overrides[1]") != std::string::npos);
   CHECK(error.find("stage 1 calibrates") != std::string::npos);
   CHECK(e == unchanged);  // nothing applied when one is refused
   // EP's own sliding friction is not what stage 1 calibrates here: it may be set.
   nlohmann::ordered_json f = unchanged;
-  CHECK(ApplyPairOverrides(WithOverrides({{"EP", "EP", "sliding_friction", 0.4, "n"}}), &f, &error));
+  CHECK(
+      ApplyPairOverrides(WithOverrides({{"EP", "EP", "sliding_friction", 0.4, "n"}}), &f, &error));
 }
 
 }  // namespace demcal::workflow

@@ -59,13 +59,19 @@ TEST_CASE("workflow file errors name the file, the key and the allowed values", 
   const std::vector<Case> cases = {
       {[](nlohmann::json& d) { d["format"] = "demcal-workflow/9"; }, "format"},
       {[](nlohmann::json& d) { d.erase("shape_assumption"); }, "shape_assumption"},
-      {[](nlohmann::json& d) { d["coating"]["levels_wt_pct"][2] = -1; }, "coating.levels_wt_pct[2]: must be in (0, 100]"},
+      {[](nlohmann::json& d) { d["coating"]["levels_wt_pct"][2] = -1; },
+       "coating.levels_wt_pct[2]: must be in (0, 100]"},
       {[](nlohmann::json& d) { d["coating"]["curve_form"] = "cubic"; }, "coating.curve_form"},
-      {[](nlohmann::json& d) { d["species"][1]["min"] = 2; d["species"][1]["max"] = 1; }, "species[1].start"},
+      {[](nlohmann::json& d) {
+         d["species"][1]["min"] = 2;
+         d["species"][1]["max"] = 1;
+       },
+       "species[1].start"},
       {[](nlohmann::json& d) { d["species"][0]["experiment_file"] = "missing.json"; }, "not found"},
       {[](nlohmann::json& d) { d["cohesion"]["poisson_ratio"] = 0.7; }, "cohesion.poisson_ratio"},
       {[](nlohmann::json& d) { d["reference"][0]["key"] = "nonsense"; }, "reference[0].key"},
-      {[](nlohmann::json& d) { d["coating"]["partner_radii_m"] = {1e-4}; }, "one radius per partner"},
+      {[](nlohmann::json& d) { d["coating"]["partner_radii_m"] = {1e-4}; },
+       "one radius per partner"},
       {[](nlohmann::json& d) { d["segregation"]["replicates"] = 0; }, "segregation.replicates"},
       {[](nlohmann::json& d) { d["segregation"].erase("stiffness_scale"); },
        "segregation.stiffness_scale' must be given together with size_scale"},
@@ -86,23 +92,29 @@ TEST_CASE("workflow file errors name the file, the key and the allowed values", 
        },
        "segregation.funnel_orifice.note"},
       {[](nlohmann::json& d) {
-         d["segregation"]["pair_overrides"] = {{{"materials", {"EP"}}, {"property", "rolling_friction"},
-                                                {"value", 0.25}, {"note", "n"}}};
+         d["segregation"]["pair_overrides"] = {{{"materials", {"EP"}},
+                                                {"property", "rolling_friction"},
+                                                {"value", 0.25},
+                                                {"note", "n"}}};
        },
        "segregation.pair_overrides[0].materials' must be two material names"},
       {[](nlohmann::json& d) {
-         d["segregation"]["pair_overrides"] = {{{"materials", {"EP", "BP"}}, {"property", "restitution"},
-                                                {"value", 0.25}, {"note", "n"}}};
+         d["segregation"]["pair_overrides"] = {{{"materials", {"EP", "BP"}},
+                                                {"property", "restitution"},
+                                                {"value", 0.25},
+                                                {"note", "n"}}};
        },
        "segregation.pair_overrides[0].property"},
       {[](nlohmann::json& d) {
-         d["segregation"]["pair_overrides"] = {{{"materials", {"EP", "BP"}}, {"property", "rolling_friction"},
-                                                {"value", 20}, {"note", "n"}}};
+         d["segregation"]["pair_overrides"] = {{{"materials", {"EP", "BP"}},
+                                                {"property", "rolling_friction"},
+                                                {"value", 20},
+                                                {"note", "n"}}};
        },
        "segregation.pair_overrides[0].value"},
       {[](nlohmann::json& d) {
-         d["segregation"]["pair_overrides"] = {{{"materials", {"EP", "BP"}}, {"property", "rolling_friction"},
-                                                {"value", 0.25}}};
+         d["segregation"]["pair_overrides"] = {
+             {{"materials", {"EP", "BP"}}, {"property", "rolling_friction"}, {"value", 0.25}}};
        },
        "segregation.pair_overrides[0].note"},
       {[](nlohmann::json& d) { d["unexpected"] = 1; }, "unexpected"},
@@ -184,9 +196,14 @@ TEST_CASE("the clumps workflow calibrates each species' aspect ratio; bad ones a
 
 TEST_CASE("segregation.pair_overrides are read in order with their note", "[unit]") {
   nlohmann::json doc = Bundled();
-  doc["segregation"]["pair_overrides"] = {
-      {{"materials", {"BP", "EP"}}, {"property", "rolling_friction"}, {"value", 0.25}, {"note", "bracket"}},
-      {{"materials", {"EP", "TAED"}}, {"property", "sliding_friction"}, {"value", 0.4}, {"note", "n"}}};
+  doc["segregation"]["pair_overrides"] = {{{"materials", {"BP", "EP"}},
+                                           {"property", "rolling_friction"},
+                                           {"value", 0.25},
+                                           {"note", "bracket"}},
+                                          {{"materials", {"EP", "TAED"}},
+                                           {"property", "sliding_friction"},
+                                           {"value", 0.4},
+                                           {"note", "n"}}};
   WorkflowFile w;
   std::string error;
   REQUIRE(LoadVariant(doc, &w, &error));
