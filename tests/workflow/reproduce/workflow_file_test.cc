@@ -29,6 +29,19 @@ bool LoadVariant(const nlohmann::json& doc, WorkflowFile* out, std::string* erro
   return ok;
 }
 
+// One valid segregation.pair_overrides entry with `key` set to `value` (null: left out).
+void SetOverride(nlohmann::json& d, const std::string& key, const nlohmann::json& value) {
+  nlohmann::json o = {{"materials", nlohmann::json::array({"EP", "BP"})},
+                      {"property", "rolling_friction"},
+                      {"value", 0.25},
+                      {"note", "n"}};
+  if (value.is_null())
+    o.erase(key);
+  else
+    o[key] = value;
+  d["segregation"]["pair_overrides"] = nlohmann::json::array({o});
+}
+
 }  // namespace
 
 TEST_CASE("the bundled alizadeh2018 workflow loads with its paths resolved", "[unit]") {
@@ -91,31 +104,12 @@ TEST_CASE("workflow file errors name the file, the key and the allowed values", 
                                                {"beverloo_k", 0.5}};
        },
        "segregation.funnel_orifice.note"},
-      {[](nlohmann::json& d) {
-         d["segregation"]["pair_overrides"] = {{{"materials", {"EP"}},
-                                                {"property", "rolling_friction"},
-                                                {"value", 0.25},
-                                                {"note", "n"}}};
-       },
+      {[](nlohmann::json& d) { SetOverride(d, "materials", nlohmann::json::array({"EP"})); },
        "segregation.pair_overrides[0].materials' must be two material names"},
-      {[](nlohmann::json& d) {
-         d["segregation"]["pair_overrides"] = {{{"materials", {"EP", "BP"}},
-                                                {"property", "restitution"},
-                                                {"value", 0.25},
-                                                {"note", "n"}}};
-       },
+      {[](nlohmann::json& d) { SetOverride(d, "property", "restitution"); },
        "segregation.pair_overrides[0].property"},
-      {[](nlohmann::json& d) {
-         d["segregation"]["pair_overrides"] = {{{"materials", {"EP", "BP"}},
-                                                {"property", "rolling_friction"},
-                                                {"value", 20},
-                                                {"note", "n"}}};
-       },
-       "segregation.pair_overrides[0].value"},
-      {[](nlohmann::json& d) {
-         d["segregation"]["pair_overrides"] = {
-             {{"materials", {"EP", "BP"}}, {"property", "rolling_friction"}, {"value", 0.25}}};
-       },
+      {[](nlohmann::json& d) { SetOverride(d, "value", 20); }, "segregation.pair_overrides[0].value"},
+      {[](nlohmann::json& d) { SetOverride(d, "note", nullptr); },
        "segregation.pair_overrides[0].note"},
       {[](nlohmann::json& d) { d["unexpected"] = 1; }, "unexpected"},
   };
