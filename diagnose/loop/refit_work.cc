@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <sstream>
 
 #include "calibrate/sensitivity_refinement.h"
@@ -288,11 +287,6 @@ void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
       if (held[j]) Js.col(j).setZero(), lo[j] = 0, hi[j] = 0;
     const Eigen::MatrixXd S = f.sigma.cwiseInverse().cwiseProduct(w.signature);
     const double t_lo = held[p] ? 0 : e.lower - t_now, t_hi = held[p] ? 0 : e.upper - t_now;
-    const LinearRefitResult step = LinearRefit(r, Js, S, {t_lo}, {t_hi}, lo, hi);
-    for (double scale : {1.0, 0.5}) {  // the Gauss–Newton step, then half of it (below)
-      const ActiveEffect added{w.candidate, {t_now + scale * step.t(0)}};
-      tries[i].push_back(here.Step(scale * step.delta, &added));
-    }
     for (size_t j = 0; j <= p; ++j) {  // the best probe, kept aside (header, RefineRefits)
       const Prediction& got = probed[i * (p + 1) + j];
       if (!got.ok) continue;
@@ -300,12 +294,22 @@ void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
       if (chi2 < w.probe_chi2)
         w.probe_chi2 = chi2, w.probe_point = probes[i * (p + 1) + j], w.probe_prediction = got;
     }
+    const LinearRefitResult step = LinearRefit(r, Js, S, {t_lo}, {t_hi}, lo, hi);
+    // The step is simulated only where the sensitivities just measured promise a fall of at least
+    // kRefitChi2Unit (header): below it the candidate has settled by the rule RefineRefits stops
+    // on, and the step's runs could only find noise.
+    if (r.squaredNorm() - step.chi2 < kRefitChi2Unit) continue;
+    for (double scale : {1.0, 0.5}) {  // the Gauss–Newton step, then half of it (below)
+      const ActiveEffect added{w.candidate, {t_now + scale * step.t(0)}};
+      tries[i].push_back(here.Step(scale * step.delta, &added));
+    }
   }
   // Damped Gauss–Newton: where the full step does not lower χ² (noisy or curved sensitivities
   // overshoot), half of it is simulated too. A point without a value counts as not lowering it
   // and is said in the note with its status (a jam is reported as a jam, not as a slow flow).
-  std::vector<size_t> pending(work.size());
-  std::iota(pending.begin(), pending.end(), 0);
+  std::vector<size_t> pending;
+  for (size_t i = 0; i < work.size(); ++i)
+    if (!tries[i].empty()) pending.push_back(i);
   for (int attempt = 0; attempt < 2 && !pending.empty(); ++attempt) {
     std::vector<ModelPoint> points;
     for (size_t i : pending) points.push_back(tries[i][attempt]);
@@ -329,6 +333,34 @@ void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
   }
 }
 
+namespace {
+
+// The simulation-noise sd of a simulated point's χ² (evidence.h, CorrelatedChi2NoiseSd) without
+// the discrepancy floor, which would only lower it: a probe must then beat the refit by more.
+double PointChi2NoiseSd(const Frame& f, const Prediction& p) {
+  if (p.sem.size() != static_cast<size_t>(f.n())) return 0;
+  const Eigen::VectorXd r = StandardisedResiduals(*f.observations, p.mean, f.sigma);
+  const Eigen::VectorXd u = ToVector(p.sem).cwiseQuotient(f.sigma);
+  return CorrelatedChi2NoiseSd(r, u, f.q, 0, ErrorCorrelation(p.source, p.correlation, u.size()));
+}
+
+// A probe that fits better than the candidate's refit by more than kNoiseSds standard deviations
+// of the difference's simulation noise (the ranking's own test that two χ² differ, evidence.h)
+// becomes the point the next re-centred step starts from (header, RefineRefits).
+void RecentreOnProbe(const Frame& f, Work* w) {
+  if (!(w->probe_chi2 < w->best_chi2)) return;
+  const double sd =
+      std::hypot(PointChi2NoiseSd(f, w->probe_prediction), PointChi2NoiseSd(f, w->best_prediction));
+  if (w->best_chi2 - w->probe_chi2 <= kNoiseSds * sd) return;
+  AddNote(w, "re-centred on a probe with chi2 " + ValueText(w->probe_chi2) + " against " +
+                 ValueText(w->best_chi2) + ", beyond " + ValueText(kNoiseSds) +
+                 " noise sd of the difference");
+  w->best_chi2 = w->probe_chi2, w->best_point = w->probe_point,
+  w->best_prediction = w->probe_prediction;
+}
+
+}  // namespace
+
 void RefineRefits(ForwardModel& model, const Frame& f, const FitState& fit,
                   const std::vector<CandidateEffect>& candidates, int iterations,
                   std::vector<Work*> active) {
@@ -337,11 +369,14 @@ void RefineRefits(ForwardModel& model, const Frame& f, const FitState& fit,
   const std::vector<Work*> all = active;
   for (int k = 0; k < iterations && !active.empty(); ++k) {
     std::vector<double> before;
-    for (const Work* w : active) before.push_back(w->best_chi2);
+    for (Work* w : active) {
+      RecentreOnProbe(f, w);
+      before.push_back(w->best_chi2);
+    }
     RecentredRefits(model, f, fit, candidates, active);
     std::vector<Work*> improving;
     for (size_t i = 0; i < active.size(); ++i)
-      if (active[i]->best_chi2 < before[i] - 1) improving.push_back(active[i]);
+      if (active[i]->best_chi2 < before[i] - kRefitChi2Unit) improving.push_back(active[i]);
     active.swap(improving);
   }
   for (Work* w : all)

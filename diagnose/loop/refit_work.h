@@ -17,6 +17,12 @@
 
 namespace demcal::diagnose::refits {
 
+// The least fall of a candidate's best χ² that counts as progress of its refit: one standard
+// deviation of a fitted parameter, the profile-likelihood unit (a smaller change is noise).
+// RefineRefits stops a candidate whose re-centred point fell by less; RecentredRefits does not
+// simulate a step its fresh sensitivities promise less from.
+constexpr double kRefitChi2Unit = 1.0;
+
 // What a step works with: the fixed sigmas, the residuals at the fit and the standardised J.
 struct Frame {
   const std::vector<Observation>* observations;
@@ -108,29 +114,30 @@ void Record(const Frame& f, const Work& w, const std::vector<CandidateEffect>& c
 // sensitivities to the base parameters and to the effect are re-estimated there by finite
 // differences (one run each, in the unit cube the step of the calibration layer's rule for this
 // simulation noise, inward at a bound), then one Gauss–Newton step of base + effect is
-// simulated. A probe without a value is retaken one step on the other side of the point (a
-// one-sided backward difference); a coordinate with no value on either side is held for that
-// step, said in the entry's note. The base fit's sensitivities can be wrong far from it (a friction
-// whose heap angle saturates at the refit point but not at the base would keep pulling the refit
-// the wrong way), and a secant signature inherits their error. The best finite-difference probe is
-// kept aside (Work::probe_point).
+// simulated, unless those sensitivities promise a fall of χ² below kRefitChi2Unit (a clipped
+// step can even promise a rise): then the candidate has settled, and nothing more is simulated. A
+// probe without a value is retaken one step on the other side of the point (a one-sided backward
+// difference); a coordinate with no value on either side is held for that step, said in the entry's
+// note. The base fit's sensitivities can be wrong far from it (a friction whose heap angle
+// saturates at the refit point but not at the base would keep pulling the refit the wrong way), and
+// a secant signature inherits their error. The best finite-difference probe is kept aside
+// (Work::probe_point).
 void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
                      const std::vector<CandidateEffect>& candidates,
                      const std::vector<Work*>& work);
 
 // Further re-centred refit points for each candidate, while each lowers its best χ² by at least
-// 1 (a change of χ² below 1 is within one standard deviation of a fitted parameter, the
-// profile-likelihood unit, so it is noise), at most `iterations` more each. ΔBIC and the
+// kRefitChi2Unit, at most `iterations` more each. ΔBIC and the
 // likelihood ratio compare maximised likelihoods: a candidate still far from its minimum after
 // two points (a strongly nonlinear signature, a refit along a valley) would lose to one that
 // happened to converge faster. When the points end, a probe (the signature run, a
-// finite-difference probe) that fits better than every refit point becomes the refit: each probe is a simulated fit of base + effect, and
-// the likelihood ratio and ΔBIC compare maximised likelihoods, the base's being the best of
-// every point its calibration simulated (the `adhesion_coating` twin: refit points 11.05–20.0,
-// a probe 9.11, each with a χ² noise sd of 4.7). The probes do not re-centre the points: a
-// probe lower by its noise is no better centre, and from one the next points stop at once
-// (stepping from a probe, the cross-engine `wide_psd` size refit ended at χ² 61.6 where the
-// steps alone reach 43.8).
+// finite-difference probe) that fits better than every refit point becomes the refit: each probe is
+// a simulated fit of base + effect, and the likelihood ratio and ΔBIC compare maximised
+// likelihoods, the base's being the best of every point its calibration simulated (the
+// `adhesion_coating` twin: refit points 11.05–20.0, a probe 9.11, each with a χ² noise sd of 4.7).
+// The probes do not re-centre the points: a probe lower by its noise is no better centre, and from
+// one the next points stop at once (stepping from a probe, the cross-engine `wide_psd` size refit
+// ended at χ² 61.6 where the steps alone reach 43.8).
 void RefineRefits(ForwardModel& model, const Frame& f, const FitState& fit,
                   const std::vector<CandidateEffect>& candidates, int iterations,
                   std::vector<Work*> active);

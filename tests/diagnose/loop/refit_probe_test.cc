@@ -26,7 +26,10 @@ struct Setup {
   double h = 0;  // the probes' step in the unit cube
 
   Setup() : obs(4) {
-    for (size_t i = 0; i < obs.size(); ++i) obs[i].measured = model.measured[i];
+    // Uncertainty 0.1: the kept point's misfit is tens of χ² units, so its re-centred step
+    // promises a fall beyond kRefitChi2Unit and is simulated (refit_work.h).
+    for (size_t i = 0; i < obs.size(); ++i)
+      obs[i].measured = model.measured[i], obs[i].uncertainty = 0.1;
     fit = OneParameterFit(model, 0.4, 4);
     frame = FrameWithoutFloor(obs, fit);
     work.simulated = true;

@@ -1,13 +1,15 @@
 // A refit ends on the best simulated point of base + effect, its finite-difference probes
 // included (refit_work.h, RefineRefits): the likelihood ratio compares maximised likelihoods,
-// and a probe that fits better than every refit point is the better fit. The probes do not
-// re-centre the refit points.
+// and a probe that fits better than every refit point is the better fit. A probe re-centres the
+// refit points only when it fits better beyond the simulation noise of the difference; a
+// re-centred step is simulated only where its fresh sensitivities promise a fall of χ².
 #include "diagnose/loop/refit_work.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 
 #include "calibrate/sensitivity_refinement.h"
+#include "tests/diagnose/loop/jamming_model.h"
 #include "tests/diagnose/loop/one_parameter_fit.h"
 
 namespace demcal::diagnose {
@@ -22,6 +24,7 @@ class PacketModel : public ForwardModel {
  public:
   std::vector<double> measured;
   double lucky = 0, miss = 3;
+  double lucky_miss = 0.25;  // the lucky points' miss, as a fraction of `miss`
   int BaseParameters() const override { return 1; }
   BaseCalibration CalibrateBase(int) override { return {}; }
   int SimulationsRun() const override { return runs_; }
@@ -29,7 +32,7 @@ class PacketModel : public ForwardModel {
     std::vector<Prediction> out;
     for (const ModelPoint& p : points) {
       const double m = !p.effects.empty() && std::fabs(p.effects.back().values[0] - lucky) < 1e-12
-                           ? miss / 4
+                           ? miss * lucky_miss
                            : miss;
       Prediction pr{true, "ok"};
       for (size_t i = 0; i < measured.size(); ++i) {
@@ -46,6 +49,21 @@ class PacketModel : public ForwardModel {
 
  private:
   int runs_ = 0;
+};
+
+// The PacketModel scene: four observations, the effect t in [-1, 1], one base parameter at 0.5.
+struct Packets {
+  PacketModel model;
+  std::vector<Observation> obs;
+  CandidateEffect effect{"effect", "a stand-in", {{"t", "", -1, 1, 0.5}}};
+  FitState fit;
+  refits::Frame frame;
+  Packets() : obs(4) {
+    model.measured = {10, 20, 30, 40};
+    for (size_t i = 0; i < obs.size(); ++i) obs[i].measured = model.measured[i];
+    fit = OneParameterFit(model, 0.5, 4);
+    frame = FrameWithoutFloor(obs, fit);
+  }
 };
 
 // A refit kept at the simulated point fit + the effect at `value`.
@@ -113,6 +131,81 @@ TEST_CASE("a simulated refit's chi2 noise adds the rows that read one simulated 
   CHECK(noise({0, 1, 2, 3}) == Approx(own));
   CHECK(noise({0, 1, 0, 1}) == Approx(std::sqrt(2.0) * own));
   CHECK(noise({0, 0, 1, 1}) == Approx(0).margin(1e-12));
+}
+
+}  // namespace demcal::diagnose
+
+namespace demcal::diagnose {
+namespace {
+
+// A refit at 0.2 whose signature run (a probe, kept aside) sits at the lucky value 0.6.
+refits::Work WithLuckyProbe(Packets& s) {
+  refits::Work w = SimulatedAt(s.model, s.fit, 0.2);
+  w.best_chi2 = StandardisedResiduals(s.obs, w.best_prediction.mean, s.frame.sigma).squaredNorm();
+  w.signature = Eigen::VectorXd::Constant(4, 1.0);
+  s.model.lucky = 0.6;
+  w.probe_point = s.fit.point;
+  w.probe_point.effects = {{0, {0.6}}};
+  w.probe_prediction = s.model.Evaluate({w.probe_point})[0];
+  w.probe_chi2 = StandardisedResiduals(s.obs, w.probe_prediction.mean, s.frame.sigma).squaredNorm();
+  return w;
+}
+
+}  // namespace
+
+TEST_CASE("a probe better beyond the noise re-centres the refit points", "[unit]") {
+  // Misses of 3 and 0.75 (σ² = 1.25): χ² 28.8 against 1.8, 27 apart; the sd of the difference
+  // is √(4.8² + 1.2²) = 4.9 (2·r·u per row, u = 0.5/√1.25, four independent rows), so the gap is
+  // 5.5 sd, beyond the ranking's 2 (evidence.h, kNoiseSds).
+  Packets s;
+  refits::Work w = WithLuckyProbe(s);
+  REQUIRE(w.best_chi2 == Approx(28.8));
+  REQUIRE(w.probe_chi2 == Approx(1.8));
+  refits::RefineRefits(s.model, s.frame, s.fit, {s.effect}, 4, {&w});
+  CHECK(w.retake_note.find("re-centred on a probe with chi2 1.8 against 28.8") !=
+        std::string::npos);
+  CHECK(w.best_chi2 == Approx(1.8));
+  CHECK(w.best_point.effects.back().values[0] == Approx(0.6));
+}
+
+TEST_CASE("a probe better only by its noise does not re-centre the refit points", "[unit]") {
+  // Lucky misses of 0.9 × 3: χ² 28.8 against 23.3, 5.5 apart, within 2 sd (4.8 and 4.3).
+  Packets s;
+  s.model.lucky_miss = 0.9;
+  refits::Work w = WithLuckyProbe(s);
+  REQUIRE(w.best_chi2 - w.probe_chi2 == Approx(28.8 * (1 - 0.81)));
+  const int runs = s.model.SimulationsRun();
+  refits::RefineRefits(s.model, s.frame, s.fit, {s.effect}, 4, {&w});
+  CHECK(w.retake_note.find("re-centred") == std::string::npos);
+  // Two probes around the refit at 0.2 (not around the probe at 0.6), and no step: no move of
+  // the base and the effect removes misses of alternating sign, so the step promises no fall.
+  CHECK(s.model.SimulationsRun() - runs == 2);
+  // When the points end, the better probe is the refit all the same (the header's rule).
+  CHECK(w.best_point.effects.back().values[0] == Approx(0.6));
+}
+
+TEST_CASE("a re-centred step that promises no fall of chi2 is not simulated", "[unit]") {
+  // The linear stand-in, its refit kept where it fits the data exactly: the two finite-difference
+  // probes are run, the Gauss–Newton step from them promises nothing, and nothing more runs.
+  JammingModel model;
+  std::vector<Observation> obs(4);
+  for (size_t i = 0; i < obs.size(); ++i) obs[i].measured = model.measured[i];
+  const CandidateEffect effect{"effect", "a stand-in", {{"t", "", -1, 1, 0.5}}};
+  const FitState fit = OneParameterFit(model, 0.4, 4);
+  const refits::Frame f = FrameWithoutFloor(obs, fit);
+  refits::Work w{0};
+  w.simulated = true;
+  w.best_point = fit.point;
+  w.best_point.base_unit = {model.u_true};
+  w.best_point.effects = {{0, {model.t_true}}};
+  w.best_prediction = model.Evaluate({w.best_point})[0];
+  w.best_chi2 = 0;
+  w.signature = Eigen::VectorXd::Constant(4, 1.0);
+  const int runs = model.SimulationsRun();
+  refits::RecentredRefits(model, f, fit, {effect}, {&w});
+  CHECK(model.SimulationsRun() - runs == 2);
+  CHECK(w.best_point.effects.back().values[0] == Approx(model.t_true));
+  CHECK(w.best_point.base_unit[0] == Approx(model.u_true));
 }
 
 }  // namespace demcal::diagnose
