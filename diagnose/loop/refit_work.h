@@ -135,9 +135,15 @@ void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
 // a simulated fit of base + effect, and the likelihood ratio and ΔBIC compare maximised
 // likelihoods, the base's being the best of every point its calibration simulated (the
 // `adhesion_coating` twin: refit points 11.05–20.0, a probe 9.11, each with a χ² noise sd of 4.7).
-// The probes do not re-centre the points: a probe lower by its noise is no better centre, and from
-// one the next points stop at once (stepping from a probe, the cross-engine `wide_psd` size refit
-// ended at χ² 61.6 where the steps alone reach 43.8).
+// A probe re-centres the points only when it is lower than the refit beyond kNoiseSds standard
+// deviations of the difference's simulation noise (evidence.h, the ranking's test that two χ²
+// differ; the floor left out, which would only lower the noise): a probe lower by its noise is
+// no better centre, and from one the next points stop at once (stepping from such a probe, the
+// cross-engine `wide_psd` size refit ended at χ² 61.6 where the steps alone reach 43.8), while
+// steps from a refit point far worse than a probe spend runs reaching what the probe already
+// has (`crossengine_wide_psd_fit_rolling`: four re-centred rounds took the size refit from 115
+// to 30 beside its signature run at 17, which then became the refit). Checked at the start of
+// each round, so the note says so.
 void RefineRefits(ForwardModel& model, const Frame& f, const FitState& fit,
                   const std::vector<CandidateEffect>& candidates, int iterations,
                   std::vector<Work*> active);
