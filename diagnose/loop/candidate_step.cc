@@ -145,7 +145,8 @@ void ForceBoundControls(const std::vector<CandidateEffect>& candidates,
 void RefitInside(ForwardModel& model, const Frame& f, const FitState& fit,
                  const std::vector<CandidateEffect>& candidates,
                  const std::vector<BaseBound>& bounds, const std::vector<Work>& work,
-                 const DiagnoseOptions& options, StepOutcome* out) {
+                 const DiagnoseOptions& options, const DiagnoseProgress& progress,
+                 StepOutcome* out) {
   double noise_max = 0;
   for (int k = 0; k < f.n(); ++k)
     noise_max = std::max(noise_max, fit.prediction.sem[k] / f.sigma(k));
@@ -174,7 +175,7 @@ void RefitInside(ForwardModel& model, const Frame& f, const FitState& fit,
   for (Work& w : held) active.push_back(&w);
   SimulateRefits(model, fi, inside, candidates, active);
   SimulateRefits(model, fi, inside, candidates, active);
-  RefineRefits(model, fi, inside, candidates, options.extra_refits, active);
+  RefineRefits(model, fi, inside, candidates, options.extra_refits, active, progress);
   DiagnosisStep rows;
   rows.entries.resize(held.size());
   rows.refit_residuals.resize(held.size());
@@ -262,7 +263,7 @@ StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>
     if (progress) progress("refitting by simulation: " + Listed(batch, candidates));
     SimulateRefits(model, f, fit, candidates, batch);  // the Gauss–Newton point
     SimulateRefits(model, f, fit, candidates, batch);  // after the secant correction
-    RefineRefits(model, f, fit, candidates, options.extra_refits, batch);
+    RefineRefits(model, f, fit, candidates, options.extra_refits, batch, progress);
     // A simulated refit that is not significant fell short of its linear promise (a response
     // that saturates or turns, a signature far from where the refit lands): its slot goes to the
     // next candidate of the linear ranking, until dem_refits simulated refits are significant,
@@ -284,7 +285,7 @@ StepOutcome RunCandidateStep(ForwardModel& model, const std::vector<Observation>
   }
   if (!bounds.empty()) {
     if (progress) progress("refitting the effects with the bound parameters held inside");
-    RefitInside(model, f, fit, candidates, bounds, work, options, &out);
+    RefitInside(model, f, fit, candidates, bounds, work, options, progress, &out);
   }
   out.phases.push_back({"refits", model.SimulationsRun() - sims1, Since(start)});
   out.step.entries.resize(work.size());

@@ -363,7 +363,7 @@ void RecentreOnProbe(const Frame& f, Work* w) {
 
 void RefineRefits(ForwardModel& model, const Frame& f, const FitState& fit,
                   const std::vector<CandidateEffect>& candidates, int iterations,
-                  std::vector<Work*> active) {
+                  std::vector<Work*> active, const DiagnoseProgress& progress) {
   std::erase_if(active,
                 [](const Work* w) { return !w->simulated; });  // no refit point to start from
   const std::vector<Work*> all = active;
@@ -375,8 +375,15 @@ void RefineRefits(ForwardModel& model, const Frame& f, const FitState& fit,
     }
     RecentredRefits(model, f, fit, candidates, active);
     std::vector<Work*> improving;
-    for (size_t i = 0; i < active.size(); ++i)
-      if (active[i]->best_chi2 < before[i] - kRefitChi2Unit) improving.push_back(active[i]);
+    std::string line = "re-centred refit round " + std::to_string(k + 1) + ":";
+    for (size_t i = 0; i < active.size(); ++i) {
+      const bool improved = active[i]->best_chi2 < before[i] - kRefitChi2Unit;
+      if (improved) improving.push_back(active[i]);
+      line += std::string(i ? ";" : "") + " " + candidates[active[i]->candidate].key + " chi2 " +
+              ValueText(before[i]) + " -> " + ValueText(active[i]->best_chi2) +
+              (improved ? "" : " (settled)");
+    }
+    if (progress) progress(line);
     active.swap(improving);
   }
   for (Work* w : all)

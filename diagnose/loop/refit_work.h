@@ -143,9 +143,10 @@ void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
 // steps from a refit point far worse than a probe spend runs reaching what the probe already
 // has (`crossengine_wide_psd_fit_rolling`: four re-centred rounds took the size refit from 115
 // to 30 beside its signature run at 17, which then became the refit). Checked at the start of
-// each round, so the note says so.
+// each round; the entry's note says when it happened. Each round's χ² per candidate, before and
+// after, goes to `progress` (stderr in the CLI), "(settled)" for a candidate that stops there.
 void RefineRefits(ForwardModel& model, const Frame& f, const FitState& fit,
                   const std::vector<CandidateEffect>& candidates, int iterations,
-                  std::vector<Work*> active);
+                  std::vector<Work*> active, const DiagnoseProgress& progress = {});
 
 }  // namespace demcal::diagnose::refits

@@ -161,10 +161,15 @@ TEST_CASE("a probe better beyond the noise re-centres the refit points", "[unit]
   refits::Work w = WithLuckyProbe(s);
   REQUIRE(w.best_chi2 == Approx(28.8));
   REQUIRE(w.probe_chi2 == Approx(1.8));
-  refits::RefineRefits(s.model, s.frame, s.fit, {s.effect}, 4, {&w});
+  std::vector<std::string> lines;
+  refits::RefineRefits(s.model, s.frame, s.fit, {s.effect}, 4, {&w},
+                       [&lines](const std::string& line) { lines.push_back(line); });
   CHECK(w.retake_note.find("re-centred on a probe with chi2 1.8 against 28.8") !=
         std::string::npos);
   CHECK(w.best_chi2 == Approx(1.8));
+  // One round from the probe, which no step improves on: the progress line says so.
+  CHECK(lines ==
+        std::vector<std::string>{"re-centred refit round 1: effect chi2 1.8 -> 1.8 (settled)"});
   CHECK(w.best_point.effects.back().values[0] == Approx(0.6));
 }
 
