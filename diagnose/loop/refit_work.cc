@@ -38,6 +38,18 @@ LinearRefitResult Refit(const Frame& f, const EffectParameter& p,
   return LinearRefit(f.r0, f.J, S, {p.lower}, {p.upper}, f.delta_lower, f.delta_upper);
 }
 
+namespace {
+
+// The simulation-noise sd of a simulated point's χ² at residuals r (evidence.h,
+// CorrelatedChi2NoiseSd), with the discrepancy floor phi in the weights; 0 without a sem per row.
+double PointChi2NoiseSd(const Frame& f, const Prediction& p, const Eigen::VectorXd& r, double phi) {
+  if (p.sem.size() != static_cast<size_t>(f.n())) return 0;
+  const Eigen::VectorXd u = ToVector(p.sem).cwiseQuotient(f.sigma);
+  return CorrelatedChi2NoiseSd(r, u, f.q, phi, ErrorCorrelation(p.source, p.correlation, u.size()));
+}
+
+}  // namespace
+
 void Fill(const Frame& f, const Work& w, const std::vector<CandidateEffect>& candidates,
           const Eigen::VectorXd& r, RankingEntry* e) {
   const int k = static_cast<int>(candidates[w.candidate].parameters.size());
@@ -51,12 +63,8 @@ void Fill(const Frame& f, const Work& w, const std::vector<CandidateEffect>& can
   e->evidence = EvidenceWithFloor(f.r0, r, f.q, k, f.fitted, f.per_candidate);
   // The simulated refit's χ² moves with its points' simulation noise (evidence.h, ToldApart):
   // the ranking does not tell two candidates apart by less than that.
-  if (w.simulated && w.best_prediction.sem.size() == static_cast<size_t>(f.n())) {
-    const Eigen::VectorXd u = ToVector(w.best_prediction.sem).cwiseQuotient(f.sigma);
-    e->evidence.chi2_noise_sd = CorrelatedChi2NoiseSd(
-        r, u, f.q, e->evidence.floor,
-        ErrorCorrelation(w.best_prediction.source, w.best_prediction.correlation, u.size()));
-  }
+  if (w.simulated && w.best_prediction.sem.size() == static_cast<size_t>(f.n()))
+    e->evidence.chi2_noise_sd = PointChi2NoiseSd(f, w.best_prediction, r, e->evidence.floor);
   e->chi2_per_dof = e->chi2 / std::max(1, f.n() - f.fitted - k);
   e->control = candidates[w.candidate].control;
   if (w.simulated) e->base_unit = w.best_point.base_unit;
@@ -335,13 +343,11 @@ void RecentredRefits(ForwardModel& model, const Frame& f, const FitState& fit,
 
 namespace {
 
-// The simulation-noise sd of a simulated point's χ² (evidence.h, CorrelatedChi2NoiseSd) without
-// the discrepancy floor, which would only lower it: a probe must then beat the refit by more.
-double PointChi2NoiseSd(const Frame& f, const Prediction& p) {
+// A simulated point's χ² noise sd without the discrepancy floor, which would only lower it: a
+// probe must then beat the refit by more.
+double NoiseSdWithoutFloor(const Frame& f, const Prediction& p) {
   if (p.sem.size() != static_cast<size_t>(f.n())) return 0;
-  const Eigen::VectorXd r = StandardisedResiduals(*f.observations, p.mean, f.sigma);
-  const Eigen::VectorXd u = ToVector(p.sem).cwiseQuotient(f.sigma);
-  return CorrelatedChi2NoiseSd(r, u, f.q, 0, ErrorCorrelation(p.source, p.correlation, u.size()));
+  return PointChi2NoiseSd(f, p, StandardisedResiduals(*f.observations, p.mean, f.sigma), 0);
 }
 
 // A probe that fits better than the candidate's refit by more than kNoiseSds standard deviations
@@ -349,8 +355,8 @@ double PointChi2NoiseSd(const Frame& f, const Prediction& p) {
 // becomes the point the next re-centred step starts from (header, RefineRefits).
 void RecentreOnProbe(const Frame& f, Work* w) {
   if (!(w->probe_chi2 < w->best_chi2)) return;
-  const double sd =
-      std::hypot(PointChi2NoiseSd(f, w->probe_prediction), PointChi2NoiseSd(f, w->best_prediction));
+  const double sd = std::hypot(NoiseSdWithoutFloor(f, w->probe_prediction),
+                               NoiseSdWithoutFloor(f, w->best_prediction));
   if (w->best_chi2 - w->probe_chi2 <= kNoiseSds * sd) return;
   AddNote(w, "re-centred on a probe with chi2 " + ValueText(w->probe_chi2) + " against " +
                  ValueText(w->best_chi2) + ", beyond " + ValueText(kNoiseSds) +
